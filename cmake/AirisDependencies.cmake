@@ -1,0 +1,12 @@
+# Third-party dependencies, all from Debian 12 packages (scripts/install-deps.sh installs them).
+find_package(PkgConfig REQUIRED)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(Threads REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 REQUIRED)
+if(AIRIS_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(AIRIS_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,85 @@
+#pragma once
+
+// Conventions shared by every `*Config` struct (DESIGN.md principle 1):
+//
+//   struct BarometerConfig {
+//     double rate_hz = 50.0;
+//     double pressure_noise_pa = 2.7;
+//     template <class V> void Visit(V& v) {
+//       v.Field("rate_hz", rate_hz, "samples per simulated second");
+//       v.Field("pressure_noise_pa", pressure_noise_pa, "white noise, 1 sigma");
+//     }
+//     void Validate() const;  // throws InvalidField naming the field
+//   };
+//
+// `Visit` is the one list of fields: the YAML reader (scenes/), the documentation generator and error
+// messages are all driven by it. A field may be a number, bool, string, an enum with EnumNames (below), an
+// Eigen vector, a std::vector or std::optional of those, or another struct with its own Visit.
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/core/error.h"
+
+namespace airis::engine {
+
+/// One spelling of an enum value in files. An enum usable in a config declares, next to it,
+///   std::span<const EnumName<E>> EnumNames(E);
+/// found by argument-dependent lookup.
+template <class E>
+struct EnumName {
+  E value;
+  const char* name;
+};
+
+/// Spelling of `value` in files ("?" if it has none).
+template <class E>
+std::string_view ToString(E value) {
+  for (const auto& n : EnumNames(value)) {
+    if (n.value == value) return n.name;
+  }
+  return "?";
+}
+
+/// The value spelled `text`, or nullopt.
+template <class E>
+std::optional<E> ParseEnum(std::string_view text) {
+  for (const auto& n : EnumNames(E{})) {
+    if (text == n.name) return n.value;
+  }
+  return std::nullopt;
+}
+
+/// "a, b or c": the spellings of an enum, for error messages.
+template <class E>
+std::string EnumChoices() {
+  std::string out;
+  const auto names = EnumNames(E{});
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += (i + 1 == names.size()) ? " or " : ", ";
+    out += names[i].name;
+  }
+  return out;
+}
+
+/// Shortest text that reads back as the same double (for "got ..." in messages).
+std::string FormatNumber(double value);
+
+/// Checks for Validate(). Each throws InvalidField(field, "...(got value)") when it fails.
+void RequireFinite(std::string_view field, double value);
+void RequirePositive(std::string_view field, double value);     ///< finite and > 0
+void RequireNonNegative(std::string_view field, double value);  ///< finite and >= 0
+void RequireInRange(std::string_view field, double value, double lo, double hi);  ///< lo <= v <= hi
+void Require(bool condition, std::string_view field, std::string_view problem);
+
+/// The candidate closest to `word` by edit distance, if it is close enough to be a plausible typo
+/// (distance at most max(2, |word| / 3)). For "unknown key 'rate_hx' (did you mean 'rate_hz'?)".
+std::optional<std::string> ClosestMatch(std::string_view word,
+                                        std::span<const std::string> candidates);
+
+}  // namespace airis::engine

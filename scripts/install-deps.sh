@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages airis builds and tests with. Idempotent: packages already present are
+# skipped, so a second run costs one dpkg query. Uses sudo only when not root.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config git
+  libeigen3-dev            # all vector and matrix math
+  libbullet-dev            # collision detection (broadphase, narrowphase, contacts)
+  libembree-dev            # ray casts for rangefinder and lidar
+  libassimp-dev            # mesh files named in scenes
+  libyaml-cpp-dev          # scene, vehicle and mission files
+  nlohmann-json3-dev       # JSON output (env --json, manifests, COCO)
+  libcli11-dev             # command line
+  libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev  # images (not all of libopencv-dev)
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL + GLES3, llvmpipe when there is no GPU
+  libgtest-dev libgmock-dev libbenchmark-dev           # tests and benchmarks
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,79 @@
+#include "engine/core/clock.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "engine/core/error.h"
+
+namespace airis::engine {
+namespace {
+
+TEST(SimClockTest, OneKilohertzTickIsOneMillisecond) {
+  const SimClock clock = SimClock::FromRateHz(1000.0);
+  EXPECT_EQ(clock.step_ns(), 1'000'000);
+}
+
+TEST(SimClockTest, RejectsRatesWithoutWholeNanosecondPeriod) {
+  // 1e9 / 3000 = 333333.33 ns: not representable, so it must be refused rather than drift.
+  EXPECT_THROW(SimClock::FromRateHz(3000.0), InvalidField);
+  EXPECT_THROW(SimClock::FromRateHz(50.0), InvalidField);     // below 100 Hz
+  EXPECT_THROW(SimClock::FromRateHz(20000.0), InvalidField);  // above 10 kHz
+  EXPECT_NO_THROW(SimClock::FromRateHz(4000.0));
+}
+
+TEST(SimClockTest, BillionTicksLandExactlyOnTheirTimeAndFiftyHertzNeverDrifts) {
+  // GIVEN a 1 kHz clock and a 50 Hz schedule, WHEN stepped 10^9 times (11.6 simulated days),
+  // THEN time is exactly n ms and the schedule has fired exactly every 20th tick.
+  SimClock clock = SimClock::FromRateHz(1000.0);
+  RateSchedule fifty_hz(50.0);
+  std::int64_t fired = 0;
+  std::int64_t misplaced = 0;
+  constexpr std::int64_t kTicks = 1'000'000'000;
+  for (std::int64_t n = 0; n < kTicks; ++n) {
+    if (fifty_hz.ConsumeDue(clock.now_ns()) > 0) {
+      ++fired;
+      misplaced += (clock.tick() % 20 != 0);
+    }
+    clock.Advance();
+  }
+  EXPECT_EQ(clock.now_ns(), kTicks * 1'000'000);
+  EXPECT_EQ(fired, kTicks / 20);
+  EXPECT_EQ(misplaced, 0);
+}
+
+TEST(RateScheduleTest, FiftyHertzOnThreeMillisecondTicksGivesFiftySamplesPerSecond) {
+  // The reference implementation restarts its timer at the tick that fired and gets 47.6 Hz here.
+  SimClock clock(3'000'000);
+  RateSchedule schedule(50.0);
+  int fired = 0;
+  while (clock.now_ns() < 100 * kNsPerSecond) {
+    fired += schedule.ConsumeDue(clock.now_ns());
+    clock.Advance();
+  }
+  EXPECT_EQ(fired, 5000);
+}
+
+TEST(RateScheduleTest, NonIntegerRateIsExactOverLongRuns) {
+  RateSchedule schedule(29.97);
+  // Event k is due at ceil(k / 29.97 s): after 2997 events exactly 100 s have elapsed.
+  EXPECT_EQ(schedule.DueTime(2997), 100 * kNsPerSecond);
+  // 1e9 / 29.97 ns = 33366700.03 ns, rounded up to the next whole nanosecond.
+  EXPECT_EQ(schedule.DueTime(1), 33'366'701);
+}
+
+TEST(RateScheduleTest, RejectsNonPositiveRates) {
+  EXPECT_THROW(RateSchedule(0.0), InvalidField);
+  EXPECT_THROW(RateSchedule(-5.0), InvalidField);
+  EXPECT_THROW(RateSchedule(std::nan("")), InvalidField);
+}
+
+TEST(SecondsToNsTest, RoundsToNearestAndRejectsNonFinite) {
+  EXPECT_EQ(SecondsToNs(0.2), 200'000'000);
+  EXPECT_EQ(SecondsToNs(1e-9), 1);
+  EXPECT_THROW(SecondsToNs(std::numeric_limits<double>::infinity()), InvalidField);
+}
+
+}  // namespace
+}  // namespace airis::engine

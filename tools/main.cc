@@ -1,0 +1,15 @@
+// The `airis` command line: one subcommand per job (DESIGN.md, "Main commands").
+#include <CLI/CLI.hpp>
+
+#include "tools/commands.h"
+#include "tools/version.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"airis: a simulator for aerial robots (physics, sensors, rendering, datasets)"};
+  app.set_version_flag("--version", std::string("airis ") + airis::tools::kVersion);
+  app.require_subcommand(1);
+  int exit_code = 0;
+  airis::tools::AddEnvCommand(app, exit_code);
+  CLI11_PARSE(app, argc, argv);
+  return exit_code;
+}
