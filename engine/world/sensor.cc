@@ -1,0 +1,15 @@
+#include "engine/world/sensor.h"
+
+namespace airis::engine {
+
+Sensor::Sensor(std::string name, double rate_hz) : name_(std::move(name)), schedule_(rate_hz) {}
+
+bool Sensor::Update(const SensorContext& context) {
+  if (schedule_.ConsumeDue(context.now_ns) == 0) return false;
+  last_sample_ns_ = context.now_ns;
+  Sample(context);
+  for (const auto& listener : listeners_) listener(*this);
+  return true;
+}
+
+}  // namespace airis::engine

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/core/clock.h"
+#include "engine/environment/environment.h"
+#include "engine/physics/rigid_body_state.h"
+#include "engine/world/ray_caster.h"
+
+namespace airis::engine {
+
+/// The truth a sensor may read when it samples: its vehicle after this tick's integration and contacts.
+struct SensorContext {
+  TimeNs now_ns = 0;
+  const RigidBodyState* state = nullptr;                 ///< the vehicle's body
+  const RigidBodyAccelerations* accelerations = nullptr; ///< over the last step, contacts included
+  const Environment* environment = nullptr;
+  const RayCaster* rays = nullptr;                       ///< null when the world has no ray caster
+};
+
+/// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete sensor).
+/// It samples at its own exact rate on the simulated clock and tells its listeners of each new sample.
+/// Generic consumers (telemetry log, dataset writer) read samples as rows of numbers named by columns();
+/// typed consumers (controller, MAVLink bridge) downcast to the concrete sensor's sample type.
+class Sensor {
+ public:
+  /// @param name unique within its vehicle, e.g. "imu"; @param rate_hz samples per simulated second.
+  Sensor(std::string name, double rate_hz);
+  virtual ~Sensor() = default;
+  Sensor(const Sensor&) = delete;
+  Sensor& operator=(const Sensor&) = delete;
+
+  /// Called by the Simulation every tick after physics: samples when the schedule says so and notifies the
+  /// listeners. Returns true when a sample was taken.
+  bool Update(const SensorContext& context);
+
+  /// Column names with units of the sample row, e.g. {"gyro_x_rad_s", ...}; constant over the run.
+  virtual std::span<const std::string> columns() const = 0;
+  /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
+  virtual void CopyLatestRow(std::span<double> out) const = 0;
+
+  /// Calls `listener` after every new sample (in the simulation thread; keep it cheap, do not keep the ref).
+  void AddListener(std::function<void(const Sensor&)> listener) {
+    listeners_.push_back(std::move(listener));
+  }
+
+  const std::string& name() const { return name_; }
+  const RateSchedule& schedule() const { return schedule_; }
+  /// Simulated time of the last sample (-1 before the first).
+  TimeNs last_sample_ns() const { return last_sample_ns_; }
+
+ protected:
+  /// Takes one sample from `context` (called only when due).
+  virtual void Sample(const SensorContext& context) = 0;
+
+ private:
+  std::string name_;
+  RateSchedule schedule_;
+  TimeNs last_sample_ns_ = -1;
+  std::vector<std::function<void(const Sensor&)>> listeners_;
+};
+
+}  // namespace airis::engine
