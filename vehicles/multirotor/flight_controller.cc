@@ -1,0 +1,189 @@
+#include "vehicles/multirotor/flight_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.h"
+
+namespace airis::vehicles {
+
+using engine::Mat3;
+using engine::Quat;
+using engine::Vec3;
+
+void FlightControllerConfig::Validate() const {
+  using engine::RequirePositive;
+  RequirePositive("position_gain_1_s", position_gain_1_s);
+  RequirePositive("max_horizontal_speed_m_s", max_horizontal_speed_m_s);
+  RequirePositive("max_climb_speed_m_s", max_climb_speed_m_s);
+  RequirePositive("max_descent_speed_m_s", max_descent_speed_m_s);
+  RequirePositive("velocity_gain_1_s", velocity_gain_1_s);
+  engine::RequireNonNegative("velocity_integral_gain_1_s2", velocity_integral_gain_1_s2);
+  engine::RequireNonNegative("max_velocity_integral_m_s2", max_velocity_integral_m_s2);
+  RequirePositive("max_horizontal_accel_m_s2", max_horizontal_accel_m_s2);
+  RequirePositive("max_vertical_accel_m_s2", max_vertical_accel_m_s2);
+  engine::RequireInRange("max_tilt_deg", max_tilt_deg, 1.0, 89.0);
+  RequirePositive("attitude_gain_1_s", attitude_gain_1_s);
+  RequirePositive("yaw_gain_1_s", yaw_gain_1_s);
+  RequirePositive("max_roll_pitch_rate_deg_s", max_roll_pitch_rate_deg_s);
+  RequirePositive("max_yaw_rate_deg_s", max_yaw_rate_deg_s);
+  for (int i = 0; i < 3; ++i) {
+    RequirePositive("rate_gain_1_s", rate_gain_1_s[i]);
+    engine::RequireNonNegative("rate_integral_gain_1_s2", rate_integral_gain_1_s2[i]);
+  }
+  engine::RequireNonNegative("max_rate_integral_rad_s2", max_rate_integral_rad_s2);
+  RequirePositive("land_speed_m_s", land_speed_m_s);
+  RequirePositive("touchdown_time_s", touchdown_time_s);
+}
+
+FlightController::FlightController(const FlightControllerConfig& config,
+                                   const VehicleParameters& vehicle,
+                                   std::span<const ActuatorEffect> actuators)
+    : config_(config),
+      vehicle_(vehicle),
+      allocator_(actuators),
+      max_tilt_rad_(engine::DegToRad(config.max_tilt_deg)),
+      max_roll_pitch_rate_rad_s_(engine::DegToRad(config.max_roll_pitch_rate_deg_s)),
+      max_yaw_rate_rad_s_(engine::DegToRad(config.max_yaw_rate_deg_s)) {}
+
+void FlightController::ResetIntegrators() {
+  velocity_integral_.setZero();
+  rate_integral_.setZero();
+}
+
+void FlightController::SetTarget(const ControlTarget& target) {
+  const bool was_velocity_loop = target_.mode == ControlMode::kVelocity ||
+                                 target_.mode == ControlMode::kPosition ||
+                                 target_.mode == ControlMode::kLand;
+  const bool is_velocity_loop = target.mode == ControlMode::kVelocity ||
+                                target.mode == ControlMode::kPosition ||
+                                target.mode == ControlMode::kLand;
+  if (!was_velocity_loop && is_velocity_loop) velocity_integral_.setZero();
+  if (target_.mode == ControlMode::kDisarmed || target_.mode == ControlMode::kMotors) {
+    rate_integral_.setZero();
+  }
+  if (target.mode != ControlMode::kDisarmed) landed_ = false;
+  if (target.mode != ControlMode::kLand) still_on_ground_s_ = 0.0;
+  target_ = target;
+}
+
+Vec3 FlightController::CalcVelocitySetpoint(const engine::RigidBodyState& state) const {
+  Vec3 v_sp = target_.velocity_W;
+  double horizontal_limit = config_.max_horizontal_speed_m_s;
+  if (target_.mode == ControlMode::kPosition) {
+    v_sp += config_.position_gain_1_s * (target_.position_W - state.p_W);
+    if (target_.speed_limit_m_s > 0.0) {
+      horizontal_limit = std::min(horizontal_limit, target_.speed_limit_m_s);
+      const double n = v_sp.norm();
+      if (n > target_.speed_limit_m_s) v_sp *= target_.speed_limit_m_s / n;
+    }
+  } else if (target_.mode == ControlMode::kLand) {
+    v_sp.head<2>() = config_.position_gain_1_s * (target_.position_W - state.p_W).head<2>();
+    v_sp.z() = config_.land_speed_m_s;
+  }
+  const double h = v_sp.head<2>().norm();
+  if (h > horizontal_limit) v_sp.head<2>() *= horizontal_limit / h;
+  v_sp.z() = std::clamp(v_sp.z(), -config_.max_climb_speed_m_s, config_.max_descent_speed_m_s);
+  return v_sp;
+}
+
+Vec3 FlightController::CalcAccelerationSetpoint(double dt_s, const Vec3& v_sp,
+                                                const engine::RigidBodyState& state) {
+  const Vec3 error = v_sp - state.v_W;
+  Vec3 a_sp = config_.velocity_gain_1_s * error + velocity_integral_;
+  const double h = a_sp.head<2>().norm();
+  if (h > config_.max_horizontal_accel_m_s2) a_sp.head<2>() *= config_.max_horizontal_accel_m_s2 / h;
+  a_sp.z() = std::clamp(a_sp.z(), -config_.max_vertical_accel_m_s2, config_.max_vertical_accel_m_s2);
+  // Integrate after use (the integral acts from the next tick on), bounded so it cannot wind up.
+  velocity_integral_ += config_.velocity_integral_gain_1_s2 * dt_s * error;
+  const double n = velocity_integral_.norm();
+  if (n > config_.max_velocity_integral_m_s2) {
+    velocity_integral_ *= config_.max_velocity_integral_m_s2 / n;
+  }
+  return a_sp;
+}
+
+Vec3 FlightController::CalcRateSetpoint(const Quat& q_sp, const engine::RigidBodyState& state) const {
+  Quat q_err = state.q_WB.conjugate() * q_sp;  // rotation from current to desired, body axes
+  if (q_err.w() < 0.0) q_err.coeffs() = -q_err.coeffs();
+  const Vec3 e = engine::QuatLog(q_err);
+  Vec3 w_sp(config_.attitude_gain_1_s * e.x(), config_.attitude_gain_1_s * e.y(),
+            config_.yaw_gain_1_s * e.z());
+  const double rp = w_sp.head<2>().norm();
+  if (rp > max_roll_pitch_rate_rad_s_) w_sp.head<2>() *= max_roll_pitch_rate_rad_s_ / rp;
+  w_sp.z() = std::clamp(w_sp.z(), -max_yaw_rate_rad_s_, max_yaw_rate_rad_s_);
+  return w_sp;
+}
+
+Vec3 FlightController::CalcTorque(double dt_s, const Vec3& w_sp, const engine::RigidBodyState& state) {
+  const Vec3 error = w_sp - state.w_B;
+  const Vec3 alpha = config_.rate_gain_1_s.cwiseProduct(error) + rate_integral_;
+  rate_integral_ += dt_s * config_.rate_integral_gain_1_s2.cwiseProduct(error);
+  rate_integral_ = rate_integral_.cwiseMax(-config_.max_rate_integral_rad_s2)
+                       .cwiseMin(config_.max_rate_integral_rad_s2);
+  // Euler's equation: the torque giving angular acceleration alpha, gyroscopic term included.
+  const Mat3& I = vehicle_.inertia_kg_m2;
+  return I * alpha + state.w_B.cross(I * state.w_B);
+}
+
+void FlightController::Update(double dt_s, const engine::RigidBodyState& state, double gravity_m_s2,
+                              std::span<double> u) {
+  AIRIS_DEMAND(u.size() == allocator_.size());
+  switch (target_.mode) {
+    case ControlMode::kDisarmed:
+      std::fill(u.begin(), u.end(), 0.0);
+      ResetIntegrators();
+      return;
+    case ControlMode::kMotors:
+      for (std::size_t i = 0; i < u.size(); ++i) u[i] = std::clamp(target_.motors[i], 0.0, 1.0);
+      return;
+    default:
+      break;
+  }
+
+  WrenchSetpoint wrench;
+  Vec3 w_sp;
+  if (target_.mode == ControlMode::kRatesThrust) {
+    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n();
+    w_sp = target_.rates_B;
+  } else if (target_.mode == ControlMode::kAttitudeThrust) {
+    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n();
+    w_sp = CalcRateSetpoint(target_.attitude_WB.normalized(), state);
+  } else {
+    const Vec3 v_sp = CalcVelocitySetpoint(state);
+    const Vec3 a_sp = CalcAccelerationSetpoint(dt_s, v_sp, state);
+    // Specific force the rotors must give: f = a - g (NED, g along +z); tilt-limited, always upward.
+    Vec3 f = a_sp - Vec3(0.0, 0.0, gravity_m_s2);
+    f.z() = std::min(f.z(), -0.1 * gravity_m_s2);
+    const double max_horizontal = -f.z() * std::tan(max_tilt_rad_);
+    const double h = f.head<2>().norm();
+    if (h > max_horizontal) f.head<2>() *= max_horizontal / h;
+    const Vec3 z_B = -f.normalized();  // desired body z (down) axis in the world
+    // Thrust along the current body up axis (so a vehicle still rotating does not overshoot in height).
+    const Vec3 up_now = -(state.q_WB * Vec3::UnitZ());
+    wrench.thrust_n = std::max(0.0, vehicle_.mass_kg * f.dot(up_now));
+    // Desired attitude: body z from the thrust vector, heading from the yaw setpoint.
+    const Vec3 x_heading(std::cos(target_.yaw_rad), std::sin(target_.yaw_rad), 0.0);
+    const Vec3 y_B = z_B.cross(x_heading).normalized();
+    const Vec3 x_B = y_B.cross(z_B);
+    Mat3 R_sp;
+    R_sp << x_B, y_B, z_B;
+    w_sp = CalcRateSetpoint(Quat(R_sp), state);
+
+    if (target_.mode == ControlMode::kLand) {
+      // Touchdown: asked to descend but not moving, for touchdown_time_s.
+      still_on_ground_s_ = state.v_W.norm() < 0.1 ? still_on_ground_s_ + dt_s : 0.0;
+      if (still_on_ground_s_ >= config_.touchdown_time_s) {
+        landed_ = true;
+        target_.mode = ControlMode::kDisarmed;
+        std::fill(u.begin(), u.end(), 0.0);
+        ResetIntegrators();
+        return;
+      }
+    }
+  }
+  wrench.torque_B = CalcTorque(dt_s, w_sp, state);
+  allocator_.Allocate(wrench, u);
+}
+
+}  // namespace airis::vehicles
