@@ -1,0 +1,221 @@
+#include "scenes/yaml_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace airis::scenes {
+
+using engine::ConfigError;
+using engine::SourceLocation;
+
+SourceLocation YamlReader::Where(const YAML::Mark& mark) const {
+  // yaml-cpp marks are 0-based and -1 when unknown; ConfigError wants 1-based with 0 = unknown.
+  return SourceLocation{file_, mark.line >= 0 ? mark.line + 1 : 0,
+                        mark.column >= 0 ? mark.column + 1 : 0};
+}
+
+void YamlReader::Fail(const YAML::Mark& mark, const std::string& key_path,
+                      const std::string& problem) const {
+  throw ConfigError(Where(mark), key_path, problem);
+}
+
+std::string YamlReader::Describe(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Undefined:
+    case YAML::NodeType::Null:
+      return "nothing";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+  }
+  return "?";
+}
+
+const std::string& YamlReader::RequireScalar(const YAML::Node& node, const YAML::Mark& mark,
+                                             const std::string& key_path, const char* what) const {
+  if (!node.IsScalar()) {
+    Fail(mark, key_path, std::string("expected ") + what + " (got " + Describe(node) + ")");
+  }
+  return node.Scalar();
+}
+
+void YamlReader::RequireSequence(const YAML::Node& node, const YAML::Mark& mark,
+                                 const std::string& key_path, const std::string& what) const {
+  if (!node.IsSequence()) Fail(mark, key_path, "expected " + what + " (got " + Describe(node) + ")");
+}
+
+double YamlReader::ParseDouble(const YAML::Node& node, const YAML::Mark& mark,
+                               const std::string& key_path) const {
+  const std::string& text = RequireScalar(node, mark, key_path, "a number");
+  std::string_view digits = text;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  double value = 0.0;
+  const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (digits.empty() || result.ec == std::errc::invalid_argument ||
+      result.ptr != digits.data() + digits.size()) {
+    if (text == ".nan" || text == ".NaN" || text == ".inf" || text == "-.inf" || text == ".Inf" ||
+        text == "-.Inf" || text == "nan" || text == "inf" || text == "-inf") {
+      Fail(mark, key_path, "must be a finite number (got " + text + ")");
+    }
+    Fail(mark, key_path, "expected a number (got '" + text + "')");
+  }
+  if (result.ec == std::errc::result_out_of_range || !std::isfinite(value)) {
+    Fail(mark, key_path, "must be a finite number (got " + text + ")");
+  }
+  return value;
+}
+
+std::int64_t YamlReader::ParseInteger(const YAML::Node& node, const YAML::Mark& mark,
+                                      const std::string& key_path, std::int64_t lo,
+                                      std::int64_t hi) const {
+  const std::string& text = RequireScalar(node, mark, key_path, "an integer");
+  std::string_view digits = text;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  std::int64_t value = 0;
+  const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  const std::string range = " (got " + text + "; expected " + std::to_string(lo) + " to " +
+                            std::to_string(hi) + ")";
+  if (result.ec == std::errc::result_out_of_range) Fail(mark, key_path, "out of range" + range);
+  if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
+    Fail(mark, key_path, "expected an integer (got '" + text + "')");
+  }
+  if (value < lo || value > hi) Fail(mark, key_path, "out of range" + range);
+  return value;
+}
+
+std::uint64_t YamlReader::ParseUnsigned64(const YAML::Node& node, const YAML::Mark& mark,
+                                          const std::string& key_path) const {
+  const std::string& text = RequireScalar(node, mark, key_path, "an integer");
+  std::string_view digits = text;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  std::uint64_t value = 0;
+  const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (result.ec == std::errc::result_out_of_range || (!digits.empty() && digits.front() == '-')) {
+    Fail(mark, key_path, "out of range (got " + text + "; expected 0 to 18446744073709551615)");
+  }
+  if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
+    Fail(mark, key_path, "expected an integer (got '" + text + "')");
+  }
+  return value;
+}
+
+bool YamlReader::ParseBool(const YAML::Node& node, const YAML::Mark& mark,
+                           const std::string& key_path) const {
+  const std::string& text = RequireScalar(node, mark, key_path, "true or false");
+  if (text == "true" || text == "True" || text == "TRUE") return true;
+  if (text == "false" || text == "False" || text == "FALSE") return false;
+  Fail(mark, key_path, "expected true or false (got '" + text + "')");
+}
+
+void YamlReader::FailEnum(const YAML::Mark& mark, const std::string& key_path, const std::string& text,
+                          const std::vector<std::string>& choices) const {
+  std::string list;
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    if (i > 0) list += (i + 1 == choices.size()) ? " or " : ", ";
+    list += choices[i];
+  }
+  std::string problem = "unknown value '" + text + "' (expected " + list;
+  if (const auto close = engine::ClosestMatch(text, choices)) problem += "; did you mean '" + *close + "'?";
+  Fail(mark, key_path, problem + ")");
+}
+
+bool YamlReader::FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
+                         YAML::Mark* mark) {
+  for (const auto& entry : node) {
+    if (entry.first.IsScalar() && entry.first.Scalar() == key) {
+      value->reset(entry.second);  // reset rebinds; operator= would write into the tree
+      *mark = entry.first.Mark();
+      return true;
+    }
+  }
+  return false;
+}
+
+void YamlReader::RejectUnknownKeys(const YAML::Node& node, const std::string& key_path,
+                                   const std::vector<std::string>& known) const {
+  std::vector<std::string> seen;
+  for (const auto& entry : node) {
+    const YAML::Node& key = entry.first;
+    if (!key.IsScalar()) Fail(key.Mark(), key_path, "a key must be a plain name (got " + Describe(key) + ")");
+    const std::string& name = key.Scalar();
+    const std::string path = yaml_detail::JoinKey(key_path, name);
+    for (const auto& s : seen) {
+      if (s == name) Fail(key.Mark(), path, "duplicate key");
+    }
+    seen.push_back(name);
+    bool is_known = false;
+    for (const auto& k : known) is_known = is_known || k == name;
+    if (is_known) continue;
+    std::string problem = "unknown key '" + name + "'";
+    if (const auto close = engine::ClosestMatch(name, known)) {
+      problem += " (did you mean '" + *close + "'?)";
+    } else {
+      problem += " (valid keys: ";
+      for (std::size_t i = 0; i < known.size(); ++i) problem += (i > 0 ? ", " : "") + known[i];
+      problem += ")";
+    }
+    Fail(key.Mark(), path, problem);
+  }
+}
+
+void YamlReader::FailInvalidField(const YAML::Node& node, const YAML::Mark& mark,
+                                  const std::string& key_path, const engine::InvalidField& e) const {
+  // Walk the field's relative path ("mount.roll_deg", "species[2].height_m") through the node to point
+  // at the deepest key that exists; an absent key means the default was invalid, reported at the struct.
+  YAML::Node current;
+  current.reset(node);
+  YAML::Mark where = mark;
+  const std::string& field = e.field();
+  std::size_t pos = 0;
+  while (pos < field.size() && current.IsDefined()) {
+    if (field[pos] == '.') {
+      ++pos;
+      continue;
+    }
+    if (field[pos] == '[') {
+      const std::size_t close = field.find(']', pos);
+      if (close == std::string::npos) break;
+      const std::size_t index = std::strtoul(field.c_str() + pos + 1, nullptr, 10);
+      if (!current.IsSequence() || index >= current.size()) break;
+      current.reset(current[index]);
+      where = current.Mark();
+      pos = close + 1;
+      continue;
+    }
+    const std::size_t end = field.find_first_of(".[", pos);
+    const std::string name = field.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+    YAML::Node value;
+    YAML::Mark key_mark;
+    if (!current.IsMap() || !FindKey(current, name, &value, &key_mark)) break;
+    current.reset(value);
+    where = key_mark;
+    pos = end == std::string::npos ? field.size() : end;
+  }
+  std::string path = key_path;
+  if (!field.empty()) path = (path.empty() || field.front() == '[') ? path + field : path + "." + field;
+  Fail(where, path, e.problem());
+}
+
+YAML::Node LoadYamlString(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(SourceLocation{file, e.mark.line >= 0 ? e.mark.line + 1 : 0,
+                                     e.mark.column >= 0 ? e.mark.column + 1 : 0},
+                      "", "invalid YAML: " + e.msg);
+  }
+}
+
+YAML::Node LoadYamlFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(SourceLocation{path, 0, 0}, "", "cannot read the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return LoadYamlString(text.str(), path);
+}
+
+}  // namespace airis::scenes
