@@ -45,8 +45,8 @@ TEST(FlightControllerTest, DisarmedCommandsZero) {
 
 TEST(FlightControllerTest, AtItsTargetItCommandsHoverThrustAndNoMoments) {
   FlightController fc = MakeController();
-  ControlTarget t;
-  t.mode = ControlMode::kPosition;
+  engine::VehicleCommand t;
+  t.mode = engine::CommandMode::kPosition;
   t.position_W = Vec3(1, 2, -10);
   fc.SetTarget(t);
   engine::RigidBodyState s;
@@ -59,8 +59,8 @@ TEST(FlightControllerTest, AtItsTargetItCommandsHoverThrustAndNoMoments) {
 
 TEST(FlightControllerTest, TargetToTheNorthPitchesTheNoseDown) {
   FlightController fc = MakeController();
-  ControlTarget t;
-  t.mode = ControlMode::kPosition;
+  engine::VehicleCommand t;
+  t.mode = engine::CommandMode::kPosition;
   t.position_W = Vec3(10, 0, -10);
   fc.SetTarget(t);
   engine::RigidBodyState s;
@@ -76,8 +76,8 @@ TEST(FlightControllerTest, TargetToTheNorthPitchesTheNoseDown) {
 
 TEST(FlightControllerTest, YawSetpointTurnsTheRightWay) {
   FlightController fc = MakeController();
-  ControlTarget t;
-  t.mode = ControlMode::kVelocity;
+  engine::VehicleCommand t;
+  t.mode = engine::CommandMode::kVelocity;
   t.yaw_rad = 0.5;  // heading east of north: positive yaw in NED/FRD
   fc.SetTarget(t);
   std::vector<double> u(4);
@@ -87,8 +87,8 @@ TEST(FlightControllerTest, YawSetpointTurnsTheRightWay) {
 
 TEST(FlightControllerTest, AttitudeModeUsesTheThrustFraction) {
   FlightController fc = MakeController();
-  ControlTarget t;
-  t.mode = ControlMode::kAttitudeThrust;
+  engine::VehicleCommand t;
+  t.mode = engine::CommandMode::kAttitudeThrust;
   t.thrust_fraction = 0.25;
   fc.SetTarget(t);
   std::vector<double> u(4);
@@ -98,8 +98,8 @@ TEST(FlightControllerTest, AttitudeModeUsesTheThrustFraction) {
 
 TEST(FlightControllerTest, MotorModePassesCommandsThroughClamped) {
   FlightController fc = MakeController();
-  ControlTarget t;
-  t.mode = ControlMode::kMotors;
+  engine::VehicleCommand t;
+  t.mode = engine::CommandMode::kMotors;
   t.motors = {0.1, 1.5, -0.2, 0.7};
   fc.SetTarget(t);
   std::vector<double> u(4);
@@ -111,8 +111,8 @@ TEST(FlightControllerTest, LandDisarmsAfterTouchdownTime) {
   // GIVEN a vehicle at rest (on the ground) told to land, WHEN it stays still for touchdown_time_s,
   // THEN the controller reports landed and stops the motors, and not before.
   FlightController fc = MakeController();
-  ControlTarget t;
-  t.mode = ControlMode::kLand;
+  engine::VehicleCommand t;
+  t.mode = engine::CommandMode::kLand;
   fc.SetTarget(t);
   std::vector<double> u(4);
   const int ticks = static_cast<int>(FlightControllerConfig{}.touchdown_time_s / kDt);

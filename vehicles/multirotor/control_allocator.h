@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/core/frames.h"
+#include "engine/world/vehicle_command.h"
 
 namespace airis::vehicles {
 
@@ -32,7 +33,7 @@ struct WrenchSetpoint {
 class ControlAllocator {
  public:
   /// Most actuators one allocator handles (fixed so that allocation never touches the heap).
-  static constexpr int kMaxActuators = 12;
+  static constexpr int kMaxActuators = engine::kMaxActuators;
 
   ControlAllocator() = default;
   /// Builds B and its pseudo-inverse from the actuators' effects at u = 1. Requires 4 to kMaxActuators actuators whose

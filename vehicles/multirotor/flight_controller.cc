@@ -51,33 +51,33 @@ void FlightController::ResetIntegrators() {
   rate_integral_.setZero();
 }
 
-void FlightController::SetTarget(const ControlTarget& target) {
-  const bool was_velocity_loop = target_.mode == ControlMode::kVelocity ||
-                                 target_.mode == ControlMode::kPosition ||
-                                 target_.mode == ControlMode::kLand;
-  const bool is_velocity_loop = target.mode == ControlMode::kVelocity ||
-                                target.mode == ControlMode::kPosition ||
-                                target.mode == ControlMode::kLand;
+void FlightController::SetTarget(const engine::VehicleCommand& target) {
+  const bool was_velocity_loop = target_.mode == engine::CommandMode::kVelocity ||
+                                 target_.mode == engine::CommandMode::kPosition ||
+                                 target_.mode == engine::CommandMode::kLand;
+  const bool is_velocity_loop = target.mode == engine::CommandMode::kVelocity ||
+                                target.mode == engine::CommandMode::kPosition ||
+                                target.mode == engine::CommandMode::kLand;
   if (!was_velocity_loop && is_velocity_loop) velocity_integral_.setZero();
-  if (target_.mode == ControlMode::kDisarmed || target_.mode == ControlMode::kMotors) {
+  if (target_.mode == engine::CommandMode::kDisarmed || target_.mode == engine::CommandMode::kMotors) {
     rate_integral_.setZero();
   }
-  if (target.mode != ControlMode::kDisarmed) landed_ = false;
-  if (target.mode != ControlMode::kLand) still_on_ground_s_ = 0.0;
+  if (target.mode != engine::CommandMode::kDisarmed) landed_ = false;
+  if (target.mode != engine::CommandMode::kLand) still_on_ground_s_ = 0.0;
   target_ = target;
 }
 
 Vec3 FlightController::CalcVelocitySetpoint(const engine::RigidBodyState& state) const {
   Vec3 v_sp = target_.velocity_W;
   double horizontal_limit = config_.max_horizontal_speed_m_s;
-  if (target_.mode == ControlMode::kPosition) {
+  if (target_.mode == engine::CommandMode::kPosition) {
     v_sp += config_.position_gain_1_s * (target_.position_W - state.p_W);
     if (target_.speed_limit_m_s > 0.0) {
       horizontal_limit = std::min(horizontal_limit, target_.speed_limit_m_s);
       const double n = v_sp.norm();
       if (n > target_.speed_limit_m_s) v_sp *= target_.speed_limit_m_s / n;
     }
-  } else if (target_.mode == ControlMode::kLand) {
+  } else if (target_.mode == engine::CommandMode::kLand) {
     v_sp.head<2>() = config_.position_gain_1_s * (target_.position_W - state.p_W).head<2>();
     v_sp.z() = config_.land_speed_m_s;
   }
@@ -130,11 +130,11 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
                               std::span<double> u) {
   AIRIS_DEMAND(u.size() == allocator_.size());
   switch (target_.mode) {
-    case ControlMode::kDisarmed:
+    case engine::CommandMode::kDisarmed:
       std::fill(u.begin(), u.end(), 0.0);
       ResetIntegrators();
       return;
-    case ControlMode::kMotors:
+    case engine::CommandMode::kMotors:
       for (std::size_t i = 0; i < u.size(); ++i) u[i] = std::clamp(target_.motors[i], 0.0, 1.0);
       return;
     default:
@@ -143,10 +143,10 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
 
   WrenchSetpoint wrench;
   Vec3 w_sp;
-  if (target_.mode == ControlMode::kRatesThrust) {
+  if (target_.mode == engine::CommandMode::kRatesThrust) {
     wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n();
     w_sp = target_.rates_B;
-  } else if (target_.mode == ControlMode::kAttitudeThrust) {
+  } else if (target_.mode == engine::CommandMode::kAttitudeThrust) {
     wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n();
     w_sp = CalcRateSetpoint(target_.attitude_WB.normalized(), state);
   } else {
@@ -170,12 +170,12 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
     R_sp << x_B, y_B, z_B;
     w_sp = CalcRateSetpoint(Quat(R_sp), state);
 
-    if (target_.mode == ControlMode::kLand) {
+    if (target_.mode == engine::CommandMode::kLand) {
       // Touchdown: asked to descend but not moving, for touchdown_time_s.
       still_on_ground_s_ = state.v_W.norm() < 0.1 ? still_on_ground_s_ + dt_s : 0.0;
       if (still_on_ground_s_ >= config_.touchdown_time_s) {
         landed_ = true;
-        target_.mode = ControlMode::kDisarmed;
+        target_.mode = engine::CommandMode::kDisarmed;
         std::fill(u.begin(), u.end(), 0.0);
         ResetIntegrators();
         return;

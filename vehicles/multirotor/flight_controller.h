@@ -6,6 +6,7 @@
 #include "engine/core/config.h"
 #include "engine/core/frames.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/world/vehicle_command.h"
 #include "vehicles/multirotor/control_allocator.h"
 
 namespace airis::vehicles {
@@ -59,30 +60,6 @@ struct FlightControllerConfig {
   void Validate() const;
 };
 
-/// What the controller is asked to do (the commands of DESIGN.md's missions and of learning code).
-enum class ControlMode {
-  kDisarmed,        ///< motors stopped
-  kMotors,          ///< direct normalised motor commands
-  kRatesThrust,     ///< body rates + collective thrust fraction
-  kAttitudeThrust,  ///< attitude quaternion + collective thrust fraction
-  kVelocity,        ///< world velocity + yaw
-  kPosition,        ///< world position (+ velocity feed-forward, speed limit) + yaw
-  kLand,            ///< descend at the landing speed, hold horizontal position, disarm on touchdown
-};
-
-/// A setpoint for the controller. Only the fields of the active mode are read.
-struct ControlTarget {
-  ControlMode mode = ControlMode::kDisarmed;
-  engine::Vec3 position_W = engine::Vec3::Zero();     ///< kPosition, kLand (horizontal hold)
-  engine::Vec3 velocity_W = engine::Vec3::Zero();     ///< kVelocity; feed-forward in kPosition
-  double speed_limit_m_s = 0.0;                       ///< kPosition: cap on speed toward the target, 0 = none
-  double yaw_rad = 0.0;                               ///< kVelocity, kPosition, kLand
-  engine::Quat attitude_WB = engine::Quat::Identity();  ///< kAttitudeThrust
-  engine::Vec3 rates_B = engine::Vec3::Zero();        ///< kRatesThrust (rad/s)
-  double thrust_fraction = 0.0;                       ///< kAttitudeThrust, kRatesThrust: of max thrust
-  std::array<double, ControlAllocator::kMaxActuators> motors{};  ///< kMotors, in [0, 1]
-};
-
 /// Physical facts the controller needs about its vehicle.
 struct VehicleParameters {
   double mass_kg = 1.0;
@@ -103,8 +80,8 @@ class FlightController {
               std::span<double> u);
 
   /// Sets what to do; switching modes resets the integrators of loops that were not running.
-  void SetTarget(const ControlTarget& target);
-  const ControlTarget& target() const { return target_; }
+  void SetTarget(const engine::VehicleCommand& target);
+  const engine::VehicleCommand& target() const { return target_; }
   /// True once `land` has detected touchdown (the controller is then disarmed).
   bool landed() const { return landed_; }
   /// Rebuilds the allocator after the actuators moved (tilt-rotors).
@@ -122,7 +99,7 @@ class FlightController {
   FlightControllerConfig config_;
   VehicleParameters vehicle_;
   ControlAllocator allocator_;
-  ControlTarget target_;
+  engine::VehicleCommand target_;
   engine::Vec3 velocity_integral_ = engine::Vec3::Zero();  ///< m/s^2, world NED
   engine::Vec3 rate_integral_ = engine::Vec3::Zero();      ///< rad/s^2, body
   double still_on_ground_s_ = 0.0;
