@@ -1,0 +1,97 @@
+#include "scenes/mission_file.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "scenes/yaml_reader.h"
+
+namespace airis::scenes {
+namespace {
+
+using engine::MissionStepSpec;
+
+/// The file spellings of all step kinds, in variant order.
+template <std::size_t... I>
+std::vector<std::string> StepKindNames(std::index_sequence<I...>) {
+  return {std::string(engine::StepKindName(MissionStepSpec(std::in_place_index<I>)))...};
+}
+
+/// Reads the step of kind index `index` from `value` into a MissionStepSpec.
+template <std::size_t... I>
+MissionStepSpec ReadStepOfKind(std::size_t index, const YamlReader& reader, const YAML::Node& value,
+                               const YAML::Mark& mark, const std::string& key_path,
+                               std::index_sequence<I...>) {
+  MissionStepSpec spec;
+  // Exactly one alternative matches `index`; it is default-constructed, then read field by field.
+  ((index == I ? (spec.emplace<I>(), reader.ReadStruct(value, mark, key_path, std::get<I>(spec)), 0) : 0),
+   ...);
+  return spec;
+}
+
+struct MissionHeader {
+  std::string name;
+  std::string vehicle;
+  bool abort_on_collision = true;
+  template <class V>
+  void Visit(V& v) {
+    v.Field("name", name, "mission name, for logs");
+    v.Field("vehicle", vehicle, "vehicle that flies it; empty = the scene's first");
+    v.Field("abort_on_collision", abort_on_collision, "fail the mission on any collision");
+  }
+};
+
+engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
+  const YamlReader reader(file);
+  if (!root.IsMap()) {
+    reader.Fail(root.Mark(), "", "a mission file must be a map with a 'steps' list (got " +
+                                     YamlReader::Describe(root) + ")");
+  }
+  MissionHeader header;
+  reader.ReadStruct(root, root.Mark(), "", header, {"steps"});
+  const YAML::Node steps = root["steps"];
+  if (!steps) reader.Fail(root.Mark(), "steps", "missing: a mission needs a list of steps");
+  reader.RequireSequence(steps, steps.Mark(), "steps", "a list of steps");
+
+  constexpr auto kKinds = std::make_index_sequence<std::variant_size_v<MissionStepSpec>>();
+  static const std::vector<std::string> kind_names = StepKindNames(kKinds);
+  engine::Mission mission;
+  mission.name = header.name;
+  mission.vehicle = header.vehicle;
+  mission.abort_on_collision = header.abort_on_collision;
+  mission.file = file;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const YAML::Node item = steps[i];
+    const std::string path = "steps[" + std::to_string(i) + "]";
+    if (!item.IsMap() || item.size() != 1) {
+      reader.Fail(item.Mark(), path,
+                  "each step is a map with one key naming its kind, e.g. '- goto: {...}' (got " +
+                      YamlReader::Describe(item) + ")");
+    }
+    const auto entry = item.begin();
+    const std::string kind = entry->first.Scalar();
+    const YAML::Mark mark = entry->first.Mark();
+    const auto found = std::find(kind_names.begin(), kind_names.end(), kind);
+    if (found == kind_names.end()) {
+      std::string problem = "unknown step '" + kind + "'";
+      if (const auto close = engine::ClosestMatch(kind, kind_names)) problem += " (did you mean '" + *close + "'?)";
+      std::string all;
+      for (const auto& k : kind_names) all += (all.empty() ? "" : ", ") + k;
+      reader.Fail(mark, path, problem + "; steps are " + all);
+    }
+    const auto index = static_cast<std::size_t>(found - kind_names.begin());
+    mission.steps.push_back({ReadStepOfKind(index, reader, entry->second, mark, path + "." + kind, kKinds),
+                             reader.Where(mark)});
+  }
+  if (mission.steps.empty()) reader.Fail(steps.Mark(), "steps", "a mission needs at least one step");
+  return mission;
+}
+
+}  // namespace
+
+engine::Mission LoadMissionFile(const std::string& path) { return ReadMission(LoadYamlFile(path), path); }
+
+engine::Mission ParseMission(const std::string& text, const std::string& file) {
+  return ReadMission(LoadYamlString(text, file), file);
+}
+
+}  // namespace airis::scenes

@@ -1,0 +1,101 @@
+#include "scenes/mission_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "engine/core/error.h"
+
+namespace airis::scenes {
+namespace {
+
+using engine::ConfigError;
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    ParseMission(text, "missions/m.yaml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(MissionFileTest, ReadsEveryStepKindWithLines) {
+  const engine::Mission m = ParseMission(R"(name: demo
+vehicle: drone
+steps:
+  - takeoff: {altitude_m: 25}
+  - goto: {position_ned_m: [10, 20, -25], speed_m_s: 4, yaw_deg: 90}
+  - path: {waypoints_ned_m: [[0, 0, -20], [30, 0, -20]], corner_radius_m: 3}
+  - orbit: {center_ned_m: [0, 0, -30], radius_m: 15, turns: 2}
+  - hover: {duration_s: 3}
+  - yaw: {yaw_deg: -45}
+  - survey: {polygon_ned_m: [[0, 0, 0], [100, 50, 0]], altitude_m: 40, spacing_m: 15}
+  - wait: {duration_s: 1.5}
+  - capture: {enabled: true, rate_hz: 10, cameras: [front]}
+  - random_poses: {count: 4}
+  - set_wind: {velocity_ned_m_s: [2, 0, 0]}
+  - land:
+)",
+                                             "missions/m.yaml");
+  EXPECT_EQ(m.name, "demo");
+  EXPECT_EQ(m.vehicle, "drone");
+  EXPECT_TRUE(m.abort_on_collision);
+  ASSERT_EQ(m.steps.size(), 12u);
+  EXPECT_EQ(std::get<engine::TakeoffStep>(m.steps[0].spec).altitude_m, 25.0);
+  const auto& g = std::get<engine::GotoStep>(m.steps[1].spec);
+  EXPECT_EQ(*g.position_ned_m, engine::Vec3(10, 20, -25));
+  EXPECT_EQ(*g.yaw_deg, 90.0);
+  EXPECT_EQ(std::get<engine::OrbitStep>(m.steps[3].spec).turns, 2.0);
+  EXPECT_EQ(std::get<engine::CaptureStep>(m.steps[8].spec).cameras[0], "front");
+  EXPECT_TRUE(std::holds_alternative<engine::LandStep>(m.steps[11].spec));
+  EXPECT_EQ(m.steps[1].where.line, 5);
+  EXPECT_EQ(m.steps[1].where.column, 5);
+  EXPECT_EQ(m.steps[1].where.file, "missions/m.yaml");
+}
+
+TEST(MissionFileTest, UnknownStepSuggestsTheClosestKind) {
+  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n  - gotoo: {position_ned_m: [1, 2, 3]}\n")
+                .substr(0, 62),
+            "missions/m.yaml:3:5: steps[1]: unknown step 'gotoo' (did you m");
+  EXPECT_NE(ErrorOf("steps:\n  - gotoo: {}\n").find("did you mean 'goto'?"), std::string::npos);
+}
+
+TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
+  const std::string e = ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n  - goto: {position_ned_m: [1, 2, 3], sped_m_s: 3}\n");
+  EXPECT_NE(e.find("missions/m.yaml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("steps[1].goto"), std::string::npos) << e;
+  EXPECT_NE(e.find("speed_m_s"), std::string::npos) << e;
+}
+
+TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
+  const std::string e = ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      altitude_m: -5\n");
+  EXPECT_EQ(e, "missions/m.yaml:4:7: steps[1].takeoff.altitude_m: must be > 0 (got -5)");
+}
+
+TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {
+  const std::string e = ErrorOf("steps:\n  - goto: {speed_m_s: 3}\n");
+  EXPECT_NE(e.find("missions/m.yaml:2:"), std::string::npos) << e;
+  EXPECT_NE(e.find("give exactly one of position_ned_m and geodetic"), std::string::npos) << e;
+}
+
+TEST(MissionFileTest, StructuralMistakesAreNamed) {
+  EXPECT_NE(ErrorOf("name: x\n").find("steps: missing"), std::string::npos);
+  EXPECT_NE(ErrorOf("steps: []\n").find("at least one step"), std::string::npos);
+  EXPECT_NE(ErrorOf("steps:\n  - takeoff: {}\n    land: {}\n").find("one key naming its kind"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("stepz: []\n").find("did you mean 'steps'?"), std::string::npos)
+      << ErrorOf("stepz: []\n");
+}
+
+TEST(MissionFileTest, MissingFileIsAClearError) {
+  try {
+    LoadMissionFile("/nonexistent/mission.yaml");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/mission.yaml"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace airis::scenes
