@@ -1,0 +1,121 @@
+#pragma once
+
+#include <GLES3/gl3.h>
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "engine/render/camera_frame.h"
+#include "engine/render/camera_model.h"
+#include "engine/render/egl_context.h"
+#include "engine/render/gl_program.h"
+#include "engine/render/gpu_scene.h"
+
+namespace airis::engine {
+
+/// Renders one camera's images of a GpuScene: frustum culling, one instanced geometry pass into multiple
+/// render targets (RGB, planar depth, perspective depth, class id, instance id, normals), the sky, the lens
+/// distortion remap when the camera has one, and readback.
+///
+/// Projection: pinhole with the camera's intrinsics; image rows are rendered top-down (row 0 of the GL
+/// framebuffer is image row 0), so readback needs no flip. With distortion, the scene is first rendered
+/// undistorted at the same focal length over the (larger) region that the distorted image sees, then every
+/// output pixel takes the undistorted sample its ray maps to (CameraIntrinsics::CalcRay of the pixel centre,
+/// i.e. the Brown-Conrady model inverted by Newton's method, once, into a lookup texture).
+///
+/// Readback: Render() reads straight into the frame's buffers (no staging copy). Submit()/Collect() read into
+/// pixel buffer objects instead, so the GPU renders the next frame (another camera, or this camera's next
+/// pose) while the previous transfer completes; Collect() copies each image once from the mapped buffer.
+/// All calls need `context` current.
+class CameraRenderer {
+ public:
+  /// Frames that may be in flight between Submit() and Collect().
+  static constexpr int kMaxInFlight = 2;
+
+  /// Builds the render targets and shader variants. Throws InvalidField on bad intrinsics or outputs (also
+  /// when the distortion model folds inside the image), std::runtime_error when the GL lacks float render
+  /// targets (EXT_color_buffer_float) or a shader fails to build.
+  CameraRenderer(const EglContext& context, const CameraIntrinsics& intrinsics,
+                 const RenderOutputs& outputs);
+  ~CameraRenderer();
+  CameraRenderer(const CameraRenderer&) = delete;
+  CameraRenderer& operator=(const CameraRenderer&) = delete;
+
+  /// Renders `scene` seen from T_WC (optical frame C -> world NED) at simulated time `time_ns` and reads
+  /// the enabled outputs into `out` (reusing its buffers).
+  void Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns, CameraFrame& out);
+
+  /// Renders and starts an asynchronous readback. Requires frames_in_flight() < kMaxInFlight.
+  void Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns);
+  /// Completes the oldest submitted frame into `out` (waiting for it if needed). Returns false when none is
+  /// in flight.
+  bool Collect(CameraFrame& out);
+  int frames_in_flight() const { return in_flight_; }
+
+  const CameraIntrinsics& intrinsics() const { return intrinsics_; }
+  /// Intrinsics of the undistorted image the geometry pass renders (equal to intrinsics() without distortion).
+  const CameraIntrinsics& render_intrinsics() const { return render_intrinsics_; }
+  const RenderOutputs& outputs() const { return outputs_; }
+  /// Draw calls and triangles submitted by the last frame (after culling).
+  std::size_t last_draw_calls() const { return last_draw_calls_; }
+  std::size_t last_triangles() const { return last_triangles_; }
+
+ private:
+  static constexpr int kTargets = 6;  // attachment index = fragment output location in the shaders
+  struct RenderTarget {
+    GLuint fbo = 0;
+    GLuint depth = 0;  // renderbuffer, geometry pass only
+    std::array<GLuint, kTargets> textures{};
+    int width = 0;
+    int height = 0;
+  };
+  struct ReadFormat {
+    GLenum format = 0;
+    GLenum type = 0;
+    int bytes_per_pixel = 0;
+    bool direct = false;  // the bytes are already the frame's layout
+  };
+  struct Slot {
+    GLuint pbo = 0;
+    std::array<std::size_t, kTargets> offset{};
+    GLsync fence = nullptr;
+    TimeNs time_ns = 0;
+    Eigen::Isometry3d T_WC = Eigen::Isometry3d::Identity();
+  };
+
+  bool Enabled(int target) const;
+  RenderTarget CreateTarget(int width, int height, bool sampled, bool with_depth) const;
+  void DestroyTarget(RenderTarget& target) const;
+  void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC);
+  void PrepareFrame(CameraFrame& out, TimeNs time_ns, const Eigen::Isometry3d& T_WC) const;
+  void DeliverFromBytes(int target, const void* bytes, CameraFrame& out) const;
+  void* FrameBuffer(int target, CameraFrame& out) const;
+
+  const EglContext& context_;
+  CameraIntrinsics intrinsics_;
+  CameraIntrinsics render_intrinsics_;
+  RenderOutputs outputs_;
+  bool distorted_ = false;
+  GlProgram scene_program_;
+  GlProgram sky_program_;
+  GlProgram remap_program_;
+  RenderTarget geometry_target_;
+  RenderTarget output_target_;  // == geometry_target_ without distortion
+  GLuint remap_texture_ = 0;
+  GLuint empty_vao_ = 0;
+  GLuint instance_buffer_ = 0;
+  std::size_t instance_capacity_ = 0;
+  std::array<ReadFormat, kTargets> read_formats_{};
+  std::array<Slot, kMaxInFlight> slots_{};
+  int next_slot_ = 0;
+  int in_flight_ = 0;
+  std::vector<Eigen::Vector4d> planes_C_;
+  VisibleSet visible_;
+  std::vector<unsigned char> scratch_;
+  std::size_t last_draw_calls_ = 0;
+  std::size_t last_triangles_ = 0;
+};
+
+}  // namespace airis::engine

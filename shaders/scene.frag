@@ -1,0 +1,82 @@
+// One geometry pass writing every requested output into its own render target (OUT_* defines select them).
+// RGB: Lambertian sun + hemispheric sky light with a cheap contact-darkening term, optional texture and
+// distance fog; written linear into an sRGB8 target, which encodes to sRGB.
+// Depths: written from the interpolated camera-frame position, not the non-linear depth buffer.
+precision highp float;
+precision highp int;
+
+in vec3 v_p_C;
+in vec3 v_n_C;
+in vec2 v_uv;
+flat in uvec2 v_ids;
+flat in vec3 v_base_color;
+
+#ifdef OUT_RGB
+layout(location = 0) out vec4 o_rgb;
+#endif
+#ifdef OUT_DEPTH_PLANAR
+layout(location = 1) out float o_depth_planar;
+#endif
+#ifdef OUT_DEPTH_PERSPECTIVE
+layout(location = 2) out float o_depth_perspective;
+#endif
+#ifdef OUT_CLASS
+layout(location = 3) out uint o_class;
+#endif
+#ifdef OUT_INSTANCE
+layout(location = 4) out uint o_instance;
+#endif
+#ifdef OUT_NORMAL
+layout(location = 5) out vec4 o_normal;
+#endif
+
+uniform bool u_has_texture;
+uniform mediump sampler2D u_texture;     // sRGB texture, decoded to linear by the sampler
+uniform vec3 u_to_sun_C;         // unit vector toward the sun, camera frame
+uniform vec3 u_up_C;             // world up (-z of NED), camera frame
+uniform float u_camera_height_m; // camera height above the world origin (-z of NED)
+uniform vec3 u_sun_rgb;
+uniform vec3 u_sky_zenith_rgb;
+uniform vec3 u_sky_horizon_rgb;
+uniform float u_ambient;         // fraction of the light that comes from the sky
+uniform float u_fog_distance_m;  // 0 = no fog
+
+void main() {
+  vec3 n = normalize(v_n_C);
+  if (!gl_FrontFacing) n = -n;
+#ifdef OUT_RGB
+  vec3 albedo = v_base_color;
+  if (u_has_texture) albedo *= texture(u_texture, v_uv).rgb;
+  float up = dot(n, u_up_C);
+  // Hemispheric ambient: sky colour from above, a warm ground bounce from below.
+  vec3 ground_bounce = vec3(0.32, 0.28, 0.24);
+  vec3 sky_light = mix(ground_bounce, mix(u_sky_horizon_rgb, u_sky_zenith_rgb, 0.5) * 1.3,
+                       0.5 + 0.5 * up);
+  // Contact darkening: walls get darker toward the ground (a cheap stand-in for ambient occlusion).
+  float height_m = dot(v_p_C, u_up_C) + u_camera_height_m;
+  float occlusion = mix(1.0, mix(0.55, 1.0, clamp(height_m / 4.0, 0.0, 1.0)), 1.0 - abs(up));
+  float sun = max(dot(n, u_to_sun_C), 0.0);
+  vec3 light = (1.0 - u_ambient) * 1.6 * u_sun_rgb * sun + u_ambient * 1.4 * sky_light * occlusion;
+  vec3 rgb = albedo * light;
+  if (u_fog_distance_m > 0.0) {
+    float fog = 1.0 - exp(-length(v_p_C) / u_fog_distance_m);
+    rgb = mix(rgb, u_sky_horizon_rgb, fog);
+  }
+  o_rgb = vec4(rgb, 1.0);
+#endif
+#ifdef OUT_DEPTH_PLANAR
+  o_depth_planar = v_p_C.z;
+#endif
+#ifdef OUT_DEPTH_PERSPECTIVE
+  o_depth_perspective = length(v_p_C);
+#endif
+#ifdef OUT_CLASS
+  o_class = v_ids.x;
+#endif
+#ifdef OUT_INSTANCE
+  o_instance = v_ids.y;
+#endif
+#ifdef OUT_NORMAL
+  o_normal = vec4(n, 0.0);
+#endif
+}
