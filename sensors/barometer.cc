@@ -1,0 +1,60 @@
+#include "sensors/barometer.h"
+
+#include "engine/core/config.h"
+#include "engine/environment/atmosphere.h"
+#include "sensors/sensor_checks.h"
+
+namespace airis::sensors {
+
+namespace {
+const std::string kColumns[] = {"pressure_pa", "temperature_k", "altitude_m"};
+}  // namespace
+
+void BarometerConfig::Validate() const {
+  engine::RequirePositive("rate_hz", rate_hz);
+  ValidateNested("mount", mount);
+  engine::RequireNonNegative("pressure_noise_pa", pressure_noise_pa);
+  engine::RequireInRange("drift_sigma", drift_sigma, 0.0, 0.5);
+  engine::RequirePositive("drift_correlation_s", drift_correlation_s);
+}
+
+void BarometerConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  Validate();
+  RequireRateWithinPhysics("rate_hz", rate_hz, physics_rate_hz);
+}
+
+Barometer::Barometer(std::string name, const BarometerConfig& config, engine::RandomStream stream)
+    : Sensor(std::move(name), (config.Validate(), config.rate_hz)),
+      config_(config),
+      stream_(stream),
+      drift_step_(GaussMarkovStep::Make(config.drift_sigma, config.drift_correlation_s,
+                                        1.0 / config.rate_hz)) {
+  // The drift starts in its stationary distribution, so its statistics do not depend on the run's length.
+  drift_ = stream_.Gaussian(config.drift_sigma);
+}
+
+std::span<const std::string> Barometer::columns() const { return kColumns; }
+
+void Barometer::CopyLatestRow(std::span<double> out) const {
+  AIRIS_DEMAND(out.size() == std::size(kColumns));
+  out[0] = latest_.pressure_pa;
+  out[1] = latest_.temperature_k;
+  out[2] = latest_.altitude_m;
+}
+
+void Barometer::Sample(const engine::SensorContext& context) {
+  AIRIS_DEMAND(context.state != nullptr && context.environment != nullptr);
+  const engine::RigidBodyState& s = *context.state;
+  const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
+  const engine::AtmosphereSample air = context.environment->CalcAir(p_WS);
+
+  drift_ = drift_step_.Next(drift_, stream_.Gaussian());
+  const double white_pa = stream_.Gaussian(config_.pressure_noise_pa);
+
+  latest_.time_ns = context.now_ns;
+  latest_.pressure_pa = air.pressure_pa * (1.0 + drift_) + white_pa;
+  latest_.temperature_k = air.temperature_k;
+  latest_.altitude_m = engine::ussa1976::CalcAltitudeFromPressure(latest_.pressure_pa);
+}
+
+}  // namespace airis::sensors

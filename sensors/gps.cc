@@ -1,0 +1,178 @@
+#include "sensors/gps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/config.h"
+#include "sensors/gauss_markov.h"
+#include "sensors/sensor_checks.h"
+
+namespace airis::sensors {
+
+using engine::TimeNs;
+using engine::Vec3;
+
+namespace {
+const std::string kColumns[] = {"fix_type",           "latitude_deg",      "longitude_deg",
+                                "altitude_m",         "velocity_north_m_s", "velocity_east_m_s",
+                                "eph_m",              "epv_m",             "position_time_s"};
+
+// First-order decay from `initial` to `final` with time constant `tau_s`, started at `start_ns`.
+double Decay(double initial, double final_value, double tau_s, TimeNs start_ns, TimeNs t_ns) {
+  if (t_ns <= start_ns) return initial;
+  return final_value + (initial - final_value) * std::exp(-engine::ToSeconds(t_ns - start_ns) / tau_s);
+}
+}  // namespace
+
+void GpsConfig::Validate() const {
+  engine::RequirePositive("rate_hz", rate_hz);
+  ValidateNested("mount", mount);
+  engine::RequireInRange("latency_s", latency_s, 0.0, 10.0);
+  engine::RequireNonNegative("startup_delay_s", startup_delay_s);
+  engine::RequirePositive("eph_initial_m", eph_initial_m);
+  engine::RequirePositive("eph_final_m", eph_final_m);
+  engine::RequirePositive("eph_time_constant_s", eph_time_constant_s);
+  engine::RequirePositive("epv_initial_m", epv_initial_m);
+  engine::RequirePositive("epv_final_m", epv_final_m);
+  engine::RequirePositive("epv_time_constant_s", epv_time_constant_s);
+  engine::RequirePositive("fix_3d_max_eph_m", fix_3d_max_eph_m);
+  engine::RequirePositive("fix_2d_max_eph_m", fix_2d_max_eph_m);
+  engine::Require(fix_2d_max_eph_m >= fix_3d_max_eph_m, "fix_2d_max_eph_m",
+                  "must be >= fix_3d_max_eph_m (got " + engine::FormatNumber(fix_2d_max_eph_m) + " < " +
+                      engine::FormatNumber(fix_3d_max_eph_m) + ")");
+  engine::RequirePositive("position_error_correlation_s", position_error_correlation_s);
+  engine::RequireInRange("position_white_fraction", position_white_fraction, 0.0, 1.0);
+  engine::RequireNonNegative("velocity_noise_m_s", velocity_noise_m_s);
+}
+
+void GpsConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  Validate();
+  RequireRateWithinPhysics("rate_hz", rate_hz, physics_rate_hz);
+}
+
+Gps::Gps(std::string name, const GpsConfig& config, engine::RandomStream stream)
+    : Sensor(std::move(name), (config.Validate(), config.rate_hz)),
+      config_(config),
+      stream_(stream),
+      latency_ns_(engine::SecondsToNs(config.latency_s, "latency_s")),
+      startup_ns_(engine::SecondsToNs(config.startup_delay_s, "startup_delay_s")) {
+  // Fixes are at least half a period apart (the schedule fires at the first tick at or after each due time
+  // and the rate never exceeds the tick rate), so this many entries always span the latency.
+  const auto capacity = static_cast<std::size_t>(2.0 * std::ceil(config.latency_s * config.rate_hz)) + 4;
+  history_.resize(capacity);
+  slow_error_ = GaussianVec3(stream_, 1.0);  // stationary start
+}
+
+double Gps::CalcEph_m(TimeNs t_ns) const {
+  return Decay(config_.eph_initial_m, config_.eph_final_m, config_.eph_time_constant_s, startup_ns_, t_ns);
+}
+
+double Gps::CalcEpv_m(TimeNs t_ns) const {
+  return Decay(config_.epv_initial_m, config_.epv_final_m, config_.epv_time_constant_s, startup_ns_, t_ns);
+}
+
+std::span<const std::string> Gps::columns() const { return kColumns; }
+
+void Gps::CopyLatestRow(std::span<double> out) const {
+  AIRIS_DEMAND(out.size() == std::size(kColumns));
+  out[0] = static_cast<double>(latest_.fix_type);
+  out[1] = engine::RadToDeg(latest_.latitude_rad);
+  out[2] = engine::RadToDeg(latest_.longitude_rad);
+  out[3] = latest_.altitude_m;
+  out[4] = latest_.velocity_north_m_s;
+  out[5] = latest_.velocity_east_m_s;
+  out[6] = latest_.eph_m;
+  out[7] = latest_.epv_m;
+  out[8] = engine::ToSeconds(latest_.position_time_ns);
+}
+
+Gps::Truth Gps::Lookup(TimeNs t_ns) const {
+  AIRIS_DEMAND(history_size_ > 0);
+  const auto at = [this](std::size_t i) -> const Truth& {
+    return history_[(history_head_ + i) % history_.size()];
+  };
+  if (t_ns <= at(0).t_ns) return at(0);
+  const Truth& newest = at(history_size_ - 1);
+  if (t_ns >= newest.t_ns) return newest;
+  // Search from the newest entry: the latency spans only a few fixes. Terminates because at(0) < t_ns.
+  std::size_t i = history_size_ - 2;
+  while (at(i).t_ns > t_ns) --i;
+  const Truth& a = at(i);
+  if (a.t_ns == t_ns) return a;  // exact past fix: no interpolation
+
+  // Cubic Hermite between a and b from positions and velocities at both ends; velocity linear.
+  const Truth& b = at(i + 1);
+  const double h = engine::ToSeconds(b.t_ns - a.t_ns);
+  const double s = static_cast<double>(t_ns - a.t_ns) / static_cast<double>(b.t_ns - a.t_ns);
+  const double s2 = s * s;
+  const double s3 = s2 * s;
+  Truth out;
+  out.t_ns = t_ns;
+  out.p_W = (2 * s3 - 3 * s2 + 1) * a.p_W + (s3 - 2 * s2 + s) * h * a.v_W + (-2 * s3 + 3 * s2) * b.p_W +
+            (s3 - s2) * h * b.v_W;
+  out.v_W = (1.0 - s) * a.v_W + s * b.v_W;
+  return out;
+}
+
+void Gps::Sample(const engine::SensorContext& context) {
+  AIRIS_DEMAND(context.state != nullptr && context.environment != nullptr);
+  const engine::RigidBodyState& s = *context.state;
+  const TimeNs now = context.now_ns;
+
+  // Record the antenna's truth now (lever arm included), dropping the oldest entry when full.
+  Truth truth;
+  truth.t_ns = now;
+  truth.p_W = s.p_W + s.q_WB * config_.mount.position_m;
+  truth.v_W = s.v_W + s.q_WB * s.w_B.cross(config_.mount.position_m);
+  if (history_size_ == history_.size()) {
+    history_head_ = (history_head_ + 1) % history_.size();
+    --history_size_;
+  }
+  history_[(history_head_ + history_size_) % history_.size()] = truth;
+  ++history_size_;
+
+  const TimeNs position_time = std::max<TimeNs>(0, now - latency_ns_);
+  const Truth past = Lookup(position_time);
+
+  // Position error: unit-variance slow Gauss-Markov part advanced over the time since the last fix, plus
+  // white, scaled by the current accuracy estimates. Draw order is fixed for reproducibility.
+  const double dt_s = previous_fix_ns_ < 0 ? 0.0 : engine::ToSeconds(now - previous_fix_ns_);
+  previous_fix_ns_ = now;
+  slow_error_ = GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, dt_s).Next(slow_error_,
+                                                                                           stream_);
+  const Vec3 white = GaussianVec3(stream_, 1.0);
+  const double w = config_.position_white_fraction;
+  const Vec3 unit_error = std::sqrt(1.0 - w) * slow_error_ + std::sqrt(w) * white;
+  const double eph = CalcEph_m(now);
+  const double epv = CalcEpv_m(now);
+  const double sigma_h = eph / std::sqrt(2.0);
+  const Vec3 error_W = Vec3(sigma_h * unit_error.x(), sigma_h * unit_error.y(), epv * unit_error.z());
+  const Vec3 p_W = config_.position_noise ? Vec3(past.p_W + error_W) : past.p_W;
+  const double vn = past.v_W.x() + stream_.Gaussian(config_.velocity_noise_m_s);
+  const double ve = past.v_W.y() + stream_.Gaussian(config_.velocity_noise_m_s);
+
+  latest_.time_ns = now;
+  latest_.position_time_ns = position_time;
+  if (now < startup_ns_) {
+    latest_.fix_type = GpsFixType::kNoFix;
+  } else if (eph <= config_.fix_3d_max_eph_m) {
+    latest_.fix_type = GpsFixType::k3D;
+  } else if (eph <= config_.fix_2d_max_eph_m) {
+    latest_.fix_type = GpsFixType::k2D;
+  } else {
+    latest_.fix_type = GpsFixType::kNoFix;
+  }
+  const engine::GeodeticPosition g = context.environment->frame().ToGeodetic(p_W);
+  latest_.latitude_rad = g.latitude_rad;
+  latest_.longitude_rad = g.longitude_rad;
+  latest_.altitude_m = g.altitude_m;
+  latest_.p_W = p_W;
+  latest_.velocity_north_m_s = vn;
+  latest_.velocity_east_m_s = ve;
+  latest_.ground_speed_m_s = std::hypot(vn, ve);
+  latest_.course_rad = std::atan2(ve, vn);
+  latest_.eph_m = eph;
+  latest_.epv_m = epv;
+}
+
+}  // namespace airis::sensors

@@ -1,0 +1,105 @@
+#include "sensors/imu.h"
+
+#include <cmath>
+
+#include "engine/core/config.h"
+#include "sensors/sensor_checks.h"
+
+namespace airis::sensors {
+
+using engine::Vec3;
+
+namespace {
+constexpr double kDegPerHourToRadPerSecond = 0.017453292519943295 / 3600.0;
+constexpr double kMicroG = 1e-6 * kStandardGravity_m_s2;
+constexpr double kMilliG = 1e-3 * kStandardGravity_m_s2;
+
+const std::string kColumns[] = {"gyro_x_rad_s",   "gyro_y_rad_s",   "gyro_z_rad_s",
+                                "accel_x_m_s2", "accel_y_m_s2", "accel_z_m_s2"};
+}  // namespace
+
+void ImuConfig::Validate() const {
+  engine::RequirePositive("rate_hz", rate_hz);
+  ValidateNested("mount", mount);
+  engine::RequireNonNegative("gyro_noise_density_deg_s_sqrt_hz", gyro_noise_density_deg_s_sqrt_hz);
+  engine::RequireNonNegative("gyro_bias_instability_deg_h", gyro_bias_instability_deg_h);
+  engine::RequirePositive("gyro_bias_correlation_s", gyro_bias_correlation_s);
+  engine::RequireNonNegative("gyro_turn_on_bias_deg_s", gyro_turn_on_bias_deg_s);
+  engine::RequireNonNegative("gyro_scale_factor_ppm", gyro_scale_factor_ppm);
+  engine::RequireNonNegative("accel_noise_density_ug_sqrt_hz", accel_noise_density_ug_sqrt_hz);
+  engine::RequireNonNegative("accel_bias_instability_ug", accel_bias_instability_ug);
+  engine::RequirePositive("accel_bias_correlation_s", accel_bias_correlation_s);
+  engine::RequireNonNegative("accel_turn_on_bias_mg", accel_turn_on_bias_mg);
+  engine::RequireNonNegative("accel_scale_factor_ppm", accel_scale_factor_ppm);
+}
+
+void ImuConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  Validate();
+  RequireRateWithinPhysics("rate_hz", rate_hz, physics_rate_hz);
+}
+
+Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
+    : Sensor(std::move(name), (config.Validate(), config.rate_hz)),
+      config_(config),
+      stream_(stream),
+      R_SB_(config.mount.q_BS().conjugate().toRotationMatrix()),
+      p_BS_(config.mount.position_m) {
+  // A white noise of density N (unit/sqrt(Hz)) sampled at f_s has per-sample sigma N sqrt(f_s).
+  const double sqrt_rate = std::sqrt(config.rate_hz);
+  const double dt_s = 1.0 / config.rate_hz;
+  gyro_white_sigma_rad_s_ = engine::DegToRad(config.gyro_noise_density_deg_s_sqrt_hz) * sqrt_rate;
+  accel_white_sigma_m_s2_ = config.accel_noise_density_ug_sqrt_hz * kMicroG * sqrt_rate;
+
+  // Bias instability B is the peak of the bias's Allan deviation: sigma_b = B / 0.617.
+  const double gyro_bias_sigma =
+      config.gyro_bias_instability_deg_h * kDegPerHourToRadPerSecond / kGaussMarkovAllanPeak;
+  const double accel_bias_sigma = config.accel_bias_instability_ug * kMicroG / kGaussMarkovAllanPeak;
+  gyro_bias_step_ = GaussMarkovStep::Make(gyro_bias_sigma, config.gyro_bias_correlation_s, dt_s);
+  accel_bias_step_ = GaussMarkovStep::Make(accel_bias_sigma, config.accel_bias_correlation_s, dt_s);
+
+  // Power-on draws, in a fixed order: in-run biases from their stationary distribution, then turn-on biases,
+  // then scale factors.
+  gyro_bias_ = GaussianVec3(stream_, gyro_bias_sigma);
+  accel_bias_ = GaussianVec3(stream_, accel_bias_sigma);
+  gyro_turn_on_bias_ = GaussianVec3(stream_, engine::DegToRad(config.gyro_turn_on_bias_deg_s));
+  accel_turn_on_bias_ = GaussianVec3(stream_, config.accel_turn_on_bias_mg * kMilliG);
+  gyro_scale_ = Vec3::Ones() + GaussianVec3(stream_, config.gyro_scale_factor_ppm * 1e-6);
+  accel_scale_ = Vec3::Ones() + GaussianVec3(stream_, config.accel_scale_factor_ppm * 1e-6);
+}
+
+std::span<const std::string> Imu::columns() const { return kColumns; }
+
+void Imu::CopyLatestRow(std::span<double> out) const {
+  AIRIS_DEMAND(out.size() == std::size(kColumns));
+  for (int i = 0; i < 3; ++i) {
+    out[i] = latest_.angular_velocity_S_rad_s[i];
+    out[3 + i] = latest_.specific_force_S_m_s2[i];
+  }
+}
+
+void Imu::Sample(const engine::SensorContext& context) {
+  AIRIS_DEMAND(context.state != nullptr && context.accelerations != nullptr);
+  const engine::RigidBodyState& s = *context.state;
+  const engine::RigidBodyAccelerations& a = *context.accelerations;
+
+  // Truth at the mounting point (rigid body kinematics), in sensor axes.
+  const Vec3& w_B = s.w_B;
+  const Vec3 f_B =
+      a.CalcSpecificForce_B(s.q_WB) + a.alpha_B.cross(p_BS_) + w_B.cross(w_B.cross(p_BS_));
+  const Vec3 w_S = R_SB_ * w_B;
+  const Vec3 f_S = R_SB_ * f_B;
+
+  // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are reproducible.
+  gyro_bias_ = gyro_bias_step_.Next(gyro_bias_, stream_);
+  accel_bias_ = accel_bias_step_.Next(accel_bias_, stream_);
+  const Vec3 gyro_white = GaussianVec3(stream_, gyro_white_sigma_rad_s_);
+  const Vec3 accel_white = GaussianVec3(stream_, accel_white_sigma_m_s2_);
+
+  latest_.time_ns = context.now_ns;
+  latest_.angular_velocity_S_rad_s =
+      gyro_scale_.cwiseProduct(w_S) + gyro_turn_on_bias_ + gyro_bias_ + gyro_white;
+  latest_.specific_force_S_m_s2 =
+      accel_scale_.cwiseProduct(f_S) + accel_turn_on_bias_ + accel_bias_ + accel_white;
+}
+
+}  // namespace airis::sensors

@@ -1,0 +1,136 @@
+#include "sensors/lidar.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/config.h"
+#include "sensors/sensor_checks.h"
+
+namespace airis::sensors {
+
+namespace {
+const std::string kColumns[] = {"point_count", "hit_count", "nearest_m"};
+}  // namespace
+
+void LidarConfig::Validate() const {
+  engine::RequirePositive("rotation_rate_hz", rotation_rate_hz);
+  ValidateNested("mount", mount);
+  engine::RequireInRange("channels", channels, 1, 1024);
+  engine::RequireInRange("vertical_fov_upper_deg", vertical_fov_upper_deg, -90.0, 90.0);
+  engine::RequireInRange("vertical_fov_lower_deg", vertical_fov_lower_deg, -90.0, vertical_fov_upper_deg);
+  engine::RequireInRange("horizontal_fov_deg", horizontal_fov_deg, 0.0, 360.0);
+  engine::RequirePositive("horizontal_fov_deg", horizontal_fov_deg);
+  engine::RequireInRange("horizontal_resolution_deg", horizontal_resolution_deg, 1e-3, 360.0);
+  engine::RequireNonNegative("min_range_m", min_range_m);
+  engine::RequirePositive("max_range_m", max_range_m);
+  engine::Require(max_range_m > min_range_m, "max_range_m",
+                  "must be > min_range_m (got " + engine::FormatNumber(max_range_m) + " <= " +
+                      engine::FormatNumber(min_range_m) + ")");
+  engine::RequireNonNegative("range_noise_m", range_noise_m);
+  engine::Require(static_cast<double>(channels) * CalcColumns() <= 1e7, "horizontal_resolution_deg",
+                  "gives more than 10,000,000 points per scan");
+}
+
+void LidarConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  Validate();
+  RequireRateWithinPhysics("rotation_rate_hz", rotation_rate_hz, physics_rate_hz);
+}
+
+int LidarConfig::CalcColumns() const {
+  return std::max(1, static_cast<int>(std::lround(horizontal_fov_deg / horizontal_resolution_deg)));
+}
+
+Lidar::Lidar(std::string name, const LidarConfig& config, engine::RandomStream stream)
+    : Sensor(std::move(name), (config.Validate(), config.rotation_rate_hz)),
+      config_(config),
+      stream_(stream) {
+  const int columns = config.CalcColumns();
+  const int channels = config.channels;
+  const std::size_t n = static_cast<std::size_t>(columns) * channels;
+  // Full turns start at azimuth 0; partial sweeps are centred on the sensor's x axis.
+  const double step_deg = config.horizontal_fov_deg / columns;
+  const double first_azimuth_deg =
+      config.horizontal_fov_deg >= 360.0 ? 0.0 : -0.5 * config.horizontal_fov_deg + 0.5 * step_deg;
+  const double elevation_step_deg =
+      channels > 1 ? (config.vertical_fov_upper_deg - config.vertical_fov_lower_deg) / (channels - 1) : 0.0;
+  directions_S_.reserve(n);
+  for (int c = 0; c < columns; ++c) {
+    const double azimuth = engine::DegToRad(first_azimuth_deg + c * step_deg);
+    for (int k = 0; k < channels; ++k) {
+      const double elevation = engine::DegToRad(config.vertical_fov_lower_deg + k * elevation_step_deg);
+      directions_S_.emplace_back(static_cast<float>(std::cos(elevation) * std::cos(azimuth)),
+                                 static_cast<float>(std::cos(elevation) * std::sin(azimuth)),
+                                 static_cast<float>(-std::sin(elevation)));
+    }
+  }
+  rays_.resize(n);
+  hits_.resize(n);
+  scan_.channels = channels;
+  scan_.columns = columns;
+  scan_.points.resize(n);
+}
+
+double Lidar::points_per_second() const {
+  return static_cast<double>(scan_.points.size()) * config_.rotation_rate_hz;
+}
+
+std::span<const std::string> Lidar::columns() const { return kColumns; }
+
+void Lidar::CopyLatestRow(std::span<double> out) const {
+  AIRIS_DEMAND(out.size() == std::size(kColumns));
+  float nearest = 0.0f;
+  bool any = false;
+  for (const LidarPoint& p : scan_.points) {
+    if (p.hit && (!any || p.range_m < nearest)) {
+      nearest = p.range_m;
+      any = true;
+    }
+  }
+  out[0] = static_cast<double>(scan_.points.size());
+  out[1] = static_cast<double>(scan_.hit_count);
+  out[2] = any ? nearest : 0.0;
+}
+
+void Lidar::Sample(const engine::SensorContext& context) {
+  AIRIS_DEMAND(context.state != nullptr);
+  const engine::RigidBodyState& s = *context.state;
+  scan_.time_ns = context.now_ns;
+  scan_.p_WS = s.p_W + s.q_WB * config_.mount.position_m;
+  scan_.q_WS = s.q_WB * config_.mount.q_BS();
+  const engine::Mat3 R_WS = scan_.q_WS.toRotationMatrix();
+  const auto min_range = static_cast<float>(config_.min_range_m);
+  const auto max_range = static_cast<float>(config_.max_range_m);
+
+  for (std::size_t i = 0; i < rays_.size(); ++i) {
+    engine::Ray& ray = rays_[i];
+    ray.origin_W = scan_.p_WS;
+    ray.direction_W = R_WS * directions_S_[i].cast<double>();
+    ray.min_range_m = min_range;
+    ray.max_range_m = max_range;
+  }
+  if (context.rays != nullptr) {
+    context.rays->Cast(rays_, hits_);
+  } else {
+    std::fill(hits_.begin(), hits_.end(), engine::RayHit{});
+  }
+
+  // One draw per point whether or not it returns, so the stream does not depend on the scene.
+  std::size_t hit_count = 0;
+  for (std::size_t i = 0; i < hits_.size(); ++i) {
+    const engine::RayHit& hit = hits_[i];
+    LidarPoint& point = scan_.points[i];
+    const double noise_m = stream_.Gaussian(config_.range_noise_m);
+    point.hit = hit.hit();
+    point.class_id = hit.class_id;
+    point.instance_id = hit.instance_id;
+    if (point.hit) {
+      point.range_m = std::clamp(static_cast<float>(hit.distance_m + noise_m), min_range, max_range);
+      ++hit_count;
+    } else {
+      point.range_m = 0.0f;
+    }
+  }
+  scan_.hit_count = hit_count;
+}
+
+}  // namespace airis::sensors

@@ -1,0 +1,68 @@
+#include "sensors/magnetometer.h"
+
+#include "engine/core/config.h"
+#include "sensors/gauss_markov.h"
+#include "sensors/sensor_checks.h"
+
+namespace airis::sensors {
+
+namespace {
+constexpr double kGaussPerNanotesla = 1e-5;  // 1 G = 1e-4 T = 1e5 nT
+const std::string kColumns[] = {"mag_x_gauss", "mag_y_gauss", "mag_z_gauss"};
+}  // namespace
+
+void MagnetometerConfig::Validate() const {
+  engine::RequirePositive("rate_hz", rate_hz);
+  ValidateNested("mount", mount);
+  engine::RequireNonNegative("noise_gauss", noise_gauss);
+  for (int i = 0; i < 3; ++i) {
+    engine::RequireFinite("scale_factor[" + std::to_string(i) + "]", scale_factor[i]);
+    engine::RequireFinite("hard_iron_gauss[" + std::to_string(i) + "]", hard_iron_gauss[i]);
+  }
+  engine::Require(soft_iron.empty() || soft_iron.size() == 9, "soft_iron",
+                  "must be empty or hold 9 numbers (got " + std::to_string(soft_iron.size()) + ")");
+  for (std::size_t i = 0; i < soft_iron.size(); ++i) {
+    engine::RequireFinite("soft_iron[" + std::to_string(i) + "]", soft_iron[i]);
+  }
+}
+
+void MagnetometerConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  Validate();
+  RequireRateWithinPhysics("rate_hz", rate_hz, physics_rate_hz);
+}
+
+Magnetometer::Magnetometer(std::string name, const MagnetometerConfig& config,
+                           engine::RandomStream stream)
+    : Sensor(std::move(name), (config.Validate(), config.rate_hz)),
+      config_(config),
+      stream_(stream),
+      R_SB_(config.mount.q_BS().conjugate().toRotationMatrix()) {
+  engine::Mat3 soft_iron = engine::Mat3::Identity();
+  if (!config.soft_iron.empty()) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) soft_iron(r, c) = config.soft_iron[3 * r + c];
+    }
+  }
+  gain_ = kGaussPerNanotesla * soft_iron * config.scale_factor.asDiagonal();
+}
+
+std::span<const std::string> Magnetometer::columns() const { return kColumns; }
+
+void Magnetometer::CopyLatestRow(std::span<double> out) const {
+  AIRIS_DEMAND(out.size() == std::size(kColumns));
+  for (int i = 0; i < 3; ++i) out[i] = latest_.field_S_gauss[i];
+}
+
+void Magnetometer::Sample(const engine::SensorContext& context) {
+  AIRIS_DEMAND(context.state != nullptr && context.environment != nullptr);
+  const engine::RigidBodyState& s = *context.state;
+  const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
+  const engine::Vec3 field_W_nT = context.environment->CalcMagneticField_nT(p_WS);
+  const engine::Vec3 field_S_nT = R_SB_ * (s.q_WB.conjugate() * field_W_nT);
+
+  latest_.time_ns = context.now_ns;
+  latest_.field_S_gauss =
+      gain_ * field_S_nT + config_.hard_iron_gauss + GaussianVec3(stream_, config_.noise_gauss);
+}
+
+}  // namespace airis::sensors

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/core/random.h"
+#include "engine/world/mount.h"
+#include "engine/world/sensor.h"
+
+namespace airis::sensors {
+
+/// Description of a three-axis magnetometer. Defaults: the reference implementation's noise
+/// (reference/parameters.md), no calibration errors.
+struct MagnetometerConfig {
+  double rate_hz = 50.0;  ///< samples per simulated second
+  engine::MountConfig mount;
+  double noise_gauss = 0.005;                           ///< white noise per axis, 1 sigma (G)
+  engine::Vec3 scale_factor = engine::Vec3::Ones();     ///< per-axis gain (dimensionless, 1 = ideal)
+  engine::Vec3 hard_iron_gauss = engine::Vec3::Zero();  ///< fixed bias in sensor axes (G)
+  /// Soft-iron matrix, 9 numbers row by row; empty = identity.
+  std::vector<double> soft_iron;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("rate_hz", rate_hz, "samples per simulated second (Hz)");
+    v.Field("mount", mount, "pose of the magnetometer on the vehicle");
+    v.Field("noise_gauss", noise_gauss, "white noise per axis, 1 sigma (gauss)");
+    v.Field("scale_factor", scale_factor, "per-axis gain [x, y, z] (1 = ideal)");
+    v.Field("hard_iron_gauss", hard_iron_gauss, "fixed bias [x, y, z] in sensor axes (gauss)");
+    v.Field("soft_iron", soft_iron, "3x3 soft-iron matrix, 9 numbers row by row (empty = identity)");
+  }
+  /// Throws InvalidField naming the field.
+  void Validate() const;
+  /// Validate() plus rate_hz <= physics_rate_hz.
+  void ValidateForPhysicsRate(double physics_rate_hz) const;
+};
+
+/// One magnetometer sample.
+struct MagnetometerSample {
+  engine::TimeNs time_ns = -1;                        ///< simulated time of the sample
+  engine::Vec3 field_S_gauss = engine::Vec3::Zero();  ///< measured field in sensor axes (G; 1 G = 1e5 nT)
+};
+
+/// Magnetometer (paper sec. 3.4.3): the environment's geomagnetic field (tilted dipole or WMM, per scene) at
+/// the sensor, rotated into sensor axes, with calibration errors and noise:
+///   m_S = K diag(s) R_SW B_W + h + w,
+/// K the soft-iron matrix, s the per-axis scale factors, h the hard-iron bias, w white noise. The field model
+/// is evaluated once per sample, at this sensor's rate only.
+class Magnetometer final : public engine::Sensor {
+ public:
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream.
+  Magnetometer(std::string name, const MagnetometerConfig& config, engine::RandomStream stream);
+
+  const MagnetometerSample& latest() const { return latest_; }
+  const MagnetometerConfig& config() const { return config_; }
+
+  std::span<const std::string> columns() const override;
+  void CopyLatestRow(std::span<double> out) const override;
+
+ protected:
+  void Sample(const engine::SensorContext& context) override;
+
+ private:
+  MagnetometerConfig config_;
+  engine::RandomStream stream_;
+  engine::Mat3 R_SB_;
+  engine::Mat3 gain_;  // K diag(s), gauss per nanotesla folded in
+  MagnetometerSample latest_;
+};
+
+}  // namespace airis::sensors

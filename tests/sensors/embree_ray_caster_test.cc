@@ -1,0 +1,203 @@
+#include "engine/world/embree_ray_caster.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "engine/core/random.h"
+#include "tests/sensors/sensor_test_util.h"
+
+namespace airis::sensors {
+namespace {
+
+using engine::EmbreeRayCaster;
+using engine::Ray;
+using engine::RayHit;
+using engine::Vec3;
+using testing::BoxSpec;
+using testing::MakeBoxScene;
+
+// Embree intersects in single precision: a distance of tens of metres carries a few ulps of float
+// (~1e-6 relative) from the ray-triangle arithmetic and the float transform of the instance.
+constexpr double kFloatTolerance_m = 1e-4;
+
+RayHit CastOne(const EmbreeRayCaster& caster, const Ray& ray) {
+  RayHit hit;
+  caster.Cast({&ray, 1}, {&hit, 1});
+  return hit;
+}
+
+Ray MakeRay(const Vec3& origin, const Vec3& direction, float max_range = 1000.0f) {
+  Ray r;
+  r.origin_W = origin;
+  r.direction_W = direction.normalized();
+  r.max_range_m = max_range;
+  return r;
+}
+
+TEST(EmbreeRayCasterTest, WallAtKnownDistance) {
+  // GIVEN a wall whose near face is the plane x = 10 m, labelled class 7 / instance 42
+  BoxSpec wall;
+  wall.center_W = Vec3(10.25, 0.0, -5.0);
+  wall.size_m = Vec3(0.5, 40.0, 20.0);
+  wall.class_id = 7;
+  wall.instance_id = 42;
+  const EmbreeRayCaster caster(MakeBoxScene({wall}));
+  // WHEN a ray leaves the origin at angle a from the wall's normal
+  for (double a_deg : {0.0, 10.0, 30.0, 45.0}) {
+    const double a = engine::DegToRad(a_deg);
+    const RayHit hit = CastOne(caster, MakeRay(Vec3(0, 0, -5), Vec3(std::cos(a), std::sin(a), 0)));
+    // THEN it hits at 10 / cos(a), with the wall's labels and a normal facing back along -x
+    ASSERT_TRUE(hit.hit()) << a_deg;
+    EXPECT_NEAR(hit.distance_m, 10.0 / std::cos(a), kFloatTolerance_m) << a_deg;
+    EXPECT_EQ(hit.class_id, 7);
+    EXPECT_EQ(hit.instance_id, 42u);
+    EXPECT_NEAR(hit.normal_W.x(), -1.0f, 1e-5f);
+    EXPECT_NEAR(hit.normal_W.y(), 0.0f, 1e-5f);
+  }
+}
+
+TEST(EmbreeRayCasterTest, GroundPlaneAtHeightAndTilt) {
+  // GIVEN a 1 km ground slab whose top face is z = 0, pitched by 20 degrees about y through the origin
+  // (box centre moved half its thickness along the tilted normal), and a point 30 m above the origin
+  const double tilt = engine::DegToRad(20.0);
+  BoxSpec ground;
+  ground.size_m = Vec3(1000.0, 1000.0, 2.0);
+  ground.pitch_rad = tilt;
+  const Vec3 normal_up = Eigen::AngleAxisd(tilt, Vec3::UnitY()) * Vec3(0, 0, -1);
+  ground.center_W = -1.0 * normal_up;  // 1 m (half thickness) below the surface along the normal
+  const EmbreeRayCaster caster(MakeBoxScene({ground}));
+  // WHEN rays go straight down from (x0, 0, -h)
+  const double h = 30.0;
+  for (double x0 : {-20.0, 0.0, 15.0}) {
+    const RayHit hit = CastOne(caster, MakeRay(Vec3(x0, 0, -h), Vec3(0, 0, 1)));
+    // THEN the surface n . p = 0 (n = (sin t, 0, cos t) down-facing normal) is met at h - x0 tan(t)
+    ASSERT_TRUE(hit.hit());
+    EXPECT_NEAR(hit.distance_m, h - x0 * std::tan(tilt), kFloatTolerance_m) << x0;
+    EXPECT_NEAR(hit.normal_W.cast<double>().dot(normal_up), 1.0, 1e-5);
+  }
+  // AND a ray at 60 degrees off vertical toward -x from above the origin meets it where the closed form says
+  const double b = engine::DegToRad(60.0);
+  const Vec3 d(-std::sin(b), 0, std::cos(b));
+  const RayHit hit = CastOne(caster, MakeRay(Vec3(0, 0, -h), d));
+  // p = (0,0,-h) + t d on n . p = 0 with n = (sin t, 0, cos t): t = h cos(tilt) / (d . n)
+  const Vec3 n(std::sin(tilt), 0, std::cos(tilt));
+  ASSERT_TRUE(hit.hit());
+  EXPECT_NEAR(hit.distance_m, h * std::cos(tilt) / d.dot(n), kFloatTolerance_m);
+}
+
+TEST(EmbreeRayCasterTest, RangeLimitsAndMisses) {
+  BoxSpec wall;
+  wall.center_W = Vec3(10.5, 0, 0);
+  wall.size_m = Vec3(1, 10, 10);
+  const EmbreeRayCaster caster(MakeBoxScene({wall}));
+  // Beyond max range: nothing.
+  EXPECT_FALSE(CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitX(), 9.5f)).hit());
+  // Pointing away: nothing, and the hit keeps its "nothing" labels.
+  const RayHit away = CastOne(caster, MakeRay(Vec3::Zero(), -Vec3::UnitX()));
+  EXPECT_FALSE(away.hit());
+  EXPECT_EQ(away.class_id, engine::kNoClass);
+  EXPECT_EQ(away.instance_id, engine::kNoInstance);
+  // A min range past the near face (10 m) finds the far face at 11 m (seen from inside).
+  Ray skip = MakeRay(Vec3::Zero(), Vec3::UnitX());
+  skip.min_range_m = 10.5f;
+  const RayHit far = CastOne(caster, skip);
+  ASSERT_TRUE(far.hit());
+  EXPECT_NEAR(far.distance_m, 11.0, kFloatTolerance_m);
+}
+
+TEST(EmbreeRayCasterTest, ObjectsWithoutCollisionAreNotHit) {
+  BoxSpec ghost;
+  ghost.center_W = Vec3(5.5, 0, 0);
+  ghost.collision = engine::CollisionShape::kNone;
+  ghost.instance_id = 1;
+  BoxSpec wall;
+  wall.center_W = Vec3(20.5, 0, 0);
+  wall.instance_id = 2;
+  const EmbreeRayCaster caster(MakeBoxScene({ghost, wall}));
+  EXPECT_EQ(caster.instance_count(), 1u);
+  const RayHit hit = CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitX()));
+  ASSERT_TRUE(hit.hit());
+  EXPECT_EQ(hit.instance_id, 2u);
+  EXPECT_NEAR(hit.distance_m, 20.0, kFloatTolerance_m);
+}
+
+TEST(EmbreeRayCasterTest, EmptySceneHitsNothing) {
+  const EmbreeRayCaster caster(engine::StaticScene{});
+  EXPECT_FALSE(CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitX())).hit());
+}
+
+// Slab-method distance to an axis-aligned box (closed form): the entry distance, or the exit distance from
+// inside (a ray tracer sees the inner side of the face), infinity when missed or behind.
+double SlabDistance(const Vec3& o, const Vec3& d, const Vec3& lo, const Vec3& hi) {
+  double t0 = 0.0;
+  double t1 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double a = (lo[i] - o[i]) / d[i];
+    const double b = (hi[i] - o[i]) / d[i];
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  }
+  if (t0 > t1) return std::numeric_limits<double>::infinity();
+  return t0 > 0.0 ? t0 : t1;
+}
+
+TEST(EmbreeRayCasterTest, InstancedBoxesMatchSlabIntersectionInBatches) {
+  // GIVEN 400 axis-aligned boxes of random sizes sharing one mesh
+  engine::RandomStream random(11);
+  std::vector<BoxSpec> boxes;
+  for (int i = 0; i < 400; ++i) {
+    BoxSpec b;
+    b.size_m = Vec3(random.Uniform(1, 8), random.Uniform(1, 8), random.Uniform(2, 30));
+    b.center_W = Vec3(random.Uniform(-100, 100), random.Uniform(-100, 100), -0.5 * b.size_m.z());
+    b.instance_id = static_cast<std::uint32_t>(i + 1);
+    b.class_id = static_cast<std::uint8_t>(1 + i % 5);
+    boxes.push_back(b);
+  }
+  const EmbreeRayCaster caster(MakeBoxScene(boxes));
+  EXPECT_EQ(caster.mesh_scene_count(), 1u);
+  EXPECT_EQ(caster.instance_count(), 400u);
+  // WHEN 2000 random rays (more than one internal batch) are cast in one call
+  std::vector<Ray> rays(2000);
+  for (Ray& r : rays) {
+    r = MakeRay(Vec3(random.Uniform(-120, 120), random.Uniform(-120, 120), random.Uniform(-40, -1)),
+                Vec3(random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-0.3, 0.6)), 500.0f);
+  }
+  std::vector<RayHit> hits(rays.size());
+  caster.Cast(rays, hits);
+  // THEN every ray agrees with the nearest slab intersection over all boxes
+  int hit_count = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t best_id = engine::kNoInstance;
+    for (const BoxSpec& b : boxes) {
+      const double t = SlabDistance(rays[i].origin_W, rays[i].direction_W, b.center_W - 0.5 * b.size_m,
+                                    b.center_W + 0.5 * b.size_m);
+      if (t < best) {
+        best = t;
+        best_id = b.instance_id;
+      }
+    }
+    if (best > 500.0) {
+      EXPECT_FALSE(hits[i].hit()) << i;
+      continue;
+    }
+    ++hit_count;
+    ASSERT_TRUE(hits[i].hit()) << i;
+    EXPECT_NEAR(hits[i].distance_m, best, kFloatTolerance_m * std::max(1.0, best / 10.0)) << i;
+    EXPECT_EQ(hits[i].instance_id, best_id) << i;
+  }
+  EXPECT_GT(hit_count, 200);  // the comparison must exercise many hits, not only misses
+}
+
+TEST(EmbreeRayCasterTest, RejectsBadMeshIndices) {
+  engine::StaticScene scene = MakeBoxScene({BoxSpec{}});
+  scene.meshes[0].indices.push_back(999);
+  scene.meshes[0].indices.push_back(0);
+  scene.meshes[0].indices.push_back(1);
+  EXPECT_THROW(EmbreeRayCaster{scene}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace airis::sensors

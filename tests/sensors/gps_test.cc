@@ -1,0 +1,173 @@
+#include "sensors/gps.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "tests/sensors/sensor_test_util.h"
+
+namespace airis::sensors {
+namespace {
+
+using engine::TimeNs;
+using engine::Vec3;
+using testing::Truth;
+
+constexpr TimeNs kTick = 1'000'000;  // 1 kHz physics
+
+// A cubic trajectory and its velocity (cubic Hermite interpolation reproduces it exactly).
+Vec3 Position(double t) { return Vec3(2.0 * t * t, 3.0 * t - 1.0, -10.0 - 0.5 * t * t * t); }
+Vec3 Velocity(double t) { return Vec3(4.0 * t, 3.0, -1.5 * t * t); }
+
+GpsConfig NoiselessConfig() {
+  GpsConfig c;
+  c.position_noise = false;
+  c.velocity_noise_m_s = 0.0;
+  return c;
+}
+
+// Runs `gps` on 1 kHz ticks along the cubic trajectory for `seconds`, collecting each fix.
+std::vector<GpsSample> Fly(Gps& gps, const engine::Environment& env, double seconds) {
+  std::vector<GpsSample> fixes;
+  Truth truth;
+  for (std::int64_t k = 0; k <= static_cast<std::int64_t>(seconds * 1000); ++k) {
+    const double t = engine::ToSeconds(k * kTick);
+    truth.state.p_W = Position(t);
+    truth.state.v_W = Velocity(t);
+    if (gps.Update(truth.At(k * kTick, env))) fixes.push_back(gps.latest());
+  }
+  return fixes;
+}
+
+TEST(GpsTest, ReportsTheTruthFromExactlyTheLatencyEarlier) {
+  // GIVEN a noiseless GPS at 10 Hz with 0.2 s latency on 1 kHz ticks, along a cubic path
+  const engine::Environment env = testing::MakeEnvironment();
+  Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
+  const std::vector<GpsSample> fixes = Fly(gps, env, 3.0);
+  // THEN fixes come exactly every 100 ms, and each reports the antenna at t - 0.2 s
+  ASSERT_EQ(fixes.size(), 31u);
+  for (std::size_t i = 0; i < fixes.size(); ++i) {
+    const GpsSample& f = fixes[i];
+    EXPECT_EQ(f.time_ns, static_cast<TimeNs>(i) * 100'000'000);
+    if (f.time_ns < 200'000'000) {
+      EXPECT_EQ(f.position_time_ns, 0);  // before the first 0.2 s: the first truth seen
+      continue;
+    }
+    const double t_past = engine::ToSeconds(f.time_ns) - 0.2;
+    EXPECT_EQ(f.position_time_ns, f.time_ns - 200'000'000);
+    EXPECT_NEAR((f.p_W - Position(t_past)).norm(), 0.0, 1e-9) << i;
+    EXPECT_NEAR(f.velocity_north_m_s, Velocity(t_past).x(), 1e-9);
+    EXPECT_NEAR(f.velocity_east_m_s, Velocity(t_past).y(), 1e-9);
+    const engine::GeodeticPosition g = env.frame().ToGeodetic(Position(t_past));
+    EXPECT_DOUBLE_EQ(f.latitude_rad, g.latitude_rad);
+    EXPECT_DOUBLE_EQ(f.longitude_rad, g.longitude_rad);
+    EXPECT_DOUBLE_EQ(f.altitude_m, g.altitude_m);
+  }
+}
+
+TEST(GpsTest, LatencyBetweenFixesIsInterpolatedExactlyForCubicMotion) {
+  // A latency of 0.15 s falls between two fixes; Hermite interpolation is exact for cubic paths
+  // (1e-9 m: rounding of positions ~10 m).
+  const engine::Environment env = testing::MakeEnvironment();
+  GpsConfig c = NoiselessConfig();
+  c.latency_s = 0.15;
+  Gps gps("gps", c, engine::RandomStream(1));
+  const std::vector<GpsSample> fixes = Fly(gps, env, 2.0);
+  for (const GpsSample& f : fixes) {
+    if (f.time_ns < 150'000'000) continue;
+    EXPECT_NEAR((f.p_W - Position(engine::ToSeconds(f.position_time_ns))).norm(), 0.0, 1e-9);
+  }
+}
+
+TEST(GpsTest, AccuracyEstimatesDecayAsFirstOrderFilter) {
+  const engine::Environment env = testing::MakeEnvironment();
+  Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
+  const std::vector<GpsSample> fixes = Fly(gps, env, 8.0);
+  for (const GpsSample& f : fixes) {
+    const double since_start = engine::ToSeconds(f.time_ns) - 1.0;  // startup delay 1 s
+    const double decay = since_start > 0 ? std::exp(-since_start / 0.9) : 1.0;
+    EXPECT_NEAR(f.eph_m, 0.1 + 99.9 * decay, 1e-9);
+    EXPECT_NEAR(f.epv_m, 0.1 + 99.9 * decay, 1e-9);
+  }
+  // One time constant after startup: final + (initial - final) / e.
+  EXPECT_NEAR(gps.CalcEph_m(engine::SecondsToNs(1.9)), 0.1 + 99.9 / std::exp(1.0), 1e-9);
+}
+
+TEST(GpsTest, FixTypeFollowsStartupAndThresholds) {
+  const engine::Environment env = testing::MakeEnvironment();
+  Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
+  const std::vector<GpsSample> fixes = Fly(gps, env, 8.0);
+  // eph crosses 4 m at 1 + 0.9 ln(99.9 / 3.9) = 3.918 s and 3 m at 1 + 0.9 ln(99.9 / 2.9) = 4.186 s.
+  for (const GpsSample& f : fixes) {
+    const double t = engine::ToSeconds(f.time_ns);
+    GpsFixType expected = GpsFixType::kNoFix;
+    if (t >= 4.186) {
+      expected = GpsFixType::k3D;
+    } else if (t >= 3.918) {
+      expected = GpsFixType::k2D;
+    }
+    EXPECT_EQ(f.fix_type, expected) << "t = " << t << " eph = " << f.eph_m;
+  }
+  // The 2D window holds fixes at 4.0 and 4.1 s.
+  EXPECT_EQ(fixes[40].fix_type, GpsFixType::k2D);
+  EXPECT_EQ(fixes[42].fix_type, GpsFixType::k3D);
+}
+
+TEST(GpsTest, PositionErrorMatchesAccuracyEstimates) {
+  // GIVEN constant accuracy estimates eph = 2 m, epv = 3 m and a 1 s error correlation, sampled for
+  // 20,000 s at 10 Hz (stationary body)
+  GpsConfig c;
+  c.eph_initial_m = c.eph_final_m = 2.0;
+  c.epv_initial_m = c.epv_final_m = 3.0;
+  c.position_error_correlation_s = 1.0;
+  c.startup_delay_s = 0.0;
+  c.latency_s = 0.0;
+  const engine::Environment env = testing::MakeEnvironment();
+  Gps gps("gps", c, engine::RandomStream(77));
+  Truth truth;
+  double horizontal_ss = 0.0;
+  double vertical_ss = 0.0;
+  double velocity_ss = 0.0;
+  const int n = 200'000;
+  for (int k = 0; k < n; ++k) {
+    gps.Update(truth.At(static_cast<TimeNs>(k) * 100'000'000, env));
+    const Vec3& p = gps.latest().p_W;
+    horizontal_ss += p.x() * p.x() + p.y() * p.y();
+    vertical_ss += p.z() * p.z();
+    velocity_ss += std::pow(gps.latest().velocity_north_m_s, 2);
+  }
+  // THEN the RMS horizontal error is eph and the vertical epv: ~10,000 correlation times give a ~1%
+  // standard error; 5% tolerance. Velocity noise: 200,000 white samples, 5%.
+  EXPECT_NEAR(std::sqrt(horizontal_ss / n) / 2.0, 1.0, 0.05);
+  EXPECT_NEAR(std::sqrt(vertical_ss / n) / 3.0, 1.0, 0.05);
+  EXPECT_NEAR(std::sqrt(velocity_ss / n) / 0.05, 1.0, 0.05);
+  EXPECT_EQ(gps.latest().fix_type, GpsFixType::k3D);
+}
+
+TEST(GpsTest, BadConfigurationNamesTheField) {
+  const auto field_of = [](const GpsConfig& c) {
+    try {
+      c.ValidateForPhysicsRate(1000.0);
+    } catch (const engine::InvalidField& e) {
+      return e.field();
+    }
+    return std::string("(none)");
+  };
+  GpsConfig c;
+  EXPECT_EQ(field_of(c), "(none)");
+  c.latency_s = -0.1;
+  EXPECT_EQ(field_of(c), "latency_s");
+  c = GpsConfig{};
+  c.fix_2d_max_eph_m = 2.0;
+  EXPECT_EQ(field_of(c), "fix_2d_max_eph_m");
+  c = GpsConfig{};
+  c.position_white_fraction = 1.5;
+  EXPECT_EQ(field_of(c), "position_white_fraction");
+  c = GpsConfig{};
+  c.rate_hz = 0.0;
+  EXPECT_EQ(field_of(c), "rate_hz");
+}
+
+}  // namespace
+}  // namespace airis::sensors
