@@ -10,3 +10,14 @@ endif()
 if(AIRIS_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
+
+# OpenCV: only core, imgproc and imgcodecs are installed (libopencv-dev would bring ~600 MB), and those Debian
+# packages ship no OpenCVConfig.cmake or opencv4.pc, so the target is assembled here: airis::opencv.
+find_path(AIRIS_OPENCV_INCLUDE_DIR opencv2/core.hpp PATH_SUFFIXES opencv4 REQUIRED)
+add_library(airis_opencv INTERFACE)
+target_include_directories(airis_opencv SYSTEM INTERFACE ${AIRIS_OPENCV_INCLUDE_DIR})
+foreach(part core imgproc imgcodecs)
+  find_library(AIRIS_OPENCV_${part}_LIBRARY opencv_${part} REQUIRED)
+  target_link_libraries(airis_opencv INTERFACE ${AIRIS_OPENCV_${part}_LIBRARY})
+endforeach()
+add_library(airis::opencv ALIAS airis_opencv)

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/render/camera_frame.h"
+
+namespace airis::engine {
+
+/// A dataset file could not be written or read: names the path and the operating system's reason
+/// ("No space left on device", "Permission denied"). Files written before it stay valid.
+class DatasetIoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Writes `bytes` to `path` crash-safely: to a temporary file beside it, flushed, then renamed over `path`, so a
+/// reader never sees a partial file. Throws DatasetIoError.
+void WriteFileAtomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
+void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
+
+/// Reads a whole file. Throws DatasetIoError.
+std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path);
+
+/// A NumPy .npy (format 1.0) file of a float32 image: shape (height, width) or (height, width, channels),
+/// little-endian '<f4', C order.
+std::vector<std::uint8_t> EncodeNpy(const Image<float>& image);
+
+/// The image in a .npy file written by EncodeNpy (for tests and resume). Throws DatasetIoError.
+Image<float> DecodeNpy(std::span<const std::uint8_t> bytes, const std::string& name);
+
+}  // namespace airis::engine

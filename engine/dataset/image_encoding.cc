@@ -1,0 +1,97 @@
+#include "engine/dataset/image_encoding.h"
+
+#include <cmath>
+#include <cstring>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "engine/core/error.h"
+#include "engine/dataset/file_io.h"
+
+namespace airis::engine {
+namespace {
+
+const std::vector<int> kPngParams = {cv::IMWRITE_PNG_COMPRESSION, 1, cv::IMWRITE_PNG_STRATEGY,
+                                     cv::IMWRITE_PNG_STRATEGY_DEFAULT};
+
+std::vector<std::uint8_t> Encode(const cv::Mat& mat) {
+  std::vector<std::uint8_t> out;
+  if (!cv::imencode(".png", mat, out, kPngParams)) throw DatasetIoError("PNG encoding failed");
+  return out;
+}
+
+template <class T>
+cv::Mat Wrap(const Image<T>& image, int type) {
+  // A header over the image's own pixels: no copy.
+  return cv::Mat(image.height, image.width, type, const_cast<T*>(image.pixels.data()));
+}
+
+cv::Mat Decode(const std::vector<std::uint8_t>& bytes, int flags) {
+  cv::Mat m = cv::imdecode(bytes, flags);
+  if (m.empty()) throw DatasetIoError("not a readable PNG image");
+  return m;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba) {
+  AIRIS_DEMAND(rgba.channels == 4);
+  cv::Mat bgr;
+  cv::cvtColor(Wrap(rgba, CV_8UC4), bgr, cv::COLOR_RGBA2BGR);
+  return Encode(bgr);
+}
+
+std::uint16_t DepthToMillimetres(float depth_m) {
+  if (!std::isfinite(depth_m) || depth_m <= 0.0f) return 0;
+  const double mm = std::round(static_cast<double>(depth_m) * 1000.0);
+  return mm > 65535.0 ? 0 : static_cast<std::uint16_t>(mm);
+}
+
+std::vector<std::uint8_t> EncodeDepthMmPng(const Image<float>& depth_m) {
+  AIRIS_DEMAND(depth_m.channels == 1);
+  cv::Mat mm(depth_m.height, depth_m.width, CV_16UC1);
+  auto* out = mm.ptr<std::uint16_t>();
+  for (std::size_t i = 0; i < depth_m.pixels.size(); ++i) out[i] = DepthToMillimetres(depth_m.pixels[i]);
+  return Encode(mm);
+}
+
+std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id) {
+  AIRIS_DEMAND(class_id.channels == 1);
+  return Encode(Wrap(class_id, CV_8UC1));
+}
+
+std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint16_t>& instance_id) {
+  AIRIS_DEMAND(instance_id.channels == 1);
+  return Encode(Wrap(instance_id, CV_16UC1));
+}
+
+Image<std::uint8_t> DecodePng8(const std::vector<std::uint8_t>& bytes) {
+  const cv::Mat m = Decode(bytes, cv::IMREAD_UNCHANGED);
+  if (m.type() != CV_8UC1) throw DatasetIoError("expected an 8-bit grey PNG");
+  Image<std::uint8_t> out;
+  out.Resize(m.cols, m.rows, 1);
+  std::memcpy(out.pixels.data(), m.data, out.pixels.size());
+  return out;
+}
+
+Image<std::uint16_t> DecodePng16(const std::vector<std::uint8_t>& bytes) {
+  const cv::Mat m = Decode(bytes, cv::IMREAD_UNCHANGED);
+  if (m.type() != CV_16UC1) throw DatasetIoError("expected a 16-bit grey PNG");
+  Image<std::uint16_t> out;
+  out.Resize(m.cols, m.rows, 1);
+  std::memcpy(out.pixels.data(), m.data, out.pixels.size() * 2);
+  return out;
+}
+
+Image<std::uint8_t> DecodeRgbPng(const std::vector<std::uint8_t>& bytes) {
+  const cv::Mat bgr = Decode(bytes, cv::IMREAD_COLOR);
+  cv::Mat rgba;
+  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
+  Image<std::uint8_t> out;
+  out.Resize(rgba.cols, rgba.rows, 4);
+  std::memcpy(out.pixels.data(), rgba.data, out.pixels.size());
+  return out;
+}
+
+}  // namespace airis::engine

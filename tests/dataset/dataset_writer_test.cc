@@ -1,0 +1,96 @@
+#include "engine/dataset/dataset_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/image_encoding.h"
+#include "tests/dataset/test_frames.h"
+
+namespace airis::engine {
+namespace {
+
+std::filesystem::path FreshDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("airis_writer_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void WriteFrames(const std::filesystem::path& root, int workers, int pending, int frames) {
+  DatasetWriter::Options options;
+  options.workers = workers;
+  options.max_pending_frames = pending;
+  DatasetWriter writer(root, options);
+  DatasetOutputs outputs;
+  outputs.depth_npy = true;
+  const int cam = writer.AddCamera("front", outputs);
+  for (int i = 0; i < frames; ++i) writer.Submit(cam, i, testing::MakeFrame(64, 48, 3.0f + i, 10 + i, 5));
+  writer.Flush();
+  EXPECT_EQ(writer.frames_written(), frames);
+  ASSERT_EQ(writer.annotations(cam).size(), static_cast<std::size_t>(frames));
+  EXPECT_EQ(writer.annotations(cam).at(3)[0].bbox_xywh[0], 13);
+}
+
+TEST(DatasetWriterTest, WritesEveryFileOfEveryFrame) {
+  const auto root = FreshDir("all");
+  WriteFrames(root, 2, 3, 12);
+  for (const char* f : {"rgb/000011.png", "depth/000011.png", "depth/000011.npy",
+                        "seg_class/000011.png", "seg_instance/000011.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(root / "front" / f)) << f;
+  }
+  // No temporary files left behind.
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  const Image<float> depth = DecodeNpy(ReadFileBytes(root / "front/depth/000004.npy"), "d");
+  EXPECT_EQ(depth.at(20, 10), 7.0f);  // frame 4: box from column 14 at 3 + 4 m
+  EXPECT_TRUE(std::isinf(depth.at(2, 2)));
+}
+
+TEST(DatasetWriterTest, BytesDoNotDependOnThreadsOrQueueLength) {
+  const auto a = FreshDir("a"), b = FreshDir("b");
+  WriteFrames(a, 1, 1, 8);
+  WriteFrames(b, 3, 8, 8);
+  for (const auto& e : std::filesystem::recursive_directory_iterator(a)) {
+    if (!e.is_regular_file()) continue;
+    const auto rel = std::filesystem::relative(e.path(), a);
+    EXPECT_EQ(ReadFileBytes(e.path()), ReadFileBytes(b / rel)) << rel;
+  }
+}
+
+TEST(DatasetWriterTest, ResumeAdoptsCompleteFramesWithTheirAnnotations) {
+  const auto root = FreshDir("resume");
+  WriteFrames(root, 2, 4, 5);
+  DatasetWriter writer(root, {});
+  DatasetOutputs outputs;
+  outputs.depth_npy = true;
+  const int cam = writer.AddCamera("front", outputs);
+  EXPECT_TRUE(writer.FrameComplete(cam, 4));
+  EXPECT_FALSE(writer.FrameComplete(cam, 5));
+  std::filesystem::remove(root / "front/seg_class/000002.png");
+  EXPECT_FALSE(writer.FrameComplete(cam, 2));
+  writer.Adopt(cam, 3);
+  writer.Flush();
+  EXPECT_EQ(writer.annotations(cam).at(3)[0].bbox_xywh[0], 13);
+  EXPECT_EQ(writer.annotations(cam).at(3)[0].area_px, 17 * 20);  // columns 13..29, rows 5..24
+}
+
+TEST(DatasetWriterTest, WriteFailureSurfacesAsErrorNamingTheFile) {
+  const auto root = FreshDir("fail");
+  DatasetWriter writer(root, {});
+  const int cam = writer.AddCamera("front", {});
+  std::filesystem::remove_all(root / "front" / "rgb");  // the folder vanished (unmounted disk, say)
+  writer.Submit(cam, 0, testing::MakeFrame(16, 16, 1.0f));
+  try {
+    writer.Flush();
+    FAIL() << "expected DatasetIoError";
+  } catch (const DatasetIoError& e) {
+    EXPECT_NE(std::string(e.what()).find("front/rgb/000000.png"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace airis::engine

@@ -1,0 +1,84 @@
+#include "engine/dataset/file_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "engine/dataset/image_encoding.h"
+#include "tests/dataset/test_frames.h"
+
+namespace airis::engine {
+namespace {
+
+std::filesystem::path TempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("airis_test_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(FileIoTest, AtomicWriteLeavesOnlyTheFinalFile) {
+  const auto dir = TempDir("atomic");
+  WriteFileAtomically(dir / "a.txt", std::string("hello"));
+  const auto bytes = ReadFileBytes(dir / "a.txt");
+  EXPECT_EQ(std::string(bytes.begin(), bytes.end()), "hello");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+}
+
+TEST(FileIoTest, UnwritableFolderIsAClearErrorNamingThePath) {
+  try {
+    WriteFileAtomically("/nonexistent_airis_dir/x.png", std::string("x"));
+    FAIL();
+  } catch (const DatasetIoError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent_airis_dir/x.png"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos);
+  }
+}
+
+TEST(FileIoTest, NpyRoundTripsWithAlignedHeader) {
+  Image<float> img;
+  img.Resize(5, 3, 1);
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = 0.25f * static_cast<float>(i);
+  img.pixels[4] = kSkyDepthM;
+  const auto bytes = EncodeNpy(img);
+  // numpy requires the data to start on a 64-byte boundary after magic, version and header length.
+  const std::size_t header_len = bytes[8] | (bytes[9] << 8);
+  EXPECT_EQ((10 + header_len) % 64, 0u);
+  EXPECT_EQ(bytes.size(), 10 + header_len + 15 * 4);
+  const Image<float> back = DecodeNpy(bytes, "t.npy");
+  EXPECT_EQ(back.width, 5);
+  EXPECT_EQ(back.height, 3);
+  EXPECT_EQ(back.pixels, img.pixels);
+}
+
+TEST(ImageEncodingTest, DepthPngIsMillimetresWithZeroForNoReturn) {
+  EXPECT_EQ(DepthToMillimetres(1.25f), 1250);
+  EXPECT_EQ(DepthToMillimetres(65.535f), 65535);
+  EXPECT_EQ(DepthToMillimetres(65.6f), 0);  // beyond 16 bits: no return, never a wrong value
+  EXPECT_EQ(DepthToMillimetres(kSkyDepthM), 0);
+  EXPECT_EQ(DepthToMillimetres(std::nanf("")), 0);
+  const auto frame = testing::MakeFrame(40, 30, 7.3216f);
+  const Image<std::uint16_t> mm = DecodePng16(EncodeDepthMmPng(frame->depth_planar_m));
+  for (int v = 0; v < 30; ++v) {
+    for (int u = 0; u < 40; ++u) {
+      const float d = frame->depth_planar_m.at(u, v);
+      if (std::isinf(d)) {
+        EXPECT_EQ(mm.at(u, v), 0);
+      } else {
+        EXPECT_LE(std::abs(mm.at(u, v) * 1e-3 - d), 0.5e-3);  // within half a millimetre
+      }
+    }
+  }
+}
+
+TEST(ImageEncodingTest, LabelAndColourPngsRoundTripExactly) {
+  const auto frame = testing::MakeFrame(40, 30, 5.0f);
+  EXPECT_EQ(DecodePng8(EncodeClassPng(frame->class_id)).pixels, frame->class_id.pixels);
+  EXPECT_EQ(DecodePng16(EncodeInstancePng(frame->instance_id)).pixels, frame->instance_id.pixels);
+  EXPECT_EQ(DecodeRgbPng(EncodeRgbPng(frame->rgba)).pixels, frame->rgba.pixels);
+  // Fixed settings: the same image gives the same bytes.
+  EXPECT_EQ(EncodeRgbPng(frame->rgba), EncodeRgbPng(frame->rgba));
+}
+
+}  // namespace
+}  // namespace airis::engine
