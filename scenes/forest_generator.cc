@@ -1,0 +1,229 @@
+// The `forest` generator (scene_config.h ForestConfig): Poisson-disc trees of a species mix.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "scenes/generators.h"
+
+namespace airis::scenes {
+
+using engine::CollisionShape;
+using engine::Primitive;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace {
+
+double Lerp(const Eigen::Vector2d& range, double u) { return range[0] + (range[1] - range[0]) * u; }
+
+Eigen::Affine3f PartPose(const Eigen::Vector3f& offset, const Eigen::Vector3f& scale) {
+  Eigen::Affine3f T = Eigen::Affine3f::Identity();
+  T.translate(offset);
+  T.scale(scale);
+  return T;
+}
+
+engine::Material Colored(const Eigen::Vector3d& rgb, const std::string& name) {
+  engine::Material m;
+  m.name = name;
+  m.base_color_rgb = rgb.cast<float>();
+  return m;
+}
+
+bool InClearing(const ForestConfig& c, const Vector2d& p) {
+  for (const auto& clearing : c.clearings) {
+    if ((p - clearing.center_m).squaredNorm() < clearing.radius_m * clearing.radius_m) return true;
+  }
+  return false;
+}
+
+void AreaBounds(const AreaConfig& area, Vector2d* lo, Vector2d* hi) {
+  if (area.polygon_m.empty()) {
+    *lo = area.center_m - 0.5 * area.size_m;
+    *hi = area.center_m + 0.5 * area.size_m;
+    return;
+  }
+  *lo = area.polygon_m.front();
+  *hi = area.polygon_m.front();
+  for (const auto& p : area.polygon_m) {
+    *lo = lo->cwiseMin(p);
+    *hi = hi->cwiseMax(p);
+  }
+}
+
+}  // namespace
+
+bool AreaContains(const AreaConfig& area, const Vector2d& p) {
+  if (area.polygon_m.empty()) {
+    return ((p - area.center_m).cwiseAbs() - 0.5 * area.size_m).maxCoeff() <= 0.0;
+  }
+  // Even-odd rule: count crossings of a ray toward +east.
+  bool inside = false;
+  const auto& poly = area.polygon_m;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vector2d& a = poly[i];
+    const Vector2d& b = poly[j];
+    if ((a.x() > p.x()) != (b.x() > p.x())) {
+      const double e = a.y() + (p.x() - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
+      if (p.y() < e) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double AreaOf(const AreaConfig& area) {
+  if (area.polygon_m.empty()) return area.size_m.x() * area.size_m.y();
+  double twice = 0.0;
+  const auto& poly = area.polygon_m;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    twice += poly[j].x() * poly[i].y() - poly[i].x() * poly[j].y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
+std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, double radius_m,
+                                        engine::RandomStream& stream) {
+  // Bridson (SIGGRAPH 2007 sketch): background grid of cell r/sqrt(2) holds at most one sample; each
+  // active sample tries k annulus points in [r, 2r] and retires when all fail.
+  constexpr int kTries = 30;
+  const double cell = radius_m / std::sqrt(2.0);
+  const Vector2d size = hi - lo;
+  const int gx = std::max(1, static_cast<int>(std::ceil(size.x() / cell)));
+  const int gy = std::max(1, static_cast<int>(std::ceil(size.y() / cell)));
+  std::vector<std::int32_t> grid(static_cast<std::size_t>(gx) * gy, -1);
+  std::vector<Vector2d> points;
+  points.reserve(static_cast<std::size_t>(size.x() * size.y() / (radius_m * radius_m)));
+  std::vector<std::int32_t> active;
+  auto cell_of = [&](const Vector2d& p, int* cx, int* cy) {
+    *cx = std::min(gx - 1, static_cast<int>((p.x() - lo.x()) / cell));
+    *cy = std::min(gy - 1, static_cast<int>((p.y() - lo.y()) / cell));
+  };
+  auto add = [&](const Vector2d& p) {
+    int cx, cy;
+    cell_of(p, &cx, &cy);
+    grid[static_cast<std::size_t>(cy) * gx + cx] = static_cast<std::int32_t>(points.size());
+    active.push_back(static_cast<std::int32_t>(points.size()));
+    points.push_back(p);
+  };
+  auto far_enough = [&](const Vector2d& p) {
+    int cx, cy;
+    cell_of(p, &cx, &cy);
+    for (int y = std::max(0, cy - 2); y <= std::min(gy - 1, cy + 2); ++y) {
+      for (int x = std::max(0, cx - 2); x <= std::min(gx - 1, cx + 2); ++x) {
+        const std::int32_t q = grid[static_cast<std::size_t>(y) * gx + x];
+        if (q >= 0 && (points[q] - p).squaredNorm() < radius_m * radius_m) return false;
+      }
+    }
+    return true;
+  };
+  add(Vector2d(stream.Uniform(lo.x(), hi.x()), stream.Uniform(lo.y(), hi.y())));
+  while (!active.empty()) {
+    const std::size_t pick = static_cast<std::size_t>(stream.UniformInt(0, active.size() - 1));
+    const Vector2d centre = points[active[pick]];
+    bool placed = false;
+    for (int t = 0; t < kTries; ++t) {
+      const double angle = stream.Uniform(0.0, 2.0 * std::numbers::pi);
+      const double r = radius_m * std::sqrt(stream.Uniform(1.0, 4.0));  // uniform by area in the annulus
+      const Vector2d p = centre + r * Vector2d(std::cos(angle), std::sin(angle));
+      if (p.x() < lo.x() || p.y() < lo.y() || p.x() >= hi.x() || p.y() >= hi.y()) continue;
+      if (!far_enough(p)) continue;
+      add(p);
+      placed = true;
+      break;
+    }
+    if (!placed) {
+      active[pick] = active.back();
+      active.pop_back();
+    }
+  }
+  return points;
+}
+
+GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r, const std::string& name,
+                               engine::RandomStream& rng, SceneBuilder& b) {
+  GeneratorReport report;
+  // Models: `variants_per_species` unit-height trees per species, proportions drawn once; each tree is
+  // one of them scaled to its height, so thousands of trees share a handful of models and three meshes.
+  std::vector<std::vector<std::uint32_t>> variants(c.species.size());
+  const std::uint32_t trunk_mesh = b.PrimitiveMesh(Primitive::kCylinder);
+  for (std::size_t s = 0; s < c.species.size(); ++s) {
+    const SpeciesConfig& sp = c.species[s];
+    const std::uint32_t bark = b.Material(Colored(sp.trunk_color, sp.name + "_trunk"));
+    const std::uint32_t leaves = b.Material(Colored(sp.crown_color, sp.name + "_crown"));
+    const std::uint32_t crown_mesh =
+        b.PrimitiveMesh(sp.crown == CrownShape::kCone ? Primitive::kCone : Primitive::kSphere);
+    for (int v = 0; v < c.variants_per_species; ++v) {
+      const float width = static_cast<float>(Lerp(sp.crown_width_fraction, rng.Uniform01()));
+      const float bare = static_cast<float>(Lerp(sp.trunk_fraction, rng.Uniform01()));
+      const float crown_height = 1.0f - bare;
+      const float trunk_height = bare + 0.5f * crown_height;  // the trunk reaches into the crown
+      const float trunk_d = static_cast<float>(sp.trunk_diameter_fraction);
+      engine::Model m;
+      m.name = name + "/" + sp.name + "_" + std::to_string(v);
+      m.parts.push_back({trunk_mesh, bark, PartPose({0, 0, -0.5f * trunk_height}, {trunk_d, trunk_d, trunk_height})});
+      m.parts.push_back({crown_mesh, leaves,
+                         PartPose({0, 0, -(bare + 0.5f * crown_height)}, {width, width, crown_height})});
+      variants[s].push_back(b.AddModel(std::move(m)));
+    }
+  }
+  double total_weight = 0.0;
+  for (const auto& sp : c.species) total_weight += sp.weight;
+
+  Vector2d lo, hi;
+  AreaBounds(c.area, &lo, &hi);
+  std::vector<Vector2d> points = PoissonDiscSample(lo, hi, c.min_spacing_m, rng);
+  // Thin to the density: keep each sample with the probability that brings the Poisson-disc density
+  // (samples per bounding-box area) down to the requested one; thinning keeps the minimum spacing.
+  const double box_area = (hi - lo).prod();
+  const double sampled_density = static_cast<double>(points.size()) / box_area;
+  const double keep = std::min(1.0, c.density_per_ha / 10000.0 / sampled_density);
+  b.ReserveObjects(static_cast<std::size_t>(points.size() * keep * 1.05) + 16);
+  std::vector<std::size_t> per_species(c.species.size(), 0);
+  for (const Vector2d& p : points) {
+    const double u_keep = rng.Uniform01();
+    const double u_species = rng.Uniform01() * total_weight;
+    const std::int64_t variant = rng.UniformInt(0, c.variants_per_species - 1);
+    const double u_height = rng.Uniform01();
+    const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
+    if (u_keep >= keep || !AreaContains(c.area, p) || InClearing(c, p)) continue;
+    std::size_t s = 0;
+    for (double acc = c.species[0].weight; acc < u_species && s + 1 < c.species.size();) {
+      acc += c.species[++s].weight;
+    }
+    const double height = Lerp(c.species[s].height_m, u_height);
+    if (!b.AddObject(variants[s][variant], MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+                     r.tree_class, CollisionShape::kAuto,
+                     name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
+      report.out_of_instance_ids = true;
+      return report;
+    }
+    ++report.trees;
+  }
+
+  const GroundCoverConfig& g = c.ground_cover;
+  if (g.density_per_ha > 0.0) {
+    engine::Model bush;
+    bush.name = name + "/bush";
+    bush.parts.push_back({b.PrimitiveMesh(Primitive::kSphere), b.Material(Colored(g.color, "bush")),
+                          PartPose({0, 0, -0.5f}, {1.3f, 1.3f, 1.0f})});
+    const std::uint32_t bush_model = b.AddModel(std::move(bush));
+    const auto count = static_cast<std::size_t>(g.density_per_ha * box_area / 10000.0);
+    b.ReserveObjects(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const Vector2d p(rng.Uniform(lo.x(), hi.x()), rng.Uniform(lo.y(), hi.y()));
+      const double height = Lerp(g.height_m, rng.Uniform01());
+      const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
+      if (!AreaContains(c.area, p) || InClearing(c, p)) continue;
+      if (!b.AddObject(bush_model, MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+                       r.bush_class, CollisionShape::kAuto, name + "/bush" + std::to_string(report.bushes))) {
+        report.out_of_instance_ids = true;
+        return report;
+      }
+      ++report.bushes;
+    }
+  }
+  report.objects = report.trees + report.bushes;
+  return report;
+}
+
+}  // namespace airis::scenes

@@ -1,0 +1,60 @@
+#pragma once
+
+// Procedural content expanded at load: cities and forests. Deterministic: the same config and random
+// stream (generators/<name> of the scene seed) give the same objects, in the same order, on every machine.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "engine/core/random.h"
+#include "scenes/scene_builder.h"
+#include "scenes/scene_config.h"
+
+namespace airis::scenes {
+
+/// Class ids and shared models a city needs, resolved by the loader (which knows where errors point).
+struct CityResources {
+  std::uint8_t building_class = 0;
+  std::uint8_t road_class = 0;
+  std::uint8_t sidewalk_class = 0;
+  std::uint8_t lamp_class = 0;
+  std::uint8_t car_class = 0;
+  std::optional<std::uint32_t> car_model;  ///< model of car_mesh, or none for box cars
+};
+
+/// What a generator placed.
+struct GeneratorReport {
+  std::size_t objects = 0;
+  std::size_t buildings = 0;
+  std::size_t trees = 0;
+  std::size_t bushes = 0;
+  bool out_of_instance_ids = false;  ///< stopped early: the scene reached 65535 objects
+};
+
+/// Expands a city into `builder`: streets, sidewalks, buildings with roofs, lamp posts and parked cars.
+/// Object names start with `name`/.
+GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources, const std::string& name,
+                             engine::RandomStream& stream, SceneBuilder& builder);
+
+/// Class ids a forest needs.
+struct ForestResources {
+  std::uint8_t tree_class = 0;
+  std::uint8_t bush_class = 0;
+};
+
+/// Expands a forest into `builder`: Poisson-disc trees (Bridson 2007, "Fast Poisson disk sampling in
+/// arbitrary dimensions") thinned to the density, species models shared, bushes scattered.
+GeneratorReport GenerateForest(const ForestConfig& config, const ForestResources& resources,
+                               const std::string& name, engine::RandomStream& stream, SceneBuilder& builder);
+
+/// Poisson-disc points with minimum distance `radius_m` over [lo, hi] (Bridson's algorithm, k = 30 tries).
+std::vector<Eigen::Vector2d> PoissonDiscSample(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                               double radius_m, engine::RandomStream& stream);
+
+/// True when `p` is inside the area (rectangle, or polygon by the even-odd rule when given).
+bool AreaContains(const AreaConfig& area, const Eigen::Vector2d& p);
+/// Area of the region in m^2 (polygon by the shoelace formula).
+double AreaOf(const AreaConfig& area);
+
+}  // namespace airis::scenes

@@ -1,0 +1,121 @@
+#include "scenes/mesh_loader.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <filesystem>
+
+#include "scenes/primitive_meshes.h"
+
+namespace airis::scenes {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr engine::EnumName<MeshAxes> kMeshAxesNames[] = {
+    {MeshAxes::kYUp, "y_up"}, {MeshAxes::kZUp, "z_up"}, {MeshAxes::kNed, "ned"}};
+
+/// Rotation from file axes to the model frame (both right-handed, so windings are kept).
+Eigen::Matrix3f AxesRotation(MeshAxes axes) {
+  Eigen::Matrix3f R;
+  switch (axes) {
+    case MeshAxes::kYUp:  // north = -z, east = x, down = -y
+      R << 0, 0, -1, 1, 0, 0, 0, -1, 0;
+      break;
+    case MeshAxes::kZUp:  // north = x, east = -y, down = -z
+      R << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+      break;
+    case MeshAxes::kNed:
+      R.setIdentity();
+      break;
+  }
+  return R;
+}
+
+engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path) {
+  engine::Material out;
+  aiString name;
+  if (in.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
+  aiColor4D color;
+  if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+      in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+    out.base_color_rgb = Eigen::Vector3f(color.r, color.g, color.b).cwiseMax(0.0f).cwiseMin(1.0f);
+  }
+  aiString texture;
+  if (in.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
+      in.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS) {
+    const std::string t = texture.C_Str();
+    // "*N" names a texture embedded in the file (GLB); the renderer does not read those yet.
+    if (!t.empty() && t[0] != '*') {
+      const fs::path resolved = (fs::path(mesh_path).parent_path() / t).lexically_normal();
+      if (!fs::is_regular_file(resolved)) {
+        throw MeshLoadError("texture file not found: " + resolved.string() + " (named by material '" +
+                            out.name + "' of " + mesh_path + ")");
+      }
+      out.texture_path = fs::absolute(resolved).string();
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::span<const engine::EnumName<MeshAxes>> EnumNames(MeshAxes) { return kMeshAxesNames; }
+
+MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
+  Assimp::Importer importer;
+  // Keep only triangles: points and lines have no surface to collide with or draw.
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFile(
+      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
+                aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure |
+                aiProcess_FindInvalidData);
+  if (scene == nullptr) throw MeshLoadError(importer.GetErrorString());
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
+    throw MeshLoadError("the file contains no triangle meshes");
+  }
+  const Eigen::Matrix3f R = AxesRotation(axes);
+  MeshFile out;
+  for (unsigned m = 0; m < scene->mNumMaterials; ++m) {
+    out.materials.push_back(ReadMaterial(*scene->mMaterials[m], path));
+  }
+  if (out.materials.empty()) out.materials.emplace_back();
+  std::size_t triangles = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+    const aiMesh& in = *scene->mMeshes[i];
+    if ((in.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0 || in.mNumFaces == 0) continue;
+    engine::TriangleMesh mesh;
+    mesh.name = path + (scene->mNumMeshes > 1 ? "#" + std::to_string(i) : "");
+    mesh.positions.reserve(in.mNumVertices);
+    mesh.normals.reserve(in.mNumVertices);
+    for (unsigned v = 0; v < in.mNumVertices; ++v) {
+      const aiVector3D& p = in.mVertices[v];
+      mesh.positions.push_back(R * Eigen::Vector3f(p.x, p.y, p.z));
+      const aiVector3D n = in.HasNormals() ? in.mNormals[v] : aiVector3D(0, 0, 1);
+      mesh.normals.push_back((R * Eigen::Vector3f(n.x, n.y, n.z)).normalized());
+    }
+    if (in.HasTextureCoords(0)) {
+      mesh.uvs.reserve(in.mNumVertices);
+      for (unsigned v = 0; v < in.mNumVertices; ++v) {
+        mesh.uvs.emplace_back(in.mTextureCoords[0][v].x, in.mTextureCoords[0][v].y);
+      }
+    }
+    mesh.indices.reserve(3 * in.mNumFaces);
+    for (unsigned f = 0; f < in.mNumFaces; ++f) {
+      const aiFace& face = in.mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      mesh.indices.insert(mesh.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+    }
+    triangles += mesh.triangle_count();
+    UpdateBounds(mesh);
+    const std::size_t material = in.mMaterialIndex < out.materials.size() ? in.mMaterialIndex : 0;
+    out.parts.push_back({out.meshes.size(), material});
+    out.meshes.push_back(std::move(mesh));
+  }
+  if (triangles == 0) throw MeshLoadError("the file contains no triangles");
+  return out;
+}
+
+}  // namespace airis::scenes

@@ -1,0 +1,79 @@
+#pragma once
+
+// A loaded scene: what a World is built from (DESIGN.md). No yaml-cpp or assimp here, so tools and
+// other layers can include it.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "engine/core/frames.h"
+#include "engine/core/geodetic.h"
+#include "engine/core/static_scene.h"
+#include "engine/environment/environment.h"
+
+namespace airis::scenes {
+
+using engine::Vec3;
+
+/// A YAML value kept unread (defined in scenes/scene_file.h), with its file for located errors.
+struct RawYaml;
+
+/// A vehicle as the scene describes it. The airframe and sensors are read by their owners' configs from
+/// `preset`, `overrides` and `sensors`.
+struct VehicleDescription {
+  std::string name;
+  std::string preset;
+  Vec3 p_W = Vec3::Zero();          ///< start position of the centre of mass, world NED (m)
+  double yaw_rad = 0.0;             ///< start heading, clockwise from north (rad)
+  engine::SourceLocation where;     ///< the entry in its scene file
+  std::string key_path;             ///< e.g. `vehicles[0]`
+  std::shared_ptr<const RawYaml> overrides;  ///< the `overrides` map (null node if absent)
+  std::shared_ptr<const RawYaml> sensors;    ///< the `sensors` list (null node if absent)
+};
+
+/// What each generator produced (for summaries).
+struct GeneratedSummary {
+  std::string name;  ///< generator name (its random stream is generators/<name>)
+  std::string kind;  ///< "city" or "forest"
+  std::size_t objects = 0;
+  std::size_t buildings = 0;
+  std::size_t trees = 0;
+  std::size_t bushes = 0;
+};
+
+/// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and the
+/// vehicles to create. A scene that loads has finite poses, positive scales, unique instance ids in
+/// 1..65535, and no vehicle starting inside an object.
+struct Scene {
+  std::string name;
+  std::string path;                      ///< the scene file as given
+  std::vector<std::string> files;        ///< every file read: the scene, its includes
+  std::uint64_t seed = 1;
+  engine::GeodeticPosition origin;       ///< of the world NED frame
+  engine::EnvironmentConfig environment;
+  engine::StaticScene static_scene;
+  std::vector<VehicleDescription> vehicles;
+  std::vector<GeneratedSummary> generated;
+};
+
+/// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and key
+/// path for every mistake: unknown keys, wrong types, bad values, missing or unreadable mesh or texture
+/// files, include cycles, unknown classes, a vehicle starting inside an object.
+Scene LoadScene(const std::string& path);
+
+/// As LoadScene, from text (tests); `path` names it in messages and anchors relative paths.
+Scene LoadSceneFromString(const std::string& text, const std::string& path);
+
+/// Sun direction (unit vector along which sunlight travels, world NED; points down when the sun is up)
+/// from azimuth (clockwise from north) and elevation, radians.
+Vec3 SunDirectionFromAngles(double azimuth_rad, double elevation_rad);
+
+/// Sun azimuth and elevation (rad) at local solar time `hours` on `decimal_year` at `latitude_rad`:
+/// declination by Cooper (1969), delta = 23.45 deg sin(2 pi (284 + n) / 365); hour angle 15 deg/h from noon.
+void SolarAngles(double latitude_rad, double decimal_year, double hours, double* azimuth_rad,
+                 double* elevation_rad);
+
+}  // namespace airis::scenes

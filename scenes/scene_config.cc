@@ -1,0 +1,213 @@
+#include "scenes/scene_config.h"
+
+namespace airis::scenes {
+
+using engine::InvalidField;
+using engine::Require;
+using engine::RequireFinite;
+using engine::RequireInRange;
+using engine::RequireNonNegative;
+using engine::RequirePositive;
+
+namespace {
+
+constexpr engine::EnumName<RoofShape> kRoofNames[] = {
+    {RoofShape::kFlat, "flat"}, {RoofShape::kGabled, "gabled"}, {RoofShape::kPyramid, "pyramid"}};
+constexpr engine::EnumName<CrownShape> kCrownNames[] = {{CrownShape::kCone, "cone"},
+                                                        {CrownShape::kSphere, "sphere"}};
+
+std::string Index(const std::string& list, std::size_t i) { return list + "[" + std::to_string(i) + "]"; }
+
+/// Runs a nested Validate() and prefixes the field it names with `prefix`.
+template <class Config>
+void ValidateNested(const Config& config, const std::string& prefix) {
+  try {
+    config.Validate();
+  } catch (const InvalidField& e) {
+    throw InvalidField(prefix + "." + e.field(), e.problem());
+  }
+}
+
+void RequireVectorFinite(const std::string& field, const Eigen::Vector3d& v) {
+  Require(v.allFinite(), field, "must be finite");
+}
+
+}  // namespace
+
+std::span<const engine::EnumName<RoofShape>> EnumNames(RoofShape) { return kRoofNames; }
+std::span<const engine::EnumName<CrownShape>> EnumNames(CrownShape) { return kCrownNames; }
+
+void RequireColor(const std::string& field, const Eigen::Vector3d& rgb) {
+  for (int i = 0; i < 3; ++i) RequireInRange(field + "[" + std::to_string(i) + "]", rgb[i], 0.0, 1.0);
+}
+
+void RequireRange(const std::string& field, const Eigen::Vector2d& range, bool non_negative) {
+  RequireFinite(field + "[0]", range[0]);
+  RequireFinite(field + "[1]", range[1]);
+  if (non_negative) RequireNonNegative(field + "[0]", range[0]);
+  Require(range[0] <= range[1], field,
+          "expected [min, max] with min <= max (got [" + engine::FormatNumber(range[0]) + ", " +
+              engine::FormatNumber(range[1]) + "])");
+}
+
+void OriginConfig::Validate() const {
+  RequireInRange("latitude_deg", latitude_deg, -90.0, 90.0);
+  RequireInRange("longitude_deg", longitude_deg, -180.0, 180.0);
+  RequireInRange("altitude_m", altitude_m, -500.0, 100000.0);
+}
+
+void LightingConfig::Validate() const {
+  if (time_of_day_h) {
+    Require(*time_of_day_h >= 0.0 && *time_of_day_h < 24.0, "time_of_day_h",
+            "must be in [0, 24) (got " + engine::FormatNumber(*time_of_day_h) + ")");
+  }
+  RequireFinite("sun_azimuth_deg", sun_azimuth_deg);
+  RequireInRange("sun_elevation_deg", sun_elevation_deg, -90.0, 90.0);
+  RequireColor("sun_color", sun_color);
+  RequireColor("sky_zenith_color", sky_zenith_color);
+  RequireColor("sky_horizon_color", sky_horizon_color);
+  RequireInRange("ambient", ambient, 0.0, 1.0);
+  RequireNonNegative("fog_distance_m", fog_distance_m);
+}
+
+void SceneSettingsConfig::Validate() const {
+  Require(!name.empty(), "name", "must not be empty");
+  ValidateNested(origin, "origin");
+  ValidateNested(environment, "environment");
+  ValidateNested(lighting, "lighting");
+}
+
+void MaterialConfig::Validate() const {
+  RequireColor("color", color);
+  RequireInRange("restitution", restitution, 0.0, 1.0);
+  RequireNonNegative("friction", friction);
+}
+
+void GroundConfig::Validate() const {
+  RequirePositive("size_m[0]", size_m[0]);
+  RequirePositive("size_m[1]", size_m[1]);
+  ValidateNested(material, "material");
+  Require(!class_name.empty(), "class", "must not be empty");
+}
+
+void ClassConfig::Validate() const {
+  Require(!name.empty(), "name", "every class needs a name");
+  RequireInRange("id", id, 0, 255);
+  if (color) RequireColor("color", *color);
+}
+
+void RepeatConfig::Validate() const {
+  RequireInRange("count", count, 1, 65535);
+  RequireInRange("rows", rows, 1, 65535);
+  RequireVectorFinite("step_m", step_m);
+  RequireVectorFinite("row_step_m", row_step_m);
+}
+
+void ObjectConfig::Validate() const {
+  const bool has_mesh = !mesh.empty();
+  const bool has_primitive = primitive != engine::Primitive::kNone;
+  Require(has_mesh || has_primitive, "mesh", "give a mesh file or a primitive");
+  Require(!(has_mesh && has_primitive), "primitive", "give a mesh file or a primitive, not both");
+  RequireVectorFinite("position_m", position_m);
+  RequireFinite("yaw_deg", yaw_deg);
+  RequireFinite("pitch_deg", pitch_deg);
+  RequireFinite("roll_deg", roll_deg);
+  for (int i = 0; i < 3; ++i) RequirePositive("scale[" + std::to_string(i) + "]", scale[i]);
+  if (material) ValidateNested(*material, "material");
+  Require(!class_name.empty(), "class", "must not be empty");
+  ValidateNested(repeat, "repeat");
+}
+
+void AreaConfig::Validate() const {
+  Require(center_m.allFinite(), "center_m", "must be finite");
+  RequirePositive("size_m[0]", size_m[0]);
+  RequirePositive("size_m[1]", size_m[1]);
+  Require(polygon_m.empty() || polygon_m.size() >= 3, "polygon_m",
+          "a polygon needs at least 3 corners (got " + std::to_string(polygon_m.size()) + ")");
+  for (std::size_t i = 0; i < polygon_m.size(); ++i) {
+    Require(polygon_m[i].allFinite(), Index("polygon_m", i), "must be finite");
+  }
+}
+
+void CityConfig::Validate() const {
+  ValidateNested(area, "area");
+  Require(area.polygon_m.empty(), "area.polygon_m", "a city covers a rectangle; polygons are for forests");
+  RequirePositive("block_size_m[0]", block_size_m[0]);
+  RequirePositive("block_size_m[1]", block_size_m[1]);
+  RequirePositive("street_width_m", street_width_m);
+  RequireNonNegative("sidewalk_width_m", sidewalk_width_m);
+  Require(2.0 * sidewalk_width_m < block_size_m.minCoeff(), "sidewalk_width_m",
+          "sidewalks on both sides must leave room in the block (got " + engine::FormatNumber(sidewalk_width_m) +
+              " m)");
+  RequirePositive("lot_size_m[0]", lot_size_m[0]);
+  RequirePositive("lot_size_m[1]", lot_size_m[1]);
+  RequireInRange("building_probability", building_probability, 0.0, 1.0);
+  RequireRange("footprint_fill", footprint_fill);
+  Require(footprint_fill[0] > 0.0 && footprint_fill[1] <= 1.0, "footprint_fill",
+          "fractions must be in (0, 1]");
+  RequireRange("low_height_m", low_height_m);
+  RequireRange("tall_height_m", tall_height_m);
+  RequirePositive("low_height_m[0]", low_height_m[0]);
+  RequirePositive("tall_height_m[0]", tall_height_m[0]);
+  Require(downtown_center_m.allFinite(), "downtown_center_m", "must be finite");
+  RequirePositive("downtown_radius_m", downtown_radius_m);
+  RequireNonNegative("flat_roof_above_m", flat_roof_above_m);
+  Require(!roof_shapes.empty(), "roof_shapes", "give at least one roof shape");
+  Require(!building_colors.empty(), "building_colors", "give at least one colour");
+  for (std::size_t i = 0; i < building_colors.size(); ++i) RequireColor(Index("building_colors", i), building_colors[i]);
+  RequireColor("roof_color", roof_color);
+  RequireNonNegative("lamp_spacing_m", lamp_spacing_m);
+  RequireNonNegative("cars_per_100m", cars_per_100m);
+}
+
+void SpeciesConfig::Validate() const {
+  Require(!name.empty(), "name", "every species needs a name");
+  RequirePositive("weight", weight);
+  RequireRange("height_m", height_m);
+  RequirePositive("height_m[0]", height_m[0]);
+  RequireRange("crown_width_fraction", crown_width_fraction);
+  RequirePositive("crown_width_fraction[0]", crown_width_fraction[0]);
+  RequireRange("trunk_fraction", trunk_fraction);
+  Require(trunk_fraction[1] < 1.0, "trunk_fraction", "the bare trunk must be shorter than the tree (max < 1)");
+  RequirePositive("trunk_diameter_fraction", trunk_diameter_fraction);
+  RequireColor("crown_color", crown_color);
+  RequireColor("trunk_color", trunk_color);
+}
+
+void ClearingConfig::Validate() const {
+  Require(center_m.allFinite(), "center_m", "must be finite");
+  RequirePositive("radius_m", radius_m);
+}
+
+void GroundCoverConfig::Validate() const {
+  RequireNonNegative("density_per_ha", density_per_ha);
+  RequireRange("height_m", height_m);
+  RequirePositive("height_m[0]", height_m[0]);
+  RequireColor("color", color);
+  Require(!class_name.empty(), "class", "must not be empty");
+}
+
+void ForestConfig::Validate() const {
+  ValidateNested(area, "area");
+  RequireNonNegative("density_per_ha", density_per_ha);
+  RequirePositive("min_spacing_m", min_spacing_m);
+  Require(!species.empty(), "species", "give at least one species");
+  for (std::size_t i = 0; i < species.size(); ++i) ValidateNested(species[i], Index("species", i));
+  for (std::size_t i = 0; i < clearings.size(); ++i) ValidateNested(clearings[i], Index("clearings", i));
+  ValidateNested(ground_cover, "ground_cover");
+  RequireInRange("variants_per_species", variants_per_species, 1, 64);
+  Require(!tree_class.empty(), "tree_class", "must not be empty");
+}
+
+void GeneratorConfig::Validate() const {
+  Require(city.has_value() != forest.has_value(), "city",
+          city ? "give one generator per entry (city or forest, not both)"
+               : "expected one generator: city or forest");
+}
+
+void StartPoseConfig::Validate() const {
+  RequireVectorFinite("position_m", position_m);
+  RequireFinite("yaw_deg", yaw_deg);
+}
+
+}  // namespace airis::scenes

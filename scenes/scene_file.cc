@@ -1,0 +1,128 @@
+#include "scenes/scene_file.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace airis::scenes {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Position of list entry `index` under top-level `key` of `root`.
+YAML::Node EntryNode(const YAML::Node& root, const char* key, std::size_t index) {
+  return root[key][index];
+}
+
+YAML::Mark KeyMark(const YAML::Node& root, const char* key) {
+  for (const auto& entry : root) {
+    if (entry.first.IsScalar() && entry.first.Scalar() == key) return entry.first.Mark();
+  }
+  return root.Mark();
+}
+
+template <class T>
+void AppendEntries(const std::vector<T>& configs, const std::shared_ptr<const SourceFile>& file,
+                   const char* key, std::vector<Sourced<T>>* out) {
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    const YAML::Node node = EntryNode(file->root, key, i);
+    out->push_back(Sourced<T>{configs[i], file, std::string(key) + "[" + std::to_string(i) + "]", node,
+                              node.Mark(), static_cast<int>(i)});
+  }
+}
+
+class DocumentReader {
+ public:
+  explicit DocumentReader(SceneDocument* doc) : doc_(doc) {}
+
+  /// Reads one file (already parsed into `root`) and, first, everything it includes.
+  void Read(const std::string& path, const YAML::Node& root) {
+    const std::string identity = Identity(path);
+    stack_.push_back({path, identity});
+    auto file = std::make_shared<SourceFile>(SourceFile{path, YAML::Node()});
+    file->root.reset(root);
+    doc_->files.push_back(file);
+
+    SceneFileConfig config;
+    const YamlReader reader(path);
+    reader.ReadValue(root, root.Mark(), "", config);
+
+    for (std::size_t i = 0; i < config.include.size(); ++i) {
+      const YAML::Node node = root["include"][i];
+      const std::string key = "include[" + std::to_string(i) + "]";
+      const std::string child = ResolveRelative(path, config.include[i]);
+      const std::string child_identity = Identity(child);
+      for (std::size_t s = 0; s < stack_.size(); ++s) {
+        if (stack_[s].identity != child_identity) continue;
+        std::string chain;
+        for (std::size_t k = s; k < stack_.size(); ++k) chain += stack_[k].path + " -> ";
+        reader.Fail(node.Mark(), key, "include cycle: " + chain + child);
+      }
+      if (!fs::is_regular_file(child)) reader.Fail(node.Mark(), key, "file not found: " + child);
+      Read(child, LoadYamlFile(child));
+    }
+
+    // Settings: the including file (read after its includes) overrides what they set.
+    if (config.scene) {
+      doc_->scene = Sourced<SceneSettingsConfig>{*config.scene, file, "scene", root["scene"],
+                                                 KeyMark(root, "scene"), 0};
+    }
+    if (config.ground) {
+      doc_->ground = Sourced<GroundConfig>{*config.ground, file, "ground", root["ground"],
+                                           KeyMark(root, "ground"), 0};
+    }
+    AppendEntries(config.classes, file, "classes", &doc_->classes);
+    AppendEntries(config.objects, file, "objects", &doc_->objects);
+    AppendEntries(config.generators, file, "generators", &doc_->generators);
+    AppendEntries(config.vehicles, file, "vehicles", &doc_->vehicles);
+    stack_.pop_back();
+  }
+
+ private:
+  struct Frame {
+    std::string path;
+    std::string identity;
+  };
+
+  static std::string Identity(const std::string& path) {
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(path, ec);
+    return ec ? fs::absolute(path).lexically_normal().string() : canonical.string();
+  }
+
+  SceneDocument* doc_;
+  std::vector<Frame> stack_;
+};
+
+}  // namespace
+
+std::string ResolveRelative(const std::string& base_file, const std::string& relative) {
+  const fs::path rel(relative);
+  if (rel.is_absolute()) return rel.lexically_normal().string();
+  return (fs::path(base_file).parent_path() / rel).lexically_normal().string();
+}
+
+void VehicleEntryConfig::Validate() const {
+  engine::Require(!name.empty(), "name", "every vehicle needs a name");
+  engine::Require(!preset.empty(), "preset", "every vehicle needs a preset");
+  engine::Require(!overrides.IsDefined() || overrides.IsNull() || overrides.IsMap(), "overrides",
+          "expected a map of preset keys");
+  engine::Require(!sensors.IsDefined() || sensors.IsNull() || sensors.IsSequence() || sensors.IsMap(), "sensors",
+          "expected a list or map of sensors");
+}
+
+SceneDocument ReadSceneDocument(const std::string& path) {
+  SceneDocument doc;
+  doc.path = path;
+  DocumentReader(&doc).Read(path, LoadYamlFile(path));
+  return doc;
+}
+
+SceneDocument ReadSceneDocumentFromString(const std::string& text, const std::string& path) {
+  SceneDocument doc;
+  doc.path = path;
+  DocumentReader(&doc).Read(path, LoadYamlString(text, path));
+  return doc;
+}
+
+}  // namespace airis::scenes

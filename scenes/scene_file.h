@@ -1,0 +1,143 @@
+#pragma once
+
+// Reading scene files: the top-level keys, `include` composition and where every entry came from, so
+// errors found later (a missing mesh, a vehicle inside a building) still name file:line:col and key path.
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "scenes/scene_config.h"
+#include "scenes/yaml_reader.h"
+
+namespace airis::scenes {
+
+/// An entry of `vehicles`, kept generic until vehicle and sensor configs are read through their Visit:
+/// `overrides` and `sensors` stay raw YAML (with their marks) for the reader that knows their schema.
+struct VehicleEntryConfig {
+  std::string name;
+  std::string preset;
+  StartPoseConfig start;
+  YAML::Node overrides;
+  YAML::Node sensors;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("name", name, "unique vehicle name (topics, logs, random streams vehicles/<name>/...)");
+    v.Field("preset", preset, "airframe preset name (vehicles/presets/<preset>.yaml)");
+    v.Field("start", start, "start pose");
+    v.Field("overrides", overrides, "keys of the preset to change, same layout as the preset file");
+    v.Field("sensors", sensors, "sensors and cameras with their mounts");
+  }
+  void Validate() const;
+};
+
+/// The top-level keys of one scene file.
+struct SceneFileConfig {
+  std::vector<std::string> include;
+  std::optional<SceneSettingsConfig> scene;
+  std::optional<GroundConfig> ground;
+  std::vector<ClassConfig> classes;
+  std::vector<ObjectConfig> objects;
+  std::vector<GeneratorConfig> generators;
+  std::vector<VehicleEntryConfig> vehicles;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("include", include, "scene files composed into this one, relative to this file");
+    v.Field("scene", scene, "name, seed, origin, environment, lighting (this file's wins over includes)");
+    v.Field("ground", ground, "ground plane (this file's wins over includes)");
+    v.Field("classes", classes, "semantic classes added to the built-in table");
+    v.Field("objects", objects, "placed meshes and primitives");
+    v.Field("generators", generators, "procedural cities and forests, expanded at load");
+    v.Field("vehicles", vehicles, "vehicles with their start poses");
+  }
+};
+
+/// One file read while loading a scene.
+struct SourceFile {
+  std::string path;  ///< as used in messages (the user's path, or an include resolved against its parent)
+  YAML::Node root;
+};
+
+/// A config entry with where it came from.
+template <class T>
+struct Sourced {
+  T config;
+  std::shared_ptr<const SourceFile> file;
+  std::string key_path;  ///< e.g. `objects[3]`
+  YAML::Node node;       ///< the entry's node in its file
+  YAML::Mark mark;       ///< the entry's position (its key, or the list element)
+  int index_in_file = 0; ///< position among the file's entries of that kind
+
+  /// Location of `key` (a dotted path such as `material.texture`) inside the entry: the deepest key of it
+  /// that is present, or the entry itself when `key` is empty or absent.
+  engine::SourceLocation Where(const std::string& key = "") const {
+    YAML::Mark at = mark;
+    YAML::Node current;
+    current.reset(node);
+    std::size_t pos = 0;
+    while (pos < key.size() && current.IsMap()) {
+      const std::size_t end = std::min(key.find('.', pos), key.size());
+      const std::string part = key.substr(pos, end - pos);
+      bool found = false;
+      for (const auto& entry : current) {
+        if (entry.first.IsScalar() && entry.first.Scalar() == part) {
+          at = entry.first.Mark();
+          current.reset(entry.second);
+          found = true;
+          break;
+        }
+      }
+      if (!found) break;
+      pos = end + 1;
+    }
+    return YamlReader(file->path).Where(at);
+  }
+  std::string PathOf(const std::string& key) const { return key.empty() ? key_path : key_path + "." + key; }
+  /// Throws ConfigError at `key` of this entry.
+  [[noreturn]] void Fail(const std::string& key, const std::string& problem) const {
+    throw engine::ConfigError(Where(key), PathOf(key), problem);
+  }
+};
+
+/// A scene file with its includes expanded: settings from the top-most file that has them, lists
+/// concatenated (included files first, in order, then the including file's own entries).
+struct SceneDocument {
+  std::string path;
+  std::vector<std::shared_ptr<const SourceFile>> files;
+  std::optional<Sourced<SceneSettingsConfig>> scene;
+  std::optional<Sourced<GroundConfig>> ground;
+  std::vector<Sourced<ClassConfig>> classes;
+  std::vector<Sourced<ObjectConfig>> objects;
+  std::vector<Sourced<GeneratorConfig>> generators;
+  std::vector<Sourced<VehicleEntryConfig>> vehicles;
+};
+
+/// Reads `path` and its includes. Throws ConfigError for any mistake, an unreadable file or an include
+/// cycle (naming the chain).
+SceneDocument ReadSceneDocument(const std::string& path);
+
+/// Reads scene text (tests); `path` names it in messages and anchors relative paths.
+SceneDocument ReadSceneDocumentFromString(const std::string& text, const std::string& path);
+
+/// `relative` resolved against the directory of `base_file` (absolute paths unchanged), lexically normal.
+std::string ResolveRelative(const std::string& base_file, const std::string& relative);
+
+}  // namespace airis::scenes
+
+namespace airis::scenes {
+
+/// A YAML value kept unread, with the file it came from (for ConfigErrors when it is read later).
+struct RawYaml {
+  YAML::Node node;
+  std::string file;
+  std::string key_path;
+};
+
+}  // namespace airis::scenes

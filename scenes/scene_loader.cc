@@ -1,0 +1,313 @@
+// LoadScene: a SceneDocument (scene_file.h) turned into a Scene (scene.h): classes, ground, objects,
+// meshes through assimp, generators, vehicles, then the whole-scene checks.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+
+#include "engine/core/random.h"
+#include "scenes/generators.h"
+#include "scenes/mesh_loader.h"
+#include "scenes/scene.h"
+#include "scenes/scene_builder.h"
+#include "scenes/scene_file.h"
+
+namespace airis::scenes {
+
+namespace fs = std::filesystem;
+using engine::DegToRad;
+
+namespace {
+
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) out += (i > 0 ? ", " : "") + names[i];
+  return out;
+}
+
+engine::Material ToMaterial(const MaterialConfig& c, const std::string& texture_path) {
+  engine::Material m;
+  m.base_color_rgb = c.color.cast<float>();
+  m.texture_path = texture_path;
+  m.restitution = static_cast<float>(c.restitution);
+  m.friction = static_cast<float>(c.friction);
+  return m;
+}
+
+class SceneAssembler {
+ public:
+  explicit SceneAssembler(SceneDocument doc) : doc_(std::move(doc)) {}
+
+  Scene Assemble() {
+    Scene s;
+    s.path = doc_.path;
+    for (const auto& f : doc_.files) s.files.push_back(f->path);
+    SceneSettingsConfig settings;
+    if (doc_.scene) settings = doc_.scene->config;
+    s.name = settings.name;
+    s.seed = settings.seed;
+    s.origin = {DegToRad(settings.origin.latitude_deg), DegToRad(settings.origin.longitude_deg),
+                settings.origin.altitude_m};
+    s.environment = settings.environment;
+
+    for (const auto& c : doc_.classes) DefineClass(c);
+    builder_.scene().lighting = MakeLighting(settings, s.origin.latitude_rad);
+    GroundConfig ground;
+    if (doc_.ground) ground = doc_.ground->config;
+    if (ground.enabled) AddGround(ground);
+    for (const auto& o : doc_.objects) AddObjects(o);
+    const engine::RandomStreams streams(s.seed);
+    for (const auto& g : doc_.generators) s.generated.push_back(Generate(g, streams));
+    CheckObjects();
+    for (const auto& v : doc_.vehicles) s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
+    s.static_scene = builder_.Finish();
+    return s;
+  }
+
+ private:
+  void DefineClass(const Sourced<ClassConfig>& c) {
+    const Eigen::Vector3f color =
+        c.config.color ? Eigen::Vector3f(c.config.color->cast<float>()) : Eigen::Vector3f::Zero();
+    if (builder_.DefineClass(c.config.name, c.config.id, c.config.color ? &color : nullptr)) return;
+    for (const auto& known : builder_.scene().classes) {
+      if (known.id == c.config.id) {
+        c.Fail("id", "id " + std::to_string(c.config.id) + " is already class '" + known.name + "'");
+      }
+    }
+    c.Fail("name", "no free class id left (255 classes at most)");
+  }
+
+  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings, double latitude_rad) const {
+    const LightingConfig& c = settings.lighting;
+    engine::SceneLighting out;
+    double azimuth = DegToRad(c.sun_azimuth_deg);
+    double elevation = DegToRad(c.sun_elevation_deg);
+    if (c.time_of_day_h) {
+      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h, &azimuth, &elevation);
+    }
+    out.sun_direction_W = SunDirectionFromAngles(azimuth, elevation);
+    out.sun_color_rgb = c.sun_color.cast<float>();
+    out.sky_zenith_rgb = c.sky_zenith_color.cast<float>();
+    out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
+    out.ambient = static_cast<float>(c.ambient);
+    out.fog_distance_m = static_cast<float>(c.fog_distance_m);
+    return out;
+  }
+
+  /// Id of class `name` named by `key` of `entry`, or a ConfigError listing the known classes.
+  template <class T>
+  std::uint8_t ClassOf(const Sourced<T>& entry, const std::string& key, const std::string& name) const {
+    const std::uint8_t id = builder_.ClassId(name);
+    if (id != engine::kNoClass) return id;
+    const std::vector<std::string> names = builder_.ClassNames();
+    std::string problem = "unknown class '" + name + "'";
+    if (const auto close = engine::ClosestMatch(name, names)) problem += " (did you mean '" + *close + "'?)";
+    problem += "; known classes: " + JoinNames(names) + "; add new ones under `classes:`";
+    entry.Fail(key, problem);
+  }
+
+  /// Absolute path of a texture named by `key`, or a ConfigError with the resolved path.
+  template <class T>
+  std::string TexturePath(const Sourced<T>& entry, const std::string& key, const std::string& texture) const {
+    if (texture.empty()) return "";
+    const std::string resolved = ResolveRelative(entry.file->path, texture);
+    if (!fs::is_regular_file(resolved)) entry.Fail(key, "texture file not found: " + resolved);
+    return fs::absolute(resolved).string();
+  }
+
+  /// Model of a mesh file named by `key` (loaded once per file and axes).
+  template <class T>
+  std::uint32_t MeshModel(const Sourced<T>& entry, const std::string& key, const std::string& mesh,
+                          MeshAxes axes) {
+    const std::string resolved = ResolveRelative(entry.file->path, mesh);
+    const auto cache_key = std::make_pair(resolved, static_cast<int>(axes));
+    if (const auto it = mesh_models_.find(cache_key); it != mesh_models_.end()) return it->second;
+    if (!fs::is_regular_file(resolved)) entry.Fail(key, "mesh file not found: " + resolved);
+    MeshFile file;
+    try {
+      file = LoadMeshFile(resolved, axes);
+    } catch (const MeshLoadError& e) {
+      entry.Fail(key, "cannot load mesh " + resolved + ": " + e.what());
+    }
+    engine::Model model;
+    model.name = resolved;
+    std::vector<std::uint32_t> materials;
+    for (const auto& m : file.materials) materials.push_back(builder_.Material(m));
+    for (auto& part : file.parts) {
+      model.parts.push_back({builder_.AddMesh(std::move(file.meshes[part.mesh])), materials[part.material],
+                             Eigen::Affine3f::Identity()});
+    }
+    const std::uint32_t index = builder_.AddModel(std::move(model));
+    mesh_models_.emplace(cache_key, index);
+    return index;
+  }
+
+  void AddGround(const GroundConfig& g) {
+    static const Sourced<GroundConfig> kDefault;
+    const Sourced<GroundConfig>& entry = doc_.ground ? *doc_.ground : kDefault;
+    const std::uint8_t cls = doc_.ground ? ClassOf(entry, "class", g.class_name) : builder_.ClassId(g.class_name);
+    const std::string texture = doc_.ground ? TexturePath(entry, "material.texture", g.material.texture) : "";
+    const auto material = static_cast<std::int32_t>(builder_.Material(ToMaterial(g.material, texture)));
+    builder_.AddObject(builder_.PrimitiveModel(engine::Primitive::kPlane),
+                       MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
+                       engine::CollisionShape::kAuto, "ground", material);
+    ground_instance_ = 1;
+  }
+
+  void AddObjects(const Sourced<ObjectConfig>& entry) {
+    const ObjectConfig& c = entry.config;
+    const std::uint8_t cls = ClassOf(entry, "class", c.class_name);
+    std::uint32_t model = 0;
+    std::string base = c.name;
+    if (!c.mesh.empty()) {
+      model = MeshModel(entry, "mesh", c.mesh, c.mesh_axes);
+      if (base.empty()) base = fs::path(c.mesh).stem().string();
+    } else {
+      model = builder_.PrimitiveModel(c.primitive);
+      if (base.empty()) base = std::string(engine::ToString(c.primitive));
+    }
+    std::int32_t material = -1;
+    if (c.material) {
+      material = static_cast<std::int32_t>(
+          builder_.Material(ToMaterial(*c.material, TexturePath(entry, "material.texture", c.material->texture))));
+    }
+    const RepeatConfig& r = c.repeat;
+    builder_.ReserveObjects(static_cast<std::size_t>(r.count) * r.rows);
+    for (int row = 0; row < r.rows; ++row) {
+      for (int i = 0; i < r.count; ++i) {
+        const Vec3 p = c.position_m + i * r.step_m + row * r.row_step_m;
+        std::string name = base;
+        if (r.rows > 1) name += "_" + std::to_string(row);
+        if (r.count > 1 || r.rows > 1) name += "_" + std::to_string(i);
+        const Eigen::Affine3d T = MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg), DegToRad(c.roll_deg), c.scale);
+        if (!builder_.AddObject(model, T, cls, c.collision, std::move(name), material)) {
+          entry.Fail("repeat", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
+                                   " objects (instance ids are 16-bit)");
+        }
+      }
+    }
+  }
+
+  GeneratedSummary Generate(const Sourced<GeneratorConfig>& entry, const engine::RandomStreams& streams) {
+    const GeneratorConfig& g = entry.config;
+    GeneratedSummary summary;
+    summary.kind = g.city ? "city" : "forest";
+    const std::string& given = g.city ? g.city->name : g.forest->name;
+    summary.name = !given.empty() ? given
+                                  : fs::path(entry.file->path).stem().string() + "/" + summary.kind +
+                                        std::to_string(entry.index_in_file);
+    engine::RandomStream stream = streams.Stream("generators/" + summary.name);
+    GeneratorReport report;
+    if (g.city) {
+      const CityConfig& c = *g.city;
+      CityResources r;
+      r.building_class = ClassOf(entry, "city.building_class", c.building_class);
+      r.road_class = ClassOf(entry, "city.road_class", c.road_class);
+      r.sidewalk_class = ClassOf(entry, "city.sidewalk_class", c.sidewalk_class);
+      r.lamp_class = ClassOf(entry, "city.lamp_class", c.lamp_class);
+      r.car_class = ClassOf(entry, "city.car_class", c.car_class);
+      if (!c.car_mesh.empty()) r.car_model = MeshModel(entry, "city.car_mesh", c.car_mesh, c.car_mesh_axes);
+      report = GenerateCity(c, r, summary.name, stream, builder_);
+    } else {
+      const ForestConfig& f = *g.forest;
+      ForestResources r;
+      r.tree_class = ClassOf(entry, "forest.tree_class", f.tree_class);
+      r.bush_class = ClassOf(entry, "forest.ground_cover.class", f.ground_cover.class_name);
+      report = GenerateForest(f, r, summary.name, stream, builder_);
+    }
+    if (report.out_of_instance_ids) {
+      entry.Fail(summary.kind, "the scene exceeds " + std::to_string(engine::kMaxInstances) +
+                                   " objects (instance ids are 16-bit)");
+    }
+    summary.objects = report.objects;
+    summary.buildings = report.buildings;
+    summary.trees = report.trees;
+    summary.bushes = report.bushes;
+    return summary;
+  }
+
+  /// Every object's pose must be finite with a non-degenerate scale (inputs are checked, but products of
+  /// large values can still overflow).
+  void CheckObjects() const {
+    const auto& objects = builder_.scene().objects;
+    for (const auto& o : objects) {
+      const double det = o.T_WO.linear().determinant();
+      if (!o.T_WO.matrix().allFinite() || !std::isfinite(det) || std::abs(det) < 1e-12) {
+        throw engine::ConfigError({doc_.path, 0, 0}, "",
+                                  "object '" + o.name + "' has a non-finite or zero-scale pose");
+      }
+    }
+  }
+
+  VehicleDescription AddVehicle(const Sourced<VehicleEntryConfig>& entry,
+                                const std::vector<VehicleDescription>& earlier, bool has_ground) const {
+    const VehicleEntryConfig& c = entry.config;
+    for (const auto& other : earlier) {
+      if (other.name == c.name) {
+        entry.Fail("name", "duplicate vehicle name '" + c.name + "' (also " + other.key_path + " at " +
+                               other.where.file + ":" + std::to_string(other.where.line) + ")");
+      }
+    }
+    VehicleDescription v;
+    v.name = c.name;
+    v.preset = c.preset;
+    v.p_W = c.start.position_m;
+    v.yaw_rad = DegToRad(c.start.yaw_deg);
+    v.where = entry.Where();
+    v.key_path = entry.key_path;
+    v.overrides = std::make_shared<RawYaml>(RawYaml{c.overrides, entry.file->path, entry.PathOf("overrides")});
+    v.sensors = std::make_shared<RawYaml>(RawYaml{c.sensors, entry.file->path, entry.PathOf("sensors")});
+    if (has_ground && v.p_W.z() > 0.0) {
+      entry.Fail("start.position_m", "vehicle '" + c.name + "' starts below the ground (z = " +
+                                         engine::FormatNumber(v.p_W.z()) + " m; NED z is down, so heights are negative)");
+    }
+    const engine::StaticScene& scene = builder_.scene();
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const engine::StaticObject& o = scene.objects[i];
+      if (o.collision == engine::CollisionShape::kNone || o.instance_id == ground_instance_) continue;
+      const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.p_W).cast<float>();
+      if (!scene.models[o.model].bounds.contains(p_O)) continue;
+      const engine::SemanticClass* cls = scene.FindClass(o.class_id);
+      entry.Fail("start.position_m", "vehicle '" + c.name + "' starts inside object '" + o.name + "' (class " +
+                                         (cls ? cls->name : "?") + ", instance " + std::to_string(o.instance_id) +
+                                         ")");
+    }
+    return v;
+  }
+
+  SceneDocument doc_;
+  SceneBuilder builder_;
+  std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
+  std::uint32_t ground_instance_ = engine::kNoInstance;
+};
+
+}  // namespace
+
+Vec3 SunDirectionFromAngles(double azimuth_rad, double elevation_rad) {
+  const Vec3 toward_sun(std::cos(elevation_rad) * std::cos(azimuth_rad),
+                        std::cos(elevation_rad) * std::sin(azimuth_rad), -std::sin(elevation_rad));
+  return -toward_sun;
+}
+
+void SolarAngles(double latitude_rad, double decimal_year, double hours, double* azimuth_rad,
+                 double* elevation_rad) {
+  const double day = 1.0 + (decimal_year - std::floor(decimal_year)) * 365.0;
+  const double declination = DegToRad(23.45) * std::sin(2.0 * std::numbers::pi * (284.0 + day) / 365.0);
+  const double hour_angle = DegToRad(15.0 * (hours - 12.0));
+  // Unit vector toward the sun in local north, east, up.
+  const double north = std::sin(declination) * std::cos(latitude_rad) -
+                       std::cos(declination) * std::cos(hour_angle) * std::sin(latitude_rad);
+  const double east = -std::cos(declination) * std::sin(hour_angle);
+  const double up = std::sin(declination) * std::sin(latitude_rad) +
+                    std::cos(declination) * std::cos(hour_angle) * std::cos(latitude_rad);
+  *azimuth_rad = std::atan2(east, north);
+  *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
+}
+
+Scene LoadScene(const std::string& path) { return SceneAssembler(ReadSceneDocument(path)).Assemble(); }
+
+Scene LoadSceneFromString(const std::string& text, const std::string& path) {
+  return SceneAssembler(ReadSceneDocumentFromString(text, path)).Assemble();
+}
+
+}  // namespace airis::scenes

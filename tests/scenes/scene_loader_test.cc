@@ -1,0 +1,282 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "scenes/scene.h"
+
+namespace airis::scenes {
+namespace {
+
+namespace fs = std::filesystem;
+using engine::ConfigError;
+
+/// A fresh folder under the test temp dir with files written into it.
+class SceneFiles {
+ public:
+  explicit SceneFiles(const std::string& name) : dir_(fs::path(testing::TempDir()) / ("airis_scene_" + name)) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  std::string Write(const std::string& name, const std::string& text) const {
+    const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+
+ private:
+  fs::path dir_;
+};
+
+/// The message of the ConfigError that loading `path` throws ("" if none).
+std::string LoadError(const std::string& path) {
+  try {
+    LoadScene(path);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char kCube[] =
+    "v -0.5 -0.5 -0.5\nv 0.5 -0.5 -0.5\nv 0.5 0.5 -0.5\nv -0.5 0.5 -0.5\n"
+    "v -0.5 -0.5 0.5\nv 0.5 -0.5 0.5\nv 0.5 0.5 0.5\nv -0.5 0.5 0.5\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+TEST(SceneLoaderTest, UnknownKeyInAnObjectNamesFileLineColumnAndSuggestion) {
+  SceneFiles f("unknown_key");
+  const std::string path = f.Write("s.yaml",
+                                   "objects:\n"
+                                   "  - primitive: box\n"
+                                   "    positon_m: [0, 0, -1]\n");
+  EXPECT_EQ(LoadError(path),
+            path + ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_m'?)");
+}
+
+TEST(SceneLoaderTest, WrongTypeAndOutOfRangeNameTheKey) {
+  SceneFiles f("types");
+  const std::string a = f.Write("a.yaml", "scene:\n  seed: many\n");
+  EXPECT_EQ(LoadError(a), a + ":2:3: scene.seed: expected an integer (got 'many')");
+  const std::string b = f.Write("b.yaml",
+                                "objects:\n"
+                                "  - primitive: sphere\n"
+                                "    material:\n"
+                                "      restitution: 2\n");
+  EXPECT_EQ(LoadError(b), b + ":4:7: objects[0].material.restitution: must be between 0 and 1 (got 2)");
+  const std::string c = f.Write("c.yaml", "objects:\n  - primitive: box\n    scale: [1, 0, 1]\n");
+  EXPECT_EQ(LoadError(c), c + ":3:16: objects[0].scale[1]: must be > 0 (got 0)");
+  const std::string d = f.Write("d.yaml", "scene:\n  environment:\n    wind:\n      gust: drydn\n");
+  EXPECT_EQ(LoadError(d), d + ":4:7: scene.environment.wind.gust: unknown value 'drydn' (expected none, "
+                              "gauss_markov or dryden; did you mean 'dryden'?)");
+}
+
+TEST(SceneLoaderTest, NestedGeneratorValidationPointsIntoTheList) {
+  SceneFiles f("nested");
+  const std::string path = f.Write("s.yaml",
+                                   "generators:\n"
+                                   "  - forest:\n"
+                                   "      species:\n"
+                                   "        - name: a\n"
+                                   "        - name: b\n"
+                                   "          height_m: [20, 10]\n");
+  EXPECT_EQ(LoadError(path), path + ":6:11: generators[0].forest.species[1].height_m: expected [min, max] "
+                                    "with min <= max (got [20, 10])");
+  const std::string both = f.Write("both.yaml", "generators:\n  - {}\n");
+  EXPECT_EQ(LoadError(both), both + ":2:5: generators[0].city: expected one generator: city or forest");
+}
+
+TEST(SceneLoaderTest, MissingMeshNamesTheResolvedPath) {
+  SceneFiles f("missing_mesh");
+  const std::string path = f.Write("sub/s.yaml", "objects:\n  - mesh: ../meshes/house.obj\n");
+  EXPECT_EQ(LoadError(path), path + ":2:5: objects[0].mesh: mesh file not found: " + f.Path("meshes/house.obj"));
+}
+
+TEST(SceneLoaderTest, UnreadableAndEmptyMeshesGiveAssimpsReason) {
+  SceneFiles f("bad_mesh");
+  f.Write("empty.obj", "# nothing\n");
+  f.Write("junk.stl", "solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0\n");
+  const std::string a = f.Write("a.yaml", "objects:\n  - mesh: empty.obj\n");
+  const std::string a_error = LoadError(a);
+  EXPECT_EQ(a_error.rfind(a + ":2:5: objects[0].mesh: cannot load mesh " + f.Path("empty.obj") + ": ", 0), 0u)
+      << a_error;
+  const std::string b = f.Write("b.yaml", "objects:\n  - name: x\n    mesh: junk.stl\n");
+  const std::string b_error = LoadError(b);
+  EXPECT_EQ(b_error.rfind(b + ":3:5: objects[0].mesh: cannot load mesh " + f.Path("junk.stl") + ": ", 0), 0u)
+      << b_error;
+  EXPECT_GT(b_error.size(), (b + ":3:5: objects[0].mesh: cannot load mesh " + f.Path("junk.stl") + ": ").size());
+}
+
+TEST(SceneLoaderTest, MissingTexturesNameTheResolvedPath) {
+  SceneFiles f("texture");
+  const std::string a = f.Write("a.yaml",
+                                "objects:\n"
+                                "  - primitive: box\n"
+                                "    material: {texture: img/brick.png}\n");
+  EXPECT_EQ(LoadError(a), a + ":3:16: objects[0].material.texture: texture file not found: " + f.Path("img/brick.png"));
+  // A texture named inside a mesh's material library resolves against the mesh file.
+  f.Write("m/cube.mtl", "newmtl wall\nKd 1 0 0\nmap_Kd wall.png\n");
+  f.Write("m/cube.obj", std::string("mtllib cube.mtl\nusemtl wall\n") + kCube);
+  const std::string b = f.Write("b.yaml", "objects:\n  - mesh: m/cube.obj\n");
+  const std::string error = LoadError(b);
+  EXPECT_NE(error.find(b + ":2:5: objects[0].mesh: cannot load mesh"), std::string::npos) << error;
+  EXPECT_NE(error.find("texture file not found: " + f.Path("m/wall.png")), std::string::npos) << error;
+}
+
+TEST(SceneLoaderTest, IncludeCycleNamesTheChain) {
+  SceneFiles f("cycle");
+  const std::string a = f.Write("a.yaml", "include: [b.yaml]\n");
+  const std::string b = f.Write("b.yaml", "objects: []\ninclude:\n  - a.yaml\n");
+  EXPECT_EQ(LoadError(a), b + ":3:5: include[0]: include cycle: " + a + " -> " + b + " -> " + a);
+  const std::string self = f.Write("self.yaml", "include: [self.yaml]\n");
+  EXPECT_EQ(LoadError(self), self + ":1:11: include[0]: include cycle: " + self + " -> " + self);
+  const std::string missing = f.Write("m.yaml", "include: [nope.yaml]\n");
+  EXPECT_EQ(LoadError(missing), missing + ":1:11: include[0]: file not found: " + f.Path("nope.yaml"));
+}
+
+TEST(SceneLoaderTest, UnknownClassSuggestsAndLists) {
+  SceneFiles f("class");
+  const std::string path = f.Write("s.yaml", "objects:\n  - primitive: box\n    class: buildng\n");
+  const std::string error = LoadError(path);
+  EXPECT_EQ(error.rfind(path + ":3:5: objects[0].class: unknown class 'buildng' (did you mean 'building'?); "
+                               "known classes: ground, road",
+                        0),
+            0u)
+      << error;
+}
+
+TEST(SceneLoaderTest, VehicleInsideAnObjectNamesBoth) {
+  SceneFiles f("inside");
+  const std::string path = f.Write("s.yaml",
+                                   "objects:\n"
+                                   "  - {name: shed, primitive: box, position_m: [10, 0, -2], scale: [4, 4, 4]}\n"
+                                   "vehicles:\n"
+                                   "  - name: drone1\n"
+                                   "    preset: quadrotor\n"
+                                   "    start: {position_m: [11, 1, -1]}\n");
+  EXPECT_EQ(LoadError(path), path + ":6:13: vehicles[0].start.position_m: vehicle 'drone1' starts inside object "
+                                    "'shed' (class structure, instance 2)");
+}
+
+TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
+  SceneFiles f("vehicles");
+  const std::string a = f.Write("a.yaml", "vehicles:\n  - {name: d, preset: quadrotor, start: {position_m: [0, 0, 1]}}\n");
+  EXPECT_EQ(LoadError(a), a + ":2:42: vehicles[0].start.position_m: vehicle 'd' starts below the ground (z = 1 m; "
+                              "NED z is down, so heights are negative)");
+  const std::string b = f.Write("b.yaml",
+                                "vehicles:\n"
+                                "  - {name: d, preset: quadrotor}\n"
+                                "  - {name: d, preset: quadrotor, start: {position_m: [5, 0, -1]}}\n");
+  EXPECT_EQ(LoadError(b), b + ":3:6: vehicles[1].name: duplicate vehicle name 'd' (also vehicles[0] at " + b + ":2)");
+  const std::string c = f.Write("c.yaml", "vehicles:\n  - {name: d}\n");
+  EXPECT_EQ(LoadError(c), c + ":2:5: vehicles[0].preset: every vehicle needs a preset");
+}
+
+TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
+  SceneFiles f("many");
+  const std::string path = f.Write("s.yaml",
+                                   "objects:\n"
+                                   "  - primitive: box\n"
+                                   "    repeat: {count: 65535, step_m: [2, 0, 0]}\n");
+  EXPECT_EQ(LoadError(path), path + ":3:5: objects[0].repeat: the scene exceeds 65535 objects (instance ids are 16-bit)");
+}
+
+TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {
+  SceneFiles f("repeat");
+  f.Write("cube.obj", kCube);
+  const std::string path = f.Write("s.yaml",
+                                   "objects:\n"
+                                   "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_m: [0, 0, -1],\n"
+                                   "     repeat: {count: 3, step_m: [2, 0, 0], rows: 2, row_step_m: [0, 2, 0]}}\n"
+                                   "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_m: [9, 9, -1]}\n"
+                                   "  - {primitive: cone, position_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
+  const Scene s = LoadScene(path);
+  ASSERT_EQ(s.static_scene.objects.size(), 1u + 6u + 1u + 1u);  // ground, 6 copies, d, cone
+  std::set<std::uint32_t> ids;
+  for (const auto& o : s.static_scene.objects) ids.insert(o.instance_id);
+  EXPECT_EQ(ids.size(), s.static_scene.objects.size());
+  EXPECT_EQ(*ids.begin(), 1u);
+  EXPECT_EQ(*ids.rbegin(), 9u);
+  const auto& objects = s.static_scene.objects;
+  EXPECT_EQ(objects[1].name, "c_0_0");
+  EXPECT_EQ(objects[6].name, "c_1_2");
+  EXPECT_TRUE(objects[6].T_WO.translation().isApprox(Eigen::Vector3d(4, 2, -1)));
+  EXPECT_EQ(objects[1].model, objects[7].model);  // one mesh file, one model
+  EXPECT_EQ(objects[8].name, "cone");
+  EXPECT_GE(objects[8].material_override, 0);
+  EXPECT_EQ(s.static_scene.materials[objects[8].material_override].base_color_rgb, Eigen::Vector3f(1, 0, 0));
+}
+
+TEST(SceneLoaderTest, IncludesConcatenateAndTheIncluderWins) {
+  SceneFiles f("include");
+  f.Write("tiles/a.yaml",
+          "scene: {name: tile, seed: 5}\n"
+          "ground: {size_m: [10, 10]}\n"
+          "objects: [{name: from_a, primitive: box, position_m: [3, 0, -1]}]\n");
+  f.Write("tiles/b.yaml", "objects: [{name: from_b, primitive: sphere, position_m: [6, 0, -1]}]\n");
+  const std::string top = f.Write("top.yaml",
+                                  "include: [tiles/a.yaml, tiles/b.yaml]\n"
+                                  "scene: {name: top}\n"
+                                  "objects: [{name: own, primitive: box, position_m: [9, 0, -1]}]\n");
+  const Scene s = LoadScene(top);
+  EXPECT_EQ(s.name, "top");
+  EXPECT_EQ(s.seed, 1u);  // the includer's scene block replaces the tile's as a whole
+  ASSERT_EQ(s.static_scene.objects.size(), 4u);
+  EXPECT_EQ(s.static_scene.objects[0].T_WO.linear().col(0).norm(), 10.0);  // tile's ground kept
+  EXPECT_EQ(s.static_scene.objects[1].name, "from_a");
+  EXPECT_EQ(s.static_scene.objects[2].name, "from_b");
+  EXPECT_EQ(s.static_scene.objects[3].name, "own");
+  EXPECT_EQ(s.files.size(), 3u);
+}
+
+TEST(SceneLoaderTest, SameSceneLoadsIdentically) {
+  const std::string text =
+      "scene: {seed: 77}\n"
+      "generators:\n"
+      "  - forest: {area: {size_m: [100, 100]}, density_per_ha: 200}\n";
+  const Scene a = LoadSceneFromString(text, "mem.yaml");
+  const Scene b = LoadSceneFromString(text, "mem.yaml");
+  ASSERT_EQ(a.static_scene.objects.size(), b.static_scene.objects.size());
+  for (std::size_t i = 0; i < a.static_scene.objects.size(); ++i) {
+    EXPECT_EQ(a.static_scene.objects[i].instance_id, b.static_scene.objects[i].instance_id);
+    EXPECT_EQ(a.static_scene.objects[i].name, b.static_scene.objects[i].name);
+    EXPECT_TRUE(a.static_scene.objects[i].T_WO.matrix() == b.static_scene.objects[i].T_WO.matrix());
+  }
+  ASSERT_EQ(a.generated.size(), 1u);
+  EXPECT_EQ(a.generated[0].name, "mem/forest0");
+}
+
+TEST(SceneLoaderTest, CustomClassesGetIdsAndClashesAreErrors) {
+  const Scene s = LoadSceneFromString(
+      "classes: [{name: crate}, {name: drone_dock, id: 200, color: [0, 1, 0]}]\n"
+      "objects: [{primitive: box, class: drone_dock, position_m: [5, 5, -1]}]\n",
+      "mem.yaml");
+  EXPECT_EQ(s.static_scene.objects.back().class_id, 200);
+  ASSERT_NE(s.static_scene.FindClass(200), nullptr);
+  EXPECT_EQ(s.static_scene.FindClass(200)->name, "drone_dock");
+  try {
+    LoadSceneFromString("classes:\n  - {name: crate, id: 4}\n", "mem.yaml");
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), "mem.yaml:2:19: classes[0].id: id 4 is already class 'building'");
+  }
+}
+
+TEST(SceneLoaderTest, SunFromTimeOfDayAtEquinoxNoon) {
+  // Near the March equinox (declination ~0) at solar noon the sun stands 90 deg - latitude high, due
+  // south. Cooper's declination is -0.4 deg on that day, so 0.5 deg bounds it.
+  double azimuth = 0, elevation = 0;
+  SolarAngles(engine::DegToRad(47.0), 2026.0 + 79.0 / 365.0, 12.0, &azimuth, &elevation);
+  EXPECT_NEAR(engine::RadToDeg(elevation), 43.0, 0.5);
+  EXPECT_NEAR(std::abs(engine::RadToDeg(azimuth)), 180.0, 1e-6);
+  const Vec3 d = SunDirectionFromAngles(azimuth, elevation);
+  EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+  EXPECT_GT(d.z(), 0.0);  // light travels down
+  EXPECT_GT(d.x(), 0.0);  // and north, from a southern sun
+}
+
+}  // namespace
+}  // namespace airis::scenes
