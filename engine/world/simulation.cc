@@ -1,0 +1,45 @@
+#include "engine/world/simulation.h"
+
+#include "engine/core/error.h"
+
+namespace airis::engine {
+
+void SimulationConfig::Validate() const { (void)SimClock::FromRateHz(physics_rate_hz); }
+
+Simulation::Simulation(std::unique_ptr<World> world, const SimulationConfig& config)
+    : world_(std::move(world)), clock_(SimClock::FromRateHz(config.physics_rate_hz)) {
+  AIRIS_DEMAND(world_ != nullptr);
+}
+
+void Simulation::Step() {
+  const TimeNs start_ns = clock_.now_ns();
+  const double dt_s = clock_.step_s();
+  Environment& environment = world_->environment();
+  environment.wind().Advance(start_ns);
+  world_->StepPhysics(start_ns, dt_s);
+  clock_.Advance();
+
+  const TimeNs now_ns = clock_.now_ns();
+  for (std::size_t i = 0; i < world_->vehicle_count(); ++i) {
+    const auto sensors = world_->sensors(i);
+    if (sensors.empty()) continue;
+    const SensorContext context{now_ns, &world_->vehicle(i).state(), &world_->accelerations(i),
+                                &environment, world_->ray_caster()};
+    for (const auto& sensor : sensors) sensor->Update(context);
+  }
+  for (std::size_t i = 0; i < world_->vehicle_count(); ++i) {
+    Vehicle& vehicle = world_->vehicle(i);
+    vehicle.UpdateControl(ControlContext{now_ns, dt_s, &vehicle.state(), &world_->accelerations(i),
+                                         &environment, world_->sensors(i)});
+  }
+}
+
+void Simulation::RunUntil(TimeNs end_ns) {
+  while (clock_.now_ns() < end_ns) Step();
+}
+
+void Simulation::RunFor(double seconds) {
+  RunUntil(clock_.now_ns() + SecondsToNs(seconds, "seconds"));
+}
+
+}  // namespace airis::engine

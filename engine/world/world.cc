@@ -1,0 +1,207 @@
+#include "engine/world/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "engine/core/config.h"
+#include "engine/core/error.h"
+#include "engine/physics/rigid_body_integrator.h"
+
+namespace airis::engine {
+namespace {
+
+ContactSolverConfig SolverConfig(const PhysicsConfig& physics) {
+  physics.Validate();
+  ContactSolverConfig c;
+  c.iterations = physics.contact_iterations;
+  c.penetration_slop_m = physics.penetration_slop_m;
+  return c;
+}
+
+// Height of the finite difference for the gravity gradient (m): large enough that the difference of two
+// doubles near 9.8 keeps ~9 digits, small enough that the curvature of g(h) does not matter.
+constexpr double kGravityGradientStep_m = 1.0;
+
+}  // namespace
+
+void PhysicsConfig::Validate() const {
+  RequireInRange("contact_iterations", contact_iterations, 1, 1000);
+  RequireNonNegative("penetration_slop_m", penetration_slop_m);
+  RequirePositive("sweep_fraction", sweep_fraction);
+  RequirePositive("max_speed_m_s", max_speed_m_s);
+}
+
+World::World(std::shared_ptr<const StaticScene> scene, Environment environment,
+             const PhysicsConfig& physics)
+    : scene_(std::move(scene)),
+      environment_(std::move(environment)),
+      physics_(physics),
+      collision_(*scene_),
+      solver_(SolverConfig(physics)) {}
+
+World::~World() = default;
+
+std::size_t World::AddVehicle(std::unique_ptr<Vehicle> vehicle) {
+  AIRIS_DEMAND(vehicle != nullptr);
+  Require(FindVehicle(vehicle->name()) < 0, "vehicles",
+          "duplicate vehicle name '" + vehicle->name() + "'");
+  Slot slot;
+  slot.body = collision_.AddBody(vehicle->body().config().box_size_m);
+  slot.vehicle = std::move(vehicle);
+  slot.contacts.reserve(16);
+  slot.touching.reserve(8);
+  slot.touching_next.reserve(8);
+  slots_.push_back(std::move(slot));
+  return slots_.size() - 1;
+}
+
+Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {
+  AIRIS_DEMAND(vehicle < slots_.size() && sensor != nullptr);
+  auto& sensors = slots_[vehicle].sensors;
+  for (const auto& s : sensors) {
+    Require(s->name() != sensor->name(), "sensors",
+            "duplicate sensor name '" + sensor->name() + "' on vehicle '" +
+                slots_[vehicle].vehicle->name() + "'");
+  }
+  sensors.push_back(std::move(sensor));
+  return *sensors.back();
+}
+
+Sensor& World::AddSensor(std::string_view vehicle_name, std::unique_ptr<Sensor> sensor) {
+  const int index = FindVehicle(vehicle_name);
+  if (index < 0) {
+    std::vector<std::string> names;
+    for (const auto& s : slots_) names.push_back(s.vehicle->name());
+    std::string problem = "unknown vehicle '" + std::string(vehicle_name) + "'";
+    if (const auto guess = ClosestMatch(vehicle_name, names)) {
+      problem += " (did you mean '" + *guess + "'?)";
+    }
+    throw InvalidField("vehicle", problem);
+  }
+  return AddSensor(static_cast<std::size_t>(index), std::move(sensor));
+}
+
+int World::FindVehicle(std::string_view name) const {
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    if (slots_[i].vehicle->name() == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void World::StepPhysics(TimeNs now_ns, double dt_s) {
+  for (std::size_t i = 0; i < slots_.size(); ++i) StepVehicle(slots_[i], i, now_ns, dt_s);
+}
+
+void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const {
+  const RigidBodyState& s = slot.vehicle->state();
+  std::ostringstream out;
+  out.precision(9);
+  out << "vehicle '" << slot.vehicle->name() << "' at t = " << ToSeconds(now_ns) << " s: " << cause
+      << " (p_W = [" << s.p_W.transpose() << "] m, v_W = [" << s.v_W.transpose()
+      << "] m/s, w_B = [" << s.w_B.transpose() << "] rad/s)";
+  throw SimulationError(out.str());
+}
+
+void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s) {
+  Vehicle& vehicle = *slot.vehicle;
+  const RigidBodyModel& body = vehicle.body();
+  RigidBodyState& state = vehicle.state();
+  const Vec3 p0 = state.p_W;
+  const Vec3 v0 = state.v_W;
+  const Vec3 w0 = state.w_B;
+
+  // Environment at the start of the step (held over it; gravity is linearised in altitude).
+  StepForcing forcing;
+  try {
+    forcing.air_density_kg_m3 = environment_.CalcAir(p0).density_kg_m3;
+  } catch (const std::out_of_range& e) {
+    Fail(slot, now_ns, std::string("outside the atmosphere model: ") + e.what());
+  }
+  forcing.gravity_m_s2 = environment_.CalcGravity_m_s2(p0);
+  forcing.gravity_gradient_1_s2 =
+      (environment_.CalcGravity_m_s2(p0 + Vec3(0.0, 0.0, kGravityGradientStep_m)) -
+       forcing.gravity_m_s2) /
+      kGravityGradientStep_m;
+  forcing.wind_W = environment_.wind().CalcVelocity_W(p0);
+
+  const Wrench wrench =
+      vehicle.UpdateActuators(ActuatorContext{now_ns, dt_s, forcing.air_density_kg_m3, &state});
+  if (!std::isfinite(wrench.force_B.sum() + wrench.torque_B.sum())) {
+    Fail(slot, now_ns, "actuator wrench is not finite");
+  }
+  forcing.force_B = wrench.force_B;
+  forcing.torque_B = wrench.torque_B;
+
+  StepRigidBody(body, forcing, dt_s, state, slot.accelerations);
+  if (!IsFinite(state)) Fail(slot, now_ns, "state became non-finite in the integrator");
+  if (state.v_W.squaredNorm() > physics_.max_speed_m_s * physics_.max_speed_m_s) {
+    Fail(slot, now_ns, "speed above max_speed_m_s = " + FormatNumber(physics_.max_speed_m_s));
+  }
+
+  // Continuous collision: a long step is swept first and stopped where it meets a surface.
+  const Vec3 motion = state.p_W - p0;
+  Contact swept_hit;
+  bool swept = false;
+  if (motion.squaredNorm() >
+      std::pow(physics_.sweep_fraction * body.min_half_extent_m(), 2)) {
+    const double fraction = collision_.Sweep(slot.body, state.q_WB, p0, state.p_W, &swept_hit);
+    if (fraction < 1.0) {
+      state.p_W = p0 + fraction * motion;
+      swept = true;
+    }
+  }
+
+  collision_.FindContacts(slot.body, state.p_W, state.q_WB, 0.0, slot.contacts);
+  if (swept) slot.contacts.push_back(swept_hit);
+  if (slot.contacts.empty()) {
+    if (!slot.touching.empty()) slot.touching.clear();
+    return;
+  }
+  const ContactResolution resolution = solver_.Resolve(
+      body, slot.contacts, collision_.colliders(), forcing.gravity_m_s2, dt_s, state);
+  // Contact impulses are part of the step's acceleration (an accelerometer feels the landing).
+  slot.accelerations.a_W = (state.v_W - v0) / dt_s;
+  slot.accelerations.alpha_B = (state.w_B - w0) / dt_s;
+  ReportNewContacts(slot, index, now_ns + SecondsToNs(dt_s), resolution);
+}
+
+void World::ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
+                              const ContactResolution& resolution) {
+  slot.touching_next.clear();
+  for (const Contact& c : slot.contacts) {
+    if (std::find(slot.touching_next.begin(), slot.touching_next.end(), c.collider) ==
+        slot.touching_next.end()) {
+      slot.touching_next.push_back(c.collider);
+    }
+  }
+  if (!collision_listeners_.empty()) {
+    for (std::uint32_t collider : slot.touching_next) {
+      if (std::find(slot.touching.begin(), slot.touching.end(), collider) != slot.touching.end()) {
+        continue;
+      }
+      // Point and normal: the strongest contact on this collider (the first one if none pushed).
+      const Contact* best = nullptr;
+      for (std::size_t k = 0; k < slot.contacts.size(); ++k) {
+        if (slot.contacts[k].collider != collider) continue;
+        if (best == nullptr || static_cast<int>(k) == resolution.strongest) best = &slot.contacts[k];
+      }
+      const Collider& info = collision_.colliders()[collider];
+      CollisionEvent event;
+      event.time_ns = end_ns;
+      event.vehicle = index;
+      event.vehicle_name = slot.vehicle->name();
+      event.object_name = info.name;
+      event.class_id = info.class_id;
+      event.instance_id = info.instance_id;
+      event.point_W = best->point_W;
+      event.normal_W = best->normal_W;
+      event.impulse_Ns = resolution.impulse_W.norm();
+      for (const auto& listener : collision_listeners_) listener(event);
+    }
+  }
+  std::swap(slot.touching, slot.touching_next);
+}
+
+}  // namespace airis::engine

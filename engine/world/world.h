@@ -1,0 +1,130 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/core/clock.h"
+#include "engine/core/static_scene.h"
+#include "engine/environment/environment.h"
+#include "engine/physics/collision_world.h"
+#include "engine/physics/contact_solver.h"
+#include "engine/world/ray_caster.h"
+#include "engine/world/sensor.h"
+#include "engine/world/vehicle.h"
+
+namespace airis::engine {
+
+/// A vehicle touching a static object it was not touching the tick before.
+struct CollisionEvent {
+  TimeNs time_ns = 0;                ///< end of the tick in which the contact began
+  std::size_t vehicle = 0;           ///< index in the world
+  std::string vehicle_name;
+  std::string object_name;           ///< the static object's name
+  std::uint8_t class_id = kNoClass;  ///< its semantic label
+  std::uint32_t instance_id = kNoInstance;
+  Vec3 point_W = Vec3::Zero();       ///< contact point on the object, world NED (m)
+  Vec3 normal_W = Vec3::UnitZ();     ///< unit, from the object toward the vehicle
+  double impulse_Ns = 0.0;           ///< magnitude of the contact impulse applied in that tick
+};
+
+/// Physics settings of a world.
+struct PhysicsConfig {
+  int contact_iterations = 12;        ///< sequential-impulse sweeps per tick
+  double penetration_slop_m = 1e-4;   ///< penetration left uncorrected (stable resting contact)
+  /// A step that moves a body farther than this fraction of its smallest half-extent is swept first
+  /// (continuous collision: nothing tunnels through thin walls).
+  double sweep_fraction = 0.5;
+  double max_speed_m_s = 10000.0;     ///< a body faster than this stops the run (diverged)
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("contact_iterations", contact_iterations, "contact solver iterations per tick");
+    v.Field("penetration_slop_m", penetration_slop_m, "penetration left uncorrected (m)");
+    v.Field("sweep_fraction", sweep_fraction,
+            "sweep a step longer than this fraction of the body's smallest half-extent");
+    v.Field("max_speed_m_s", max_speed_m_s, "speed above which the run stops as diverged (m/s)");
+  }
+  void Validate() const;
+};
+
+/// Everything that exists in a run: the static scene (and its collision world), the environment, the
+/// vehicles with their sensors, and an optional ray caster. The World moves bodies (StepPhysics); the
+/// Simulation owns the clock and the tick order.
+class World {
+ public:
+  /// Builds the collision world from `scene`. Throws InvalidField on a bad config or scene indices.
+  World(std::shared_ptr<const StaticScene> scene, Environment environment,
+        const PhysicsConfig& physics = {});
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Adds a vehicle; returns its index. Throws InvalidField("vehicles") when the name is taken.
+  std::size_t AddVehicle(std::unique_ptr<Vehicle> vehicle);
+  /// Mounts `sensor` on vehicle `vehicle`. Throws InvalidField("sensors") on a duplicate sensor name.
+  Sensor& AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor);
+  /// Same, by vehicle name; throws InvalidField("vehicle") on an unknown name (closest name suggested).
+  Sensor& AddSensor(std::string_view vehicle_name, std::unique_ptr<Sensor> sensor);
+  /// Index of the vehicle named `name`, or -1.
+  int FindVehicle(std::string_view name) const;
+
+  std::size_t vehicle_count() const { return slots_.size(); }
+  Vehicle& vehicle(std::size_t i) { return *slots_[i].vehicle; }
+  const Vehicle& vehicle(std::size_t i) const { return *slots_[i].vehicle; }
+  /// Accelerations of vehicle `i` over the last step (contacts included).
+  const RigidBodyAccelerations& accelerations(std::size_t i) const { return slots_[i].accelerations; }
+  /// Contacts of vehicle `i` found in the last step (after the sweep, before their resolution).
+  std::span<const Contact> contacts(std::size_t i) const { return slots_[i].contacts; }
+  std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const { return slots_[i].sensors; }
+
+  /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world; may be null).
+  void set_ray_caster(std::unique_ptr<RayCaster> caster) { ray_caster_ = std::move(caster); }
+  const RayCaster* ray_caster() const { return ray_caster_.get(); }
+
+  /// Calls `listener` for every collision event (in the simulation thread, during StepPhysics).
+  void AddCollisionListener(std::function<void(const CollisionEvent&)> listener) {
+    collision_listeners_.push_back(std::move(listener));
+  }
+
+  /// Moves every vehicle over one step [now_ns, now_ns + dt]: actuators -> integrator -> swept and discrete
+  /// collision detection -> contact response. Throws SimulationError naming the vehicle, the time and the
+  /// cause when a state becomes non-finite or absurd, or a body leaves the atmosphere model's range.
+  void StepPhysics(TimeNs now_ns, double dt_s);
+
+  const StaticScene& scene() const { return *scene_; }
+  Environment& environment() { return environment_; }
+  const Environment& environment() const { return environment_; }
+  CollisionWorld& collision_world() { return collision_; }
+  const PhysicsConfig& physics_config() const { return physics_; }
+
+ private:
+  struct Slot {
+    std::unique_ptr<Vehicle> vehicle;
+    int body = -1;  // handle in collision_
+    std::vector<std::unique_ptr<Sensor>> sensors;
+    RigidBodyAccelerations accelerations;
+    std::vector<Contact> contacts;
+    std::vector<std::uint32_t> touching;       // colliders in contact in the last tick
+    std::vector<std::uint32_t> touching_next;  // scratch
+  };
+  void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
+  [[noreturn]] void Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const;
+  void ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
+                         const ContactResolution& resolution);
+
+  std::shared_ptr<const StaticScene> scene_;
+  Environment environment_;
+  PhysicsConfig physics_;
+  CollisionWorld collision_;
+  ContactSolver solver_;
+  std::vector<Slot> slots_;
+  std::unique_ptr<RayCaster> ray_caster_;
+  std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
+};
+
+}  // namespace airis::engine

@@ -1,0 +1,129 @@
+#include "vehicles/multirotor/multirotor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/core/error.h"
+
+namespace airis::vehicles {
+
+using engine::Vec3;
+
+Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
+    : engine::Vehicle(std::move(name), config.CalcRigidBodyConfig()), config_(config) {
+  rotors_.reserve(config_.rotors.size());
+  int tilt_channels = 0;
+  for (const RotorConfig& rc : config_.rotors) {
+    Rotor r;
+    r.base_position_B = rc.position_m;
+    r.base_direction_B = rc.thrust_direction.normalized();
+    r.position_B = r.base_position_B;
+    r.direction_B = r.base_direction_B;
+    r.pivot_B = rc.tilt_pivot_m.value_or(rc.position_m);
+    r.tilt_axis_B = rc.tilt_axis.normalized();
+    r.thrust_per_density = rc.CalcThrustPerDensity();
+    r.torque_per_density_signed = (rc.spin == Spin::kCcw ? -1.0 : 1.0) * rc.CalcTorquePerDensity();
+    r.time_constant_s = rc.time_constant_s;
+    if (rc.tiltable) {
+      r.tilt_channel = tilt_channels++;
+      r.max_tilt_rad = engine::DegToRad(rc.max_tilt_deg);
+      r.tilt_rate_rad_s = engine::DegToRad(rc.tilt_rate_deg_s);
+    }
+    rotors_.push_back(r);
+  }
+  for (Rotor& r : rotors_) {
+    if (r.tilt_channel >= 0) r.tilt_channel += static_cast<int>(rotors_.size());
+  }
+  commands_.assign(rotors_.size() + static_cast<std::size_t>(tilt_channels), 0.0);
+}
+
+void Multirotor::CheckCommands(std::span<const double> commands) const {
+  if (commands.size() != commands_.size()) {
+    throw std::invalid_argument("vehicle '" + name() + "': expected " +
+                                std::to_string(commands_.size()) + " actuator commands, got " +
+                                std::to_string(commands.size()));
+  }
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    if (std::isnan(commands[i])) {
+      throw engine::SimulationError("vehicle '" + name() + "': actuator command " +
+                                    std::to_string(i) + " is NaN");
+    }
+  }
+}
+
+void Multirotor::SetActuatorCommands(std::span<const double> commands) {
+  CheckCommands(commands);
+  for (std::size_t i = 0; i < commands.size(); ++i) commands_[i] = std::clamp(commands[i], 0.0, 1.0);
+}
+
+void Multirotor::ResetActuators(std::span<const double> commands) {
+  SetActuatorCommands(commands);
+  for (std::size_t i = 0; i < rotors_.size(); ++i) {
+    Rotor& r = rotors_[i];
+    r.u = commands_[i];
+    if (r.tilt_channel >= 0) {
+      ApplyTilt(r, commands_[static_cast<std::size_t>(r.tilt_channel)] * r.max_tilt_rad);
+    }
+  }
+}
+
+void Multirotor::ApplyTilt(Rotor& r, double tilt_rad) {
+  r.tilt_rad = tilt_rad;
+  const engine::Mat3 turn = Eigen::AngleAxisd(tilt_rad, r.tilt_axis_B).toRotationMatrix();
+  r.direction_B = turn * r.base_direction_B;
+  r.position_B = r.pivot_B + turn * (r.base_position_B - r.pivot_B);
+}
+
+engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& context) {
+  const double dt = context.dt_s;
+  if (dt != cached_dt_s_) {
+    // Exact discretisation of u' = (u_cmd - u) / T over a step held at u_cmd.
+    for (Rotor& r : rotors_) {
+      if (r.time_constant_s > 0.0) {
+        r.lag_decay = std::exp(-dt / r.time_constant_s);
+        r.lag_mean = r.time_constant_s / dt * (1.0 - r.lag_decay);
+      } else {
+        r.lag_decay = 0.0;
+        r.lag_mean = 0.0;
+      }
+    }
+    cached_dt_s_ = dt;
+  }
+  const double rho = context.air_density_kg_m3;
+  engine::Wrench wrench;
+  for (std::size_t i = 0; i < rotors_.size(); ++i) {
+    Rotor& r = rotors_[i];
+    if (r.tilt_channel >= 0) {
+      const double target = commands_[static_cast<std::size_t>(r.tilt_channel)] * r.max_tilt_rad;
+      const double limit = r.tilt_rate_rad_s * dt;
+      const double step = std::clamp(target - r.tilt_rad, -limit, limit);
+      if (step != 0.0) ApplyTilt(r, r.tilt_rad + step);
+    }
+    const double command = commands_[i];
+    const double offset = r.u - command;
+    const double u_mean = command + offset * r.lag_mean;  // the lag's exact mean over the step
+    r.u = command + offset * r.lag_decay;
+    const Vec3 force = (r.thrust_per_density * rho * u_mean) * r.direction_B;
+    wrench.force_B += force;
+    wrench.torque_B += r.position_B.cross(force) +
+                       (r.torque_per_density_signed * rho * u_mean) * r.direction_B;
+  }
+  return wrench;
+}
+
+double Multirotor::CalcMaxThrust_N(int i, double air_density_kg_m3) const {
+  return rotors_[static_cast<std::size_t>(i)].thrust_per_density * air_density_kg_m3;
+}
+
+double Multirotor::CalcMaxTorque_Nm(int i, double air_density_kg_m3) const {
+  return std::abs(rotors_[static_cast<std::size_t>(i)].torque_per_density_signed) * air_density_kg_m3;
+}
+
+double Multirotor::CalcHoverCommand(double air_density_kg_m3, double gravity_m_s2) const {
+  double lift = 0.0;
+  for (const Rotor& r : rotors_) lift += r.thrust_per_density * air_density_kg_m3 * -r.base_direction_B.z();
+  return body().mass_kg() * gravity_m_s2 / lift;
+}
+
+}  // namespace airis::vehicles

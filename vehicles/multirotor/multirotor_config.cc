@@ -1,0 +1,76 @@
+#include "vehicles/multirotor/multirotor_config.h"
+
+#include <string>
+
+namespace airis::vehicles {
+
+std::vector<RotorConfig> ReferenceQuadXRotors() {
+  constexpr double a = 0.160867, h = 0.025;  // 0.2275 m arm at 45 deg (parameters.md)
+  std::vector<RotorConfig> rotors(4);
+  rotors[0].position_m = Vec3(a, a, h);
+  rotors[0].spin = Spin::kCcw;
+  rotors[1].position_m = Vec3(-a, -a, h);
+  rotors[1].spin = Spin::kCcw;
+  rotors[2].position_m = Vec3(a, -a, h);
+  rotors[2].spin = Spin::kCw;
+  rotors[3].position_m = Vec3(-a, a, h);
+  rotors[3].spin = Spin::kCw;
+  return rotors;
+}
+
+void MultirotorConfig::Validate() const {
+  engine::RequirePositive("mass_kg", mass_kg);
+  engine::RequireNonNegative("motor_mass_kg", motor_mass_kg);
+  for (int i = 0; i < 3; ++i) engine::RequirePositive("box_size_m", box_size_m[i]);
+  engine::Require(!rotors.empty(), "rotors", "needs at least one rotor");
+  for (std::size_t i = 0; i < rotors.size(); ++i) {
+    try {
+      rotors[i].Validate();
+    } catch (const engine::InvalidField& e) {
+      throw engine::InvalidField("rotors[" + std::to_string(i) + "]." + e.field(), e.problem());
+    }
+  }
+  if (!inertia_kg_m2) {
+    engine::Require(motor_mass_kg * static_cast<double>(rotors.size()) < mass_kg, "motor_mass_kg",
+                    "motors weigh as much as the whole vehicle (got " + engine::FormatNumber(motor_mass_kg) +
+                        " x " + std::to_string(rotors.size()) + " >= mass_kg " +
+                        engine::FormatNumber(mass_kg) + ")");
+  }
+  engine::RequireNonNegative("linear_drag_coefficient", linear_drag_coefficient);
+  engine::RequireNonNegative("angular_drag_coefficient", angular_drag_coefficient);
+  engine::RequireInRange("restitution", restitution, 0.0, 1.0);
+  engine::RequireNonNegative("friction", friction);
+}
+
+engine::RigidBodyConfig MultirotorConfig::CalcRigidBodyConfig() const {
+  Validate();
+  engine::RigidBodyConfig body;
+  body.mass_kg = mass_kg;
+  body.box_size_m = box_size_m;
+  body.linear_drag_coefficient = linear_drag_coefficient;
+  body.angular_drag_coefficient = angular_drag_coefficient;
+  body.restitution = restitution;
+  body.friction = friction;
+  if (inertia_kg_m2) {
+    const Vec3& d = *inertia_kg_m2;
+    const Vec3& p = inertia_products_kg_m2;
+    body.inertia_B_kg_m2 << d.x(), p.x(), p.y(), p.x(), d.y(), p.z(), p.y(), p.z(), d.z();
+  } else {
+    std::vector<Vec3> points;
+    points.reserve(rotors.size());
+    for (const auto& r : rotors) points.push_back(r.position_m);
+    const double box_mass = mass_kg - motor_mass_kg * static_cast<double>(rotors.size());
+    body.inertia_B_kg_m2 =
+        engine::CalcBoxAndPointMassInertia(box_mass, box_size_m, motor_mass_kg, points);
+  }
+  try {
+    body.Validate();
+  } catch (const engine::InvalidField& e) {
+    // The rigid body's fields carry the same names here except the inertia.
+    throw engine::InvalidField(e.field() == "inertia_B_kg_m2" ? "inertia_kg_m2" : e.field(),
+                               e.problem());
+  }
+  return body;
+}
+
+}  // namespace airis::vehicles
