@@ -2,9 +2,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "engine/core/config.h"
 #include "engine/core/error.h"
@@ -23,8 +22,8 @@ namespace {
 using engine::ConfigError;
 using engine::FormatNumber;
 
-// Options as given on the command line; numbers stay text until ParseFiniteNumber names the option that
-// holds a bad one. Defaults: the reference implementation's home point, 2026.0, the WMM.
+// Options as given on the command line; numbers stay text until ParseFiniteNumber names the option
+// that holds a bad one. Defaults: the reference implementation's home point, 2026.0, the WMM.
 struct EnvOptions {
   std::string lat = "47.641468";
   std::string lon = "-122.140165";
@@ -41,11 +40,12 @@ std::string FormatLimit(double value) {
   return buf;
 }
 
-void RequireRange(const std::string& option, double value, double lo, double hi, const std::string& why) {
+void RequireRange(const std::string& option, double value, double lo, double hi,
+                  const std::string& why) {
   if (!(value >= lo && value <= hi)) {
     throw ConfigError({}, "--" + option,
-                      "must be between " + FormatLimit(lo) + " and " + FormatLimit(hi) + why + " (got " +
-                          FormatNumber(value) + ")");
+                      "must be between " + FormatLimit(lo) + " and " + FormatLimit(hi) + why +
+                          " (got " + FormatNumber(value) + ")");
   }
 }
 
@@ -63,33 +63,36 @@ int RunEnv(const EnvOptions& options) {
   RequireRange("lat", lat_deg, -90.0, 90.0, " degrees");
   RequireRange("lon", lon_deg, -180.0, 180.0, " degrees");
 
-  // The altitude must lie inside every model that is evaluated: the atmosphere spans -5 km to 1000 km, the
-  // WMM only -1 km to 850 km; the dipole has no limit of its own.
+  // The altitude must lie inside every model that is evaluated: the atmosphere spans -5 km to 1000
+  // km, the WMM only -1 km to 850 km; the dipole has no limit of its own.
   const bool wmm = *kind == engine::MagneticModelKind::kWmm;
   if (wmm) {
     using engine::WorldMagneticModel;
-    RequireRange("alt-m", alt_m, WorldMagneticModel::kMinAltitude_m, WorldMagneticModel::kMaxAltitude_m,
-                 " m, the World Magnetic Model's range (the atmosphere alone spans -5000 to 1000000 m)");
+    RequireRange(
+        "alt-m", alt_m, WorldMagneticModel::kMinAltitude_m, WorldMagneticModel::kMaxAltitude_m,
+        " m, the World Magnetic Model's range (the atmosphere alone spans -5000 to 1000000 m)");
     const WorldMagneticModel& model = WorldMagneticModel::Wmm2025();
     const double end = model.epoch() + WorldMagneticModel::kValidityYears;
     if (!(date >= model.epoch() && date < end)) {
       throw ConfigError({}, "--date",
-                        "must be in [" + FormatNumber(model.epoch()) + ", " + FormatNumber(end) + ") for " +
-                            model.name() + " (got " + FormatNumber(date) + ")");
+                        "must be in [" + FormatNumber(model.epoch()) + ", " + FormatNumber(end) +
+                            ") for " + model.name() + " (got " + FormatNumber(date) + ")");
     }
   } else {
     RequireRange("alt-m", alt_m, engine::ussa1976::kMinAltitude_m, engine::ussa1976::kMaxAltitude_m,
                  " m, the standard atmosphere's range");
   }
 
-  // Height above the ellipsoid is used as height above sea level for gravity and air (geoid not modelled).
+  // Height above the ellipsoid is used as height above sea level for gravity and air (geoid not
+  // modelled).
   const engine::GeodeticPosition where{engine::DegToRad(lat_deg), engine::DegToRad(lon_deg), alt_m};
   const double gravity_m_s2 = engine::Gravity().CalcAcceleration_m_s2(alt_m);
   const engine::AtmosphereSample air = engine::ussa1976::Calc(alt_m);
   std::unique_ptr<engine::MagneticFieldModel> dipole;
   if (!wmm) dipole = std::make_unique<engine::TiltedDipoleField>();
   const engine::MagneticFieldModel& model =
-      wmm ? static_cast<const engine::MagneticFieldModel&>(engine::WorldMagneticModel::Wmm2025()) : *dipole;
+      wmm ? static_cast<const engine::MagneticFieldModel&>(engine::WorldMagneticModel::Wmm2025())
+          : *dipole;
   const engine::MagneticFieldSample mag = engine::DescribeField(model.CalcField_nT(where, date));
 
   if (options.json) {
@@ -108,7 +111,8 @@ int RunEnv(const EnvOptions& options) {
     std::cout << out.dump(2) << "\n";
     return 0;
   }
-  std::printf("position         %.6f N, %.6f E, %.1f m above the WGS84 ellipsoid\n", lat_deg, lon_deg, alt_m);
+  std::printf("position         %.6f N, %.6f E, %.1f m above the WGS84 ellipsoid\n", lat_deg,
+              lon_deg, alt_m);
   std::printf("date             %.4f (magnetic model %s)\n", date, model.name().c_str());
   std::printf("gravity          %.6f m/s^2\n", gravity_m_s2);
   std::printf("temperature      %.3f K\n", air.temperature_k);
@@ -128,7 +132,8 @@ int RunEnv(const EnvOptions& options) {
 
 void AddEnvCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
-      "env", "Print gravity, the U.S. Standard Atmosphere 1976 and the geomagnetic field at a point");
+      "env",
+      "Print gravity, the U.S. Standard Atmosphere 1976 and the geomagnetic field at a point");
   auto options = std::make_shared<EnvOptions>();
   cmd->add_option("--lat", options->lat, "geodetic latitude (degrees, north +, -90 to 90)")
       ->type_name("DEG")
@@ -136,21 +141,23 @@ void AddEnvCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--lon", options->lon, "longitude (degrees, east +, -180 to 180)")
       ->type_name("DEG")
       ->capture_default_str();
-  cmd->add_option("--alt-m", options->alt_m,
-                  "height above the WGS84 ellipsoid, used as altitude above sea level (m); -1000 to "
-                  "850000 with --magnetic wmm, -5000 to 1000000 with dipole")
+  cmd->add_option(
+         "--alt-m", options->alt_m,
+         "height above the WGS84 ellipsoid, used as altitude above sea level (m); -1000 to "
+         "850000 with --magnetic wmm, -5000 to 1000000 with dipole")
       ->type_name("M")
       ->capture_default_str();
-  cmd->add_option("--date", options->date, "decimal year for the magnetic model (WMM2025: 2025.0 to 2030.0)")
+  cmd->add_option("--date", options->date,
+                  "decimal year for the magnetic model (WMM2025: 2025.0 to 2030.0)")
       ->type_name("YEAR")
       ->capture_default_str();
-  cmd->add_option("--magnetic", options->magnetic, "magnetic model: wmm (World Magnetic Model 2025) or dipole")
+  cmd->add_option("--magnetic", options->magnetic,
+                  "magnetic model: wmm (World Magnetic Model 2025) or dipole")
       ->type_name("wmm|dipole")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON object instead of text");
-  cmd->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunEnv(*options); });
-  });
+  cmd->callback(
+      [options, &exit_code] { exit_code = RunReportingErrors([&] { return RunEnv(*options); }); });
 }
 
 }  // namespace airis::tools

@@ -53,7 +53,9 @@ double Environment::CalcGravity_m_s2(const Vec3& p_W) const {
   return gravity_.CalcAcceleration_m_s2(AltitudeOf(p_W));
 }
 
-AtmosphereSample Environment::CalcAir(const Vec3& p_W) const { return ussa1976::Calc(AltitudeOf(p_W)); }
+AtmosphereSample Environment::CalcAir(const Vec3& p_W) const {
+  return ussa1976::Calc(AltitudeOf(p_W));
+}
 
 Vec3 Environment::CalcMagneticField_nT(const Vec3& p_W) const {
   return magnetic_->CalcField_nT(frame_.ToGeodetic(p_W), config_.date_decimal_year);

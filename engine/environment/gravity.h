@@ -17,8 +17,8 @@ std::span<const EnumName<GravityModel>> EnumNames(GravityModel);
 /// Description of the gravity model.
 struct GravityConfig {
   GravityModel model = GravityModel::kInverseSquare;  ///< exact inverse square (default) or linear
-  double surface_gravity_m_s2 = 9.80665;  ///< g0, standard gravity
-  double earth_radius_m = 6371000.0;      ///< Re, mean Earth radius
+  double surface_gravity_m_s2 = 9.80665;              ///< g0, standard gravity
+  double earth_radius_m = 6371000.0;                  ///< Re, mean Earth radius
 
   template <class V>
   void Visit(V& v) {
@@ -36,8 +36,8 @@ class Gravity {
   /// Throws InvalidField when `config` fails Validate().
   explicit Gravity(const GravityConfig& config = {});
   /// g (m/s^2) at `altitude_m` above the surface (sea level), by the configured form. Requires
-  /// altitude_m > -Re (checked: a programming error otherwise). The linear form is accurate to 3 (h/Re)^2
-  /// relative: 1.1e-4 at 39 km, 3e-8 at 640 m.
+  /// altitude_m > -Re (checked: a programming error otherwise). The linear form is accurate to 3
+  /// (h/Re)^2 relative: 1.1e-4 at 39 km, 3e-8 at 640 m.
   double CalcAcceleration_m_s2(double altitude_m) const;
   /// The description this model was built from.
   const GravityConfig& config() const { return config_; }

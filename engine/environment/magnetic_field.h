@@ -20,12 +20,13 @@ struct MagneticFieldSample {
 /// The derived angles and intensities of a NED field vector (any unit; nT by convention).
 MagneticFieldSample DescribeField(const Vec3& field_ned_nt);
 
-/// A model of the geomagnetic field. Implementations are immutable and cheap to call at sensor rates.
+/// A model of the geomagnetic field. Implementations are immutable and cheap to call at sensor
+/// rates.
 class MagneticFieldModel {
  public:
   virtual ~MagneticFieldModel() = default;
-  /// Field at geodetic position `where` (WGS84) on `decimal_year` (e.g. 2026.5). Throws std::out_of_range for
-  /// a date or altitude outside the model's validity.
+  /// Field at geodetic position `where` (WGS84) on `decimal_year` (e.g. 2026.5). Throws
+  /// std::out_of_range for a date or altitude outside the model's validity.
   virtual Vec3 CalcField_nT(const GeodeticPosition& where, double decimal_year) const = 0;
   /// Short name for logs and manifests ("dipole", "WMM-2025").
   virtual std::string name() const = 0;

@@ -37,7 +37,8 @@ Vec3 TiltedDipoleField::CalcField_nT(const GeodeticPosition& where, double /*dec
   const double m_north = -sl * co * m.x() - sl * so * m.y() + cl * m.z();
   const double m_east = -so * m.x() + co * m.y();
   const double m_down = -cl * co * m.x() - cl * so * m.y() - sl * m.z();  // = -cos(theta_m)
-  // B = k (m - 3 (m . r_hat) r_hat) with r_hat = -down: the down component is k (m_down - 3 m_down).
+  // B = k (m - 3 (m . r_hat) r_hat) with r_hat = -down: the down component is k (m_down - 3
+  // m_down).
   const double ratio = config_.earth_radius_m / r_m;
   const double k = b0_nt_ * ratio * ratio * ratio;
   return Vec3(k * m_north, k * m_east, -2.0 * k * m_down);

@@ -11,8 +11,8 @@ namespace {
 
 constexpr double kSqrt3 = 1.7320508075688772;
 
-// 1 - exp(-x) sum_{j=0..n} x^j / j!, the probability that a Poisson variable of mean x exceeds n, accurate for
-// small x too (where the direct form cancels): there it is exp(-x) sum_{j>n} x^j / j!.
+// 1 - exp(-x) sum_{j=0..n} x^j / j!, the probability that a Poisson variable of mean x exceeds n,
+// accurate for small x too (where the direct form cancels): there it is exp(-x) sum_{j>n} x^j / j!.
 double PoissonTail(int n, double x) {
   if (std::isinf(x)) return 1.0;
   if (x < 0.5) {
@@ -79,8 +79,8 @@ void Wind::Advance(TimeNs now_ns, double airspeed_m_s) {
 
 void Wind::AdvanceGaussMarkov(double dt_s) {
   if (dt_s != cached_dt_s_) {
-    // Exact discretisation of dx = -x / tau dt + sigma sqrt(2 / tau) dW: a = exp(-dt / tau) and innovation
-    // sigma sqrt(1 - a^2), so the stationary standard deviation is sigma for any step.
+    // Exact discretisation of dx = -x / tau dt + sigma sqrt(2 / tau) dW: a = exp(-dt / tau) and
+    // innovation sigma sqrt(1 - a^2), so the stationary standard deviation is sigma for any step.
     const double x = dt_s / config_.gust_correlation_s;
     gm_decay_ = std::exp(-x);
     gm_noise_ = config_.gust_sigma_m_s * std::sqrt(-std::expm1(-2.0 * x));
@@ -90,9 +90,10 @@ void Wind::AdvanceGaussMarkov(double dt_s) {
 }
 
 Wind::DrydenStep Wind::MakeDrydenStep(double rate_1_s, double dt_s) {
-  // States z1 = xi / (s + p), z2 = z1 / (s + p) driven by unit white noise xi: over a step dt the transition
-  // is exp(-p dt) [[1, 0], [dt, 1]] and the noise covariance Q = [[I0, I1], [I1, I2]] with
-  // Ik = integral_0^dt tau^k exp(-2 p tau) dtau, written through Poisson tails to stay exact for tiny p dt.
+  // States z1 = xi / (s + p), z2 = z1 / (s + p) driven by unit white noise xi: over a step dt the
+  // transition is exp(-p dt) [[1, 0], [dt, 1]] and the noise covariance Q = [[I0, I1], [I1, I2]]
+  // with Ik = integral_0^dt tau^k exp(-2 p tau) dtau, written through Poisson tails to stay exact
+  // for tiny p dt.
   DrydenStep step;
   const double c = 2.0 * rate_1_s;
   const double x = c * dt_s;
@@ -120,7 +121,8 @@ void Wind::StepSecondOrder(const DrydenStep& step, Eigen::Vector2d& z) {
 }
 
 void Wind::AdvanceDryden(double dt_s, double airspeed_m_s) {
-  const double v = std::max(std::isfinite(airspeed_m_s) ? airspeed_m_s : 0.0, kMinDrydenAirspeed_m_s);
+  const double v =
+      std::max(std::isfinite(airspeed_m_s) ? airspeed_m_s : 0.0, kMinDrydenAirspeed_m_s);
   const double rate = v / config_.dryden_length_m;  // p = 1 / T = V / L
   if (dt_s != cached_dt_s_ || rate != cached_rate_1_s_) {
     const double x = dt_s * rate;
@@ -143,8 +145,8 @@ Vec3 Wind::gust_W() const {
     case GustModel::kGaussMarkov:
       return gust_W_;
     case GustModel::kDryden: {
-      // Output of sigma sqrt(T) (1 + sqrt(3) T s) / (1 + T s)^2 = sigma sqrt(T) (sqrt(3) p z1 + (1 - sqrt(3))
-      // p^2 z2) with T = 1 / p.
+      // Output of sigma sqrt(T) (1 + sqrt(3) T s) / (1 + T s)^2 = sigma sqrt(T) (sqrt(3) p z1 + (1
+      // - sqrt(3)) p^2 z2) with T = 1 / p.
       const double p = dryden_rate_1_s_;
       const double gain = config_.gust_sigma_m_s / std::sqrt(p);
       const auto second_order = [&](const Eigen::Vector2d& z) {
@@ -152,7 +154,8 @@ Vec3 Wind::gust_W() const {
       };
       const double u = dryden_u_m_s_, lateral = second_order(dryden_lateral_);
       const double vertical = second_order(dryden_vertical_);
-      // Wind axes: longitudinal along the horizontal mean wind (north when calm), lateral to its right.
+      // Wind axes: longitudinal along the horizontal mean wind (north when calm), lateral to its
+      // right.
       const Vec3& mean = config_.mean_ned_m_s;
       const double horizontal = std::hypot(mean.x(), mean.y());
       const double c = horizontal > 0.0 ? mean.x() / horizontal : 1.0;

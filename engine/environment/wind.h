@@ -13,18 +13,19 @@ namespace airis::engine {
 enum class GustModel {
   kNone,         ///< steady wind only
   kGaussMarkov,  ///< each axis an independent first-order Gauss-Markov process (seeded)
-  kDryden,       ///< MIL-F-8785C / MIL-HDBK-1797 Dryden turbulence spectra, one sigma and scale length (seeded)
+  kDryden,       ///< MIL-F-8785C Dryden turbulence spectra, one sigma and scale length (seeded)
 };
 /// Spellings of GustModel in files: none, gauss_markov, dryden.
 std::span<const EnumName<GustModel>> EnumNames(GustModel);
 
 /// Description of the wind: a constant mean vector plus optional gusts.
 struct WindConfig {
-  Vec3 mean_ned_m_s = Vec3::Zero();  ///< mean wind velocity (the velocity of the air), world NED
-  GustModel gust = GustModel::kNone; ///< gust model added to the mean
-  double gust_sigma_m_s = 1.0;       ///< stationary standard deviation of each gust component
-  double gust_correlation_s = 2.0;   ///< Gauss-Markov correlation time
-  double dryden_length_m = 200.0;    ///< Dryden turbulence scale length (low altitude: ~altitude, >= 20 m)
+  Vec3 mean_ned_m_s = Vec3::Zero();   ///< mean wind velocity (the velocity of the air), world NED
+  GustModel gust = GustModel::kNone;  ///< gust model added to the mean
+  double gust_sigma_m_s = 1.0;        ///< stationary standard deviation of each gust component
+  double gust_correlation_s = 2.0;    ///< Gauss-Markov correlation time
+  /// Dryden turbulence scale length (low altitude: about the altitude, at least 20 m).
+  double dryden_length_m = 200.0;
 
   template <class V>
   void Visit(V& v) {
@@ -34,20 +35,22 @@ struct WindConfig {
     v.Field("gust_correlation_s", gust_correlation_s, "Gauss-Markov correlation time (s)");
     v.Field("dryden_length_m", dryden_length_m, "Dryden scale length (m)");
   }
-  /// Throws InvalidField for a non-finite mean, a negative sigma, or a non-positive correlation time or
-  /// scale length.
+  /// Throws InvalidField for a non-finite mean, a negative sigma, or a non-positive correlation
+  /// time or scale length.
   void Validate() const;
 };
 
-/// Wind velocity in the world. Gusts are a function of simulated time only (spatially uniform), advanced once
-/// per tick by the Simulation; the same seed gives the same gusts. Both gust models start in their stationary
-/// distribution (the gust has its configured sigma from time 0) and are discretised exactly for any step:
-///  - Gauss-Markov, per world axis: x_{k+1} = a x_k + sigma sqrt(1 - a^2) n_k, a = exp(-dt / tau), n_k ~ N(0,1);
-///    autocorrelation sigma^2 exp(-|t| / tau).
-///  - Dryden (MIL-F-8785C): with T = L / V, the longitudinal component (along the horizontal mean-wind
-///    direction; north in calm air) is first order, sigma sqrt(2T) / (1 + T s), autocorrelation
-///    sigma^2 exp(-|t| / T); the lateral (horizontal, to the right) and vertical components are second order,
-///    sigma sqrt(T) (1 + sqrt(3) T s) / (1 + T s)^2, autocorrelation sigma^2 exp(-|t|/T) (1 - |t| / 2T).
+/// Wind velocity in the world. Gusts are a function of simulated time only (spatially uniform),
+/// advanced once per tick by the Simulation; the same seed gives the same gusts. Both gust models
+/// start in their stationary distribution (the gust has its configured sigma from time 0) and are
+/// discretised exactly for any step:
+///  - Gauss-Markov, per world axis: x_{k+1} = a x_k + sigma sqrt(1 - a^2) n_k,
+///    a = exp(-dt / tau), n_k ~ N(0, 1); autocorrelation sigma^2 exp(-|t| / tau).
+///  - Dryden (MIL-F-8785C), with T = L / V: the longitudinal component (along the horizontal
+///    mean-wind direction; north in calm air) is first order, sigma sqrt(2T) / (1 + T s),
+///    autocorrelation sigma^2 exp(-|t| / T); the lateral (horizontal, to the right) and vertical
+///    components are second order, sigma sqrt(T) (1 + sqrt(3) T s) / (1 + T s)^2, autocorrelation
+///    sigma^2 exp(-|t| / T) (1 - |t| / 2T).
 class Wind {
  public:
   /// Airspeed below which the Dryden time scale L / V stops growing (m/s).
@@ -72,8 +75,8 @@ class Wind {
   const WindConfig& config() const { return config_; }
 
  private:
-  // Exact transition of the second-order Dryden shaping filter over one step, and its process noise as a
-  // lower-triangular Cholesky factor.
+  // Exact transition of the second-order Dryden shaping filter over one step, and its process noise
+  // as a lower-triangular Cholesky factor.
   struct DrydenStep {
     double decay = 0.0;  // exp(-p dt)
     double shear = 0.0;  // dt exp(-p dt)
@@ -88,7 +91,8 @@ class Wind {
   RandomStream stream_;
   TimeNs last_ns_ = 0;
   Vec3 gust_W_ = Vec3::Zero();  // Gauss-Markov state, world NED (m/s)
-  // Dryden state: longitudinal component (m/s) and the two states (z1, z2) of each second-order filter.
+  // Dryden state: longitudinal component (m/s) and the two states (z1, z2) of each second-order
+  // filter.
   double dryden_u_m_s_ = 0.0;
   Eigen::Vector2d dryden_lateral_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d dryden_vertical_ = Eigen::Vector2d::Zero();

@@ -17,8 +17,10 @@ extern const std::string_view kWmm2025CofText;  // generated from data/wmm/WMM20
 
 namespace {
 
-constexpr double kReferenceRadius_m = 6371200.0;  // a, the geomagnetic reference radius (report, Table 2)
-constexpr int kMaxTerms = (WorldMagneticModel::kMaxDegree + 1) * (WorldMagneticModel::kMaxDegree + 2) / 2;
+constexpr double kReferenceRadius_m =
+    6371200.0;  // a, the geomagnetic reference radius (report, Table 2)
+constexpr int kMaxTerms =
+    (WorldMagneticModel::kMaxDegree + 1) * (WorldMagneticModel::kMaxDegree + 2) / 2;
 
 constexpr int Index(int n, int m) { return n * (n + 1) / 2 + m; }
 
@@ -50,11 +52,13 @@ bool ParseInt(std::string_view text, int& out) {
 }  // namespace
 
 const WorldMagneticModel& WorldMagneticModel::Wmm2025() {
-  static const WorldMagneticModel model = FromCofText(internal::kWmm2025CofText, "WMM2025.COF (built in)");
+  static const WorldMagneticModel model =
+      FromCofText(internal::kWmm2025CofText, "WMM2025.COF (built in)");
   return model;
 }
 
-WorldMagneticModel WorldMagneticModel::FromCofText(std::string_view text, const std::string& source_name) {
+WorldMagneticModel WorldMagneticModel::FromCofText(std::string_view text,
+                                                   const std::string& source_name) {
   WorldMagneticModel model;
   model.g_.assign(kMaxTerms, 0.0);
   model.h_.assign(kMaxTerms, 0.0);
@@ -79,7 +83,8 @@ WorldMagneticModel WorldMagneticModel::FromCofText(std::string_view text, const 
     if (!have_header) {
       // "    2025.0            WMM-2025        11/13/2024": epoch, model name, release date.
       if (count < 2 || !ParseDouble(f[0], model.epoch_)) {
-        throw fail(line_number, "expected the header 'EPOCH MODEL-NAME DATE' (got '" + std::string(line) + "')");
+        throw fail(line_number,
+                   "expected the header 'EPOCH MODEL-NAME DATE' (got '" + std::string(line) + "')");
       }
       model.model_name_ = std::string(f[1]);
       have_header = true;
@@ -103,7 +108,8 @@ WorldMagneticModel WorldMagneticModel::FromCofText(std::string_view text, const 
     }
     const int k = Index(n, m);
     if (seen[k]) {
-      throw fail(line_number, "duplicate coefficient n = " + std::to_string(n) + ", m = " + std::to_string(m));
+      throw fail(line_number,
+                 "duplicate coefficient n = " + std::to_string(n) + ", m = " + std::to_string(m));
     }
     seen[k] = true;
     model.g_[k] = g;
@@ -116,7 +122,8 @@ WorldMagneticModel WorldMagneticModel::FromCofText(std::string_view text, const 
   for (int n = 1; n <= model.degree_; ++n) {
     for (int m = 0; m <= n; ++m) {
       if (!seen[Index(n, m)]) {
-        throw fail(0, "missing coefficient n = " + std::to_string(n) + ", m = " + std::to_string(m));
+        throw fail(0,
+                   "missing coefficient n = " + std::to_string(n) + ", m = " + std::to_string(m));
       }
     }
   }
@@ -132,7 +139,8 @@ WorldMagneticModel WorldMagneticModel::FromCofText(std::string_view text, const 
     for (int m = 0; m < n; ++m) {
       const double root = std::sqrt(static_cast<double>(n * n - m * m));
       model.recur_a_[Index(n, m)] = (2.0 * n - 1.0) / root;
-      model.recur_b_[Index(n, m)] = std::sqrt(static_cast<double>((n - 1) * (n - 1) - m * m)) / root;
+      model.recur_b_[Index(n, m)] =
+          std::sqrt(static_cast<double>((n - 1) * (n - 1) - m * m)) / root;
     }
   }
   return model;
@@ -145,11 +153,13 @@ void WorldMagneticModel::CheckValidity(const GeodeticPosition& where, double dec
                             FormatNumber(epoch_ + kValidityYears) + ") (decimal year)");
   }
   if (!(where.altitude_m >= kMinAltitude_m && where.altitude_m <= kMaxAltitude_m)) {
-    throw std::out_of_range(model_name_ + ": altitude " + FormatNumber(where.altitude_m) +
-                            " m is outside the model's range [-1000, 850000] m above the ellipsoid");
+    throw std::out_of_range(
+        model_name_ + ": altitude " + FormatNumber(where.altitude_m) +
+        " m is outside the model's range [-1000, 850000] m above the ellipsoid");
   }
   // The tolerance admits 90 degrees converted to radians with rounding.
-  if (!(std::abs(where.latitude_rad) <= 0.5 * std::numbers::pi + 1e-12) || !std::isfinite(where.longitude_rad)) {
+  if (!(std::abs(where.latitude_rad) <= 0.5 * std::numbers::pi + 1e-12) ||
+      !std::isfinite(where.longitude_rad)) {
     throw std::out_of_range(model_name_ + ": latitude " + FormatNumber(where.latitude_rad) +
                             " rad / longitude " + FormatNumber(where.longitude_rad) +
                             " rad is not a valid position");
@@ -162,7 +172,7 @@ Vec3 WorldMagneticModel::CalcField_nT(const GeodeticPosition& where, double deci
 }
 
 Vec3 WorldMagneticModel::CalcSecularVariation_nT_yr(const GeodeticPosition& where,
-                                                      double decimal_year) const {
+                                                    double decimal_year) const {
   CheckValidity(where, decimal_year);
   return Synthesize(where, 0.0, 1.0);
 }
@@ -170,7 +180,8 @@ Vec3 WorldMagneticModel::CalcSecularVariation_nT_yr(const GeodeticPosition& wher
 Vec3 WorldMagneticModel::Synthesize(const GeodeticPosition& where, double field_scale,
                                     double dt_years) const {
   using namespace wgs84;
-  // Geodetic to geocentric spherical (report, equations 7-8): p and z of the ECEF point, r and phi'.
+  // Geodetic to geocentric spherical (report, equations 7-8): p and z of the ECEF point, r and
+  // phi'.
   const double sin_lat = std::sin(where.latitude_rad), cos_lat = std::cos(where.latitude_rad);
   const double rc = kSemiMajorAxis_m / std::sqrt(1.0 - kEccentricitySq * sin_lat * sin_lat);
   const double p = (rc + where.altitude_m) * cos_lat;
@@ -244,7 +255,8 @@ Vec3 WorldMagneticModel::Synthesize(const GeodeticPosition& where, double field_
   y_sph /= s;
 
   // Rotate from geocentric to geodetic north and down (report, equation 17).
-  // cos and sin of phi' - phi from the angle-difference identities (no further trigonometric calls).
+  // cos and sin of phi' - phi from the angle-difference identities (no further trigonometric
+  // calls).
   const double cd = s * cos_lat + x * sin_lat;
   const double sd = x * cos_lat - s * sin_lat;
   return Vec3(x_sph * cd - z_sph * sd, y_sph, x_sph * sd + z_sph * cd);

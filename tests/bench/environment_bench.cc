@@ -1,6 +1,6 @@
-// ns per call of the environment models: the atmosphere (called every physics tick), the magnetic models
-// (called at magnetometer rates, and by the paper claimed too costly for a 1 kHz loop in the WMM's case),
-// the geodetic conversions, gravity and the wind's per-tick advance.
+// ns per call of the environment models: the atmosphere (called every physics tick), the magnetic
+// models (called at magnetometer rates, and by the paper claimed too costly for a 1 kHz loop in the
+// WMM's case), the geodetic conversions, gravity and the wind's per-tick advance.
 #include <benchmark/benchmark.h>
 
 #include <array>

@@ -15,9 +15,10 @@
 namespace airis::engine {
 namespace {
 
-// Values printed with 5 significant digits (4 for densities above 86 km and number densities): we allow one
-// unit in the last printed place, since the standard's tables were themselves computed in 1976 with
-// rounded intermediate values (neighbouring published implementations differ from them by up to that much).
+// Values printed with 5 significant digits (4 for densities above 86 km and number densities): we
+// allow one unit in the last printed place, since the standard's tables were themselves computed in
+// 1976 with rounded intermediate values (neighbouring published implementations differ from them by
+// up to that much).
 constexpr double kFiveDigits = 1e-4;
 constexpr double kFourDigits = 1e-3;
 
@@ -39,16 +40,17 @@ std::vector<Boundary> ReadBoundaries() {
     std::stringstream ss(line);
     Boundary b;
     char comma;
-    ss >> b.h_km >> comma >> b.z_km >> comma >> b.lapse_k_km >> comma >> b.t_k >> comma >> b.p_pa >> comma >>
-        b.rho_kg_m3;
+    ss >> b.h_km >> comma >> b.z_km >> comma >> b.lapse_k_km >> comma >> b.t_k >> comma >> b.p_pa >>
+        comma >> b.rho_kg_m3;
     rows.push_back(b);
   }
   return rows;
 }
 
 TEST(AtmosphereTest, MatchesTheStandardsLayerBoundaries) {
-  // shared/data/ussa1976_layer_boundaries.csv: the standard's layer constants, 6 significant digits. Its
-  // pressures differ from the standard's Table 4 (e.g. 5474.889 Pa at 20 km) by up to 3.4e-6.
+  // shared/data/ussa1976_layer_boundaries.csv: the standard's layer constants, 6 significant
+  // digits. Its pressures differ from the standard's Table 4 (e.g. 5474.889 Pa at 20 km) by up
+  // to 3.4e-6.
   constexpr double kCsvRel = 1e-5;
   const auto rows = ReadBoundaries();
   ASSERT_EQ(rows.size(), 7u);
@@ -68,9 +70,9 @@ TEST(AtmosphereTest, MatchesTheStandardsLayerBoundaries) {
 }
 
 TEST(AtmosphereTest, MatchesTableIBelow86km) {
-  // The standard's Table I at geopotential altitudes (T_M, P, rho; T = T_M below 80 km), as tabulated in
-  // rayference/ussa1976 tests/test_core.py, and Table I / III at geometric altitudes (poliastro's COESA76
-  // tests): Z = 0.5, 1, 10 and 77 km.
+  // The standard's Table I at geopotential altitudes (T_M, P, rho; T = T_M below 80 km), as
+  // tabulated in rayference/ussa1976 tests/test_core.py, and Table I / III at geometric altitudes
+  // (poliastro's COESA76 tests): Z = 0.5, 1, 10 and 77 km.
   struct Row {
     double h_m, t_k, p_pa, rho;
   };
@@ -122,7 +124,8 @@ TEST(AtmosphereTest, SeaLevelIsTheStandardSeaLevel) {
 }
 
 TEST(AtmosphereTest, KineticTemperatureAbove80kmFollowsTableEight) {
-  // At 86 km T_M = 186.946 K while the kinetic temperature is T7 = 186.8673 K (T = T_M M/M0, M/M0 = 0.999579).
+  // At 86 km T_M = 186.946 K while the kinetic temperature is T7 = 186.8673 K (T = T_M M/M0, M/M0 =
+  // 0.999579).
   const AtmosphereSample s = ussa1976::Calc(86000.0);
   EXPECT_NEAR(s.temperature_k, 186.8673, 2e-4);
   EXPECT_NEAR(s.density_kg_m3, 6.958e-6, kFourDigits * 6.958e-6);
@@ -134,21 +137,21 @@ TEST(AtmosphereTest, KineticTemperatureAbove80kmFollowsTableEight) {
 }
 
 TEST(AtmosphereTest, MatchesTableIAbove86km) {
-  // Table I of the standard above 86 km. T, P, rho at 86, 92, 230 and 1000 km as in the COESA76 test values
-  // of poliastro (tests/tests_earth/tests_atmosphere/test_coesa76.py); P at 100-300 km from Table I;
-  // densities at the other altitudes as tabulated from the standard by Curtis, "Orbital Mechanics for
-  // Engineering Students", Table 6.1; T at 100-500 km also in rayference/ussa1976. P at 1000 km is
-  // 7.5138e-9 Pa (7.5138e-11 mbar in poliastro; N k T with the standard's N = 5.442e11 m^-3 and T = 1000 K
-  // gives the same), not 7.5138e-8 Pa.
+  // Table I of the standard above 86 km. T, P, rho at 86, 92, 230 and 1000 km as in the COESA76
+  // test values of poliastro (tests/tests_earth/tests_atmosphere/test_coesa76.py); P at 100-300 km
+  // from Table I; densities at the other altitudes as tabulated from the standard by Curtis,
+  // "Orbital Mechanics for Engineering Students", Table 6.1; T at 100-500 km also in
+  // rayference/ussa1976. P at 1000 km is 7.5138e-9 Pa (7.5138e-11 mbar in poliastro; N k T with the
+  // standard's N = 5.442e11 m^-3 and T = 1000 K gives the same), not 7.5138e-8 Pa.
   struct Row {
     double z_km, t_k, p_pa, rho;
   };
   const Row rows[] = {
-      {86.0, 186.87, 0.37338, 6.958e-6},     {92.0, 186.96, 0.12887, 2.393e-6},
-      {100.0, 195.08, 3.2011e-2, 5.604e-7},  {110.0, 240.00, 7.1042e-3, 9.708e-8},
-      {120.0, 360.00, 2.5382e-3, 2.222e-8},  {150.0, 634.39, 4.5422e-4, 2.076e-9},
-      {200.0, 854.56, 8.4736e-5, 2.541e-10}, {230.0, 915.78, 3.9276e-5, 1.029e-10},
-      {300.0, 976.01, 8.7704e-6, 1.916e-11}, {500.0, 999.24, NAN, 5.215e-13},
+      {86.0, 186.87, 0.37338, 6.958e-6},      {92.0, 186.96, 0.12887, 2.393e-6},
+      {100.0, 195.08, 3.2011e-2, 5.604e-7},   {110.0, 240.00, 7.1042e-3, 9.708e-8},
+      {120.0, 360.00, 2.5382e-3, 2.222e-8},   {150.0, 634.39, 4.5422e-4, 2.076e-9},
+      {200.0, 854.56, 8.4736e-5, 2.541e-10},  {230.0, 915.78, 3.9276e-5, 1.029e-10},
+      {300.0, 976.01, 8.7704e-6, 1.916e-11},  {500.0, 999.24, NAN, 5.215e-13},
       {1000.0, 1000.0, 7.5138e-9, 3.561e-15},
   };
   for (const Row& r : rows) {
@@ -161,9 +164,10 @@ TEST(AtmosphereTest, MatchesTableIAbove86km) {
   // P at 500 km, 3.02e-7 Pa: only a 3-digit public tabulation of the standard was at hand.
   ExpectRel(ussa1976::Calc(500000.0).pressure_pa, 3.02e-7, 2e-3, "P at 500 km");
   // Densities only (Curtis, Table 6.1).
-  const double more[][2] = {{90.0, 3.416e-6},  {130.0, 8.152e-9}, {140.0, 3.831e-9},  {180.0, 5.194e-10},
-                            {250.0, 6.073e-11}, {350.0, 7.014e-12}, {400.0, 2.803e-12}, {450.0, 1.184e-12},
-                            {600.0, 1.137e-13}, {700.0, 3.070e-14}, {800.0, 1.136e-14}, {900.0, 5.759e-15}};
+  const double more[][2] = {{90.0, 3.416e-6},   {130.0, 8.152e-9},  {140.0, 3.831e-9},
+                            {180.0, 5.194e-10}, {250.0, 6.073e-11}, {350.0, 7.014e-12},
+                            {400.0, 2.803e-12}, {450.0, 1.184e-12}, {600.0, 1.137e-13},
+                            {700.0, 3.070e-14}, {800.0, 1.136e-14}, {900.0, 5.759e-15}};
   for (const auto& m : more) {
     ExpectRel(ussa1976::Calc(m[0] * 1000.0).density_kg_m3, m[1], kFourDigits,
               "Z = " + std::to_string(m[0]) + " km");
@@ -197,8 +201,8 @@ TEST(AtmosphereTest, SpeciesMatchTableVIII) {
       {900, {5.641e6, 3.989e10, 2.177e4, 7.741e-1, 6.933e11, 5.434e10}},
       {1000, {4.626e5, 9.562e9, 1.251e3, 2.188e-2, 4.850e11, 4.967e10}},
   };
-  // 4 significant digits; O at 300 km is printed 5.443e14 where the equations give 5.433e14 (the standard's
-  // integration differs there by 0.2%), so O gets 2.5e-3.
+  // 4 significant digits; O at 300 km is printed 5.443e14 where the equations give 5.433e14 (the
+  // standard's integration differs there by 0.2%), so O gets 2.5e-3.
   const char* names[6] = {"N2", "O", "O2", "Ar", "He", "H"};
   for (const Row& r : rows) {
     const auto n = ussa1976::internal::CalcUpperNumberDensities_m3(r.z_km * 1000.0);
@@ -210,8 +214,8 @@ TEST(AtmosphereTest, SpeciesMatchTableVIII) {
 }
 
 TEST(AtmosphereTest, ContinuousAcrossEveryBoundary) {
-  // Lower layers (geometric altitude of each geopotential boundary) and the upper model's segments. Probes
-  // 1 mm either side: pressure changes by ~2e-7 over 1 mm at most (scale height > 5 km).
+  // Lower layers (geometric altitude of each geopotential boundary) and the upper model's segments.
+  // Probes 1 mm either side: pressure changes by ~2e-7 over 1 mm at most (scale height > 5 km).
   const double lower[] = {11000.0, 20000.0, 32000.0, 47000.0, 51000.0, 71000.0};
   constexpr double kProbe_m = 1e-3;
   constexpr double kSmooth = 1e-6;
@@ -222,16 +226,17 @@ TEST(AtmosphereTest, ContinuousAcrossEveryBoundary) {
     ExpectRel(b.pressure_pa, a.pressure_pa, kSmooth, "P at H = " + std::to_string(h));
     ExpectRel(b.density_kg_m3, a.density_kg_m3, kSmooth, "rho at H = " + std::to_string(h));
   }
-  // The join of the lower and upper models at 86 km: pressure continuous by construction (the upper model's
-  // 86 km densities are scaled by 1 - 1.0e-5 to match); T, rho and C_s differ by the standard's own
-  // rounding of T7 and of the 86 km composition: 5e-7, 2.7e-6 and 1.4e-6 measured.
+  // The join of the lower and upper models at 86 km: pressure continuous by construction (the upper
+  // model's 86 km densities are scaled by 1 - 1.0e-5 to match); T, rho and C_s differ by the
+  // standard's own rounding of T7 and of the 86 km composition: 5e-7, 2.7e-6 and 1.4e-6 measured.
   const AtmosphereSample top = ussa1976::Calc(86000.0), up = ussa1976::Calc(86000.0 + kProbe_m);
   ExpectRel(up.pressure_pa, top.pressure_pa, kSmooth, "P at 86 km");
   ExpectRel(up.temperature_k, top.temperature_k, kSmooth, "T at 86 km");
   ExpectRel(up.density_kg_m3, top.density_kg_m3, 3e-6, "rho at 86 km");
   ExpectRel(up.speed_of_sound_m_s, top.speed_of_sound_m_s, 2e-6, "C_s at 86 km");
-  // Upper segments. At 110 km the standard's elliptical segment ends at 239.99972 K, not 240 K (its rounded
-  // constants): 1.2e-6 in T and P. At 150 km hydrogen enters the standard (3.8e11 of 5.2e16 m^-3): 7.3e-6 in P.
+  // Upper segments. At 110 km the standard's elliptical segment ends at 239.99972 K, not 240 K (its
+  // rounded constants): 1.2e-6 in T and P. At 150 km hydrogen enters the standard (3.8e11 of 5.2e16
+  // m^-3): 7.3e-6 in P.
   for (double z_km : {91.0, 95.0, 97.0, 100.0, 110.0, 115.0, 120.0, 150.0, 500.0}) {
     const AtmosphereSample a = ussa1976::Calc(z_km * 1000.0 - kProbe_m);
     const AtmosphereSample b = ussa1976::Calc(z_km * 1000.0 + kProbe_m);
@@ -258,12 +263,15 @@ TEST(AtmosphereTest, AltitudeFromPressureIsTheExactInverse) {
   // Round trip over the whole lower model, with a step that is no divisor of any layer thickness.
   double worst_m = 0.0;
   for (double z = -5000.0; z <= 86000.0; z += 13.7) {
-    worst_m = std::max(worst_m, std::abs(ussa1976::CalcAltitudeFromPressure(ussa1976::Calc(z).pressure_pa) - z));
+    worst_m = std::max(
+        worst_m, std::abs(ussa1976::CalcAltitudeFromPressure(ussa1976::Calc(z).pressure_pa) - z));
   }
   EXPECT_LT(worst_m, 1e-6);  // far inside the 1 mm requirement
   EXPECT_NEAR(ussa1976::CalcAltitudeFromPressure(101325.0), 0.0, 1e-9);
-  EXPECT_NEAR(ussa1976::CalcAltitudeFromPressure(ussa1976::Calc(86000.0).pressure_pa), 86000.0, 1e-6);
-  EXPECT_NEAR(ussa1976::CalcAltitudeFromPressure(ussa1976::Calc(-5000.0).pressure_pa), -5000.0, 1e-6);
+  EXPECT_NEAR(ussa1976::CalcAltitudeFromPressure(ussa1976::Calc(86000.0).pressure_pa), 86000.0,
+              1e-6);
+  EXPECT_NEAR(ussa1976::CalcAltitudeFromPressure(ussa1976::Calc(-5000.0).pressure_pa), -5000.0,
+              1e-6);
 }
 
 TEST(AtmosphereTest, RejectsOutOfRangeInput) {

@@ -21,7 +21,8 @@ TEST(EnvironmentTest, AggregatesTheModelsAtWorldPoints) {
   EXPECT_DOUBLE_EQ(env.CalcGravity_m_s2(p_W), Gravity().CalcAcceleration_m_s2(152.0));
   EXPECT_DOUBLE_EQ(env.CalcAir(p_W).pressure_pa, ussa1976::Calc(152.0).pressure_pa);
   // Default magnetic model: WMM2025 on 2026.0 at the point's geodetic position.
-  const Vec3 expected = WorldMagneticModel::Wmm2025().CalcField_nT(env.frame().ToGeodetic(p_W), 2026.0);
+  const Vec3 expected =
+      WorldMagneticModel::Wmm2025().CalcField_nT(env.frame().ToGeodetic(p_W), 2026.0);
   EXPECT_EQ(env.CalcMagneticField_nT(p_W), expected);
   EXPECT_EQ(env.magnetic_model().name(), "WMM-2025");
 }

@@ -9,7 +9,8 @@
 namespace airis::engine {
 namespace {
 
-// Both forms are a few arithmetic operations; their results agree with the closed forms to a few ulp.
+// Both forms are a few arithmetic operations; their results agree with the closed forms to a few
+// ulp.
 constexpr double kRelTol = 1e-14;
 
 TEST(GravityTest, DefaultIsTheExactInverseSquareLaw) {
@@ -34,11 +35,12 @@ TEST(GravityTest, LinearFormIsThePapersApproximation) {
   for (double h : {-400.0, 0.0, 122.0, 8848.0, 39000.0}) {
     const double expected = g0 * (1.0 - 2.0 * h / re);
     EXPECT_NEAR(linear.CalcAcceleration_m_s2(h), expected, kRelTol * g0) << "h = " << h;
-    // The neglected term of the binomial series is 3 (h/Re)^2 relative; the difference is that to within
-    // the next term, 4 (h/Re)^3.
+    // The neglected term of the binomial series is 3 (h/Re)^2 relative; the difference is that to
+    // within the next term, 4 (h/Re)^3.
     const double x = h / re;
     const double difference = exact.CalcAcceleration_m_s2(h) - linear.CalcAcceleration_m_s2(h);
-    EXPECT_NEAR(difference, g0 * 3.0 * x * x, g0 * 4.0 * std::abs(x * x * x) + 1e-15) << "h = " << h;
+    EXPECT_NEAR(difference, g0 * 3.0 * x * x, g0 * 4.0 * std::abs(x * x * x) + 1e-15)
+        << "h = " << h;
   }
 }
 

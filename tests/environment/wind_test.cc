@@ -60,25 +60,27 @@ TEST(WindTest, SteadyWindIsTheMeanEverywhereAndAlways) {
 }
 
 TEST(WindTest, GaussMarkovHasTheConfiguredStationarySigma) {
-  // Coarse steps (dt = tau / 2, a = 0.61): 200000 samples of an AR(1) give a relative standard error of the
-  // variance of sqrt(2 (1 + a^2) / ((1 - a^2) N)) = 0.47%, i.e. 0.23% on sigma; 1% is over 4 standard errors.
+  // Coarse steps (dt = tau / 2, a = 0.61): 200000 samples of an AR(1) give a relative standard
+  // error of the variance of sqrt(2 (1 + a^2) / ((1 - a^2) N)) = 0.47%, i.e. 0.23% on sigma; 1% is
+  // over 4 standard errors.
   Wind wind(GaussMarkov(1.5, 2.0), RandomStream(42));
   const auto xs = Record(wind, 1'000'000'000, 200000);
   for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(Sigma(xs, axis), 1.5, 0.01 * 1.5) << axis;
 }
 
 TEST(WindTest, GaussMarkovKeepsSigmaAtOneKilohertz) {
-  // The exact discretisation holds for small steps too; the (1 - a) scaling of the reference implementation
-  // would give sigma sqrt((1 - a) / (1 + a)) = 0.05 sigma here. tau = 0.2 s, dt = 1 ms, 1e6 samples:
-  // standard error of sigma ~ sqrt(2 tau / (N dt)) / sqrt(2) = 1%; tolerance 5%.
+  // The exact discretisation holds for small steps too; the (1 - a) scaling of the reference
+  // implementation would give sigma sqrt((1 - a) / (1 + a)) = 0.05 sigma here. tau = 0.2 s, dt = 1
+  // ms, 1e6 samples: standard error of sigma ~ sqrt(2 tau / (N dt)) / sqrt(2) = 1%; tolerance 5%.
   Wind wind(GaussMarkov(2.0, 0.2), RandomStream(43));
   const auto xs = Record(wind, 1'000'000, 1'000'000);
   for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(Sigma(xs, axis), 2.0, 0.05 * 2.0) << axis;
 }
 
 TEST(WindTest, GaussMarkovHasTheConfiguredCorrelationTime) {
-  // dt = tau / 10: the lag-10 autocorrelation is exp(-1). Bartlett's formula gives its standard error as
-  // sqrt(((1 + a^2)(1 - a^20) / (1 - a^2) - 20 a^20) / N) = 0.0024 for N = 1e6; tolerance 0.012 (5 s.e.).
+  // dt = tau / 10: the lag-10 autocorrelation is exp(-1). Bartlett's formula gives its standard
+  // error as sqrt(((1 + a^2)(1 - a^20) / (1 - a^2) - 20 a^20) / N) = 0.0024 for N = 1e6; tolerance
+  // 0.012 (5 s.e.).
   const double tau = 0.5;
   Wind wind(GaussMarkov(1.0, tau), RandomStream(44));
   const auto xs = Record(wind, 50'000'000, 1'000'000);
@@ -103,7 +105,8 @@ TEST(WindTest, SameSeedSameGustsOtherSeedOtherGusts) {
 }
 
 TEST(WindTest, GustsStartStationaryAndKeepStateWhenTheMeanChanges) {
-  // The state is drawn from the stationary distribution at construction, so it is nonzero before any step.
+  // The state is drawn from the stationary distribution at construction, so it is nonzero before
+  // any step.
   Wind wind(GaussMarkov(1.0, 1.0), RandomStream(3));
   const Vec3 gust = wind.gust_W();
   EXPECT_GT(gust.norm(), 0.0);
@@ -121,31 +124,32 @@ WindConfig Dryden(double sigma, double length_m, const Vec3& mean) {
 }
 
 TEST(WindTest, DrydenComponentsHaveTheConfiguredSigma) {
-  // T = L / V = 20 s, dt = 5 s, 400000 samples (1e5 T): standard error of sigma ~0.25% for the first-order
-  // component and below 0.35% for the second-order ones; tolerance 1.5%.
+  // T = L / V = 20 s, dt = 5 s, 400000 samples (1e5 T): standard error of sigma ~0.25% for the
+  // first-order component and below 0.35% for the second-order ones; tolerance 1.5%.
   Wind wind(Dryden(1.2, 200.0, Vec3(6.0, 0.0, 0.0)), RandomStream(11));
   const auto xs = Record(wind, 5'000'000'000, 400000, 10.0);
   for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(Sigma(xs, axis), 1.2, 0.015 * 1.2) << axis;
 }
 
 TEST(WindTest, DrydenKeepsSigmaAtOneKilohertz) {
-  // T = 20 m / 20 m/s = 1 s with 1 ms steps: exercises the small-step (series) form of the noise covariance.
-  // 2e6 samples = 2000 T: standard error of sigma ~2%; tolerance 8%.
+  // T = 20 m / 20 m/s = 1 s with 1 ms steps: exercises the small-step (series) form of the noise
+  // covariance. 2e6 samples = 2000 T: standard error of sigma ~2%; tolerance 8%.
   Wind wind(Dryden(1.0, 20.0, Vec3(6.0, 0.0, 0.0)), RandomStream(12));
   const auto xs = Record(wind, 1'000'000, 2'000'000, 20.0);
   for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(Sigma(xs, axis), 1.0, 0.08) << axis;
 }
 
 TEST(WindTest, DrydenHasTheMilSpecAutocorrelations) {
-  // Longitudinal: exp(-t/T); lateral and vertical: exp(-t/T) (1 - t / 2T), which crosses zero at t = 2T.
-  // T = 20 s, dt = 2 s, 1e6 samples: standard errors of the autocorrelations ~0.006; tolerance 0.03.
-  // Mean wind toward the east: longitudinal = east, lateral = south (to the right), vertical = down.
+  // Longitudinal: exp(-t/T); lateral and vertical: exp(-t/T) (1 - t / 2T), which crosses zero at t
+  // = 2T. T = 20 s, dt = 2 s, 1e6 samples: standard errors of the autocorrelations ~0.006;
+  // tolerance 0.03. Mean wind toward the east: longitudinal = east, lateral = south (to the right),
+  // vertical = down.
   Wind wind(Dryden(1.0, 200.0, Vec3(0.0, 8.0, 0.0)), RandomStream(13));
   const auto xs = Record(wind, 2'000'000'000, 1'000'000, 10.0);
   const int lag_t = 10, lag_2t = 20;
-  EXPECT_NEAR(Autocorrelation(xs, 1, lag_t), std::exp(-1.0), 0.03);             // east: longitudinal
-  EXPECT_NEAR(Autocorrelation(xs, 0, lag_t), 0.5 * std::exp(-1.0), 0.03);       // north: lateral
-  EXPECT_NEAR(Autocorrelation(xs, 2, lag_t), 0.5 * std::exp(-1.0), 0.03);       // down: vertical
+  EXPECT_NEAR(Autocorrelation(xs, 1, lag_t), std::exp(-1.0), 0.03);        // east: longitudinal
+  EXPECT_NEAR(Autocorrelation(xs, 0, lag_t), 0.5 * std::exp(-1.0), 0.03);  // north: lateral
+  EXPECT_NEAR(Autocorrelation(xs, 2, lag_t), 0.5 * std::exp(-1.0), 0.03);  // down: vertical
   EXPECT_NEAR(Autocorrelation(xs, 0, lag_2t), 0.0, 0.03);
   EXPECT_NEAR(Autocorrelation(xs, 2, lag_2t), 0.0, 0.03);
   EXPECT_NEAR(Autocorrelation(xs, 1, lag_2t), std::exp(-2.0), 0.03);

@@ -15,8 +15,8 @@
 namespace airis::engine {
 namespace {
 
-// NOAA prints the test values to 0.1 nT (nT/yr) and 0.01 deg (deg/yr): a correct model rounds to the printed
-// value, so it lies within half a printed unit (plus double-precision noise).
+// NOAA prints the test values to 0.1 nT (nT/yr) and 0.01 deg (deg/yr): a correct model rounds to
+// the printed value, so it lies within half a printed unit (plus double-precision noise).
 constexpr double kHalfUnit_nT = 0.05 + 1e-6;
 constexpr double kHalfUnit_deg = 0.005 + 1e-9;
 
@@ -36,8 +36,9 @@ std::vector<TestValue> ReadTestValues() {
     std::istringstream ss(line);
     TestValue v;
     std::string grid;  // "NaN" where grid variation is undefined
-    ss >> v.date >> v.height_km >> v.lat_deg >> v.lon_deg >> v.x >> v.y >> v.z >> v.h >> v.f >> v.incl_deg >>
-        v.decl_deg >> grid >> v.x_dot >> v.y_dot >> v.z_dot >> v.h_dot >> v.f_dot >> v.incl_dot >> v.decl_dot;
+    ss >> v.date >> v.height_km >> v.lat_deg >> v.lon_deg >> v.x >> v.y >> v.z >> v.h >> v.f >>
+        v.incl_deg >> v.decl_deg >> grid >> v.x_dot >> v.y_dot >> v.z_dot >> v.h_dot >> v.f_dot >>
+        v.incl_dot >> v.decl_dot;
     EXPECT_FALSE(ss.fail()) << line;
     rows.push_back(v);
   }
@@ -112,7 +113,8 @@ TEST(WorldMagneticModelTest, FiniteAtTheGeographicPoles) {
     // Near the poles the field is mostly vertical: |Z| > 50000 nT at both.
     EXPECT_GT(std::abs(b.z()), 50000.0) << lat;
     // Continuous with a point 1e-7 deg away.
-    const Vec3 near = wmm.CalcField_nT({DegToRad(lat - std::copysign(1e-7, lat)), 0.3, 0.0}, 2026.0);
+    const Vec3 near =
+        wmm.CalcField_nT({DegToRad(lat - std::copysign(1e-7, lat)), 0.3, 0.0}, 2026.0);
     EXPECT_NEAR((b - near).norm(), 0.0, 0.01) << lat;
   }
 }
@@ -150,20 +152,23 @@ TEST(WorldMagneticModelTest, MalformedCoefficientFilesNameTheLine) {
     EXPECT_NE(std::string(e.what()).find("bad.cof:2"), std::string::npos) << e.what();
   }
   try {
-    WorldMagneticModel::FromCofText(header + "  1  0  -29351.8 0.0 12.0 0.0\n  1  2  1 1 1 1\n", "bad.cof");
+    WorldMagneticModel::FromCofText(header + "  1  0  -29351.8 0.0 12.0 0.0\n  1  2  1 1 1 1\n",
+                                    "bad.cof");
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& e) {
     EXPECT_EQ(e.where().line, 3);
   }
   // Degree 1 declared but m = 1 missing.
-  EXPECT_THROW(WorldMagneticModel::FromCofText(header + "  1  0  -29351.8 0.0 12.0 0.0\n", "short.cof"),
-               ConfigError);
+  EXPECT_THROW(
+      WorldMagneticModel::FromCofText(header + "  1  0  -29351.8 0.0 12.0 0.0\n", "short.cof"),
+      ConfigError);
   EXPECT_THROW(WorldMagneticModel::FromCofText("", "empty.cof"), ConfigError);
 }
 
 TEST(WorldMagneticModelTest, DegreeOneModelIsACentredDipole) {
-  // With only g10 (axial dipole), the field on the equator is horizontal, -g10 (a/r)^3 nT north (Chapman &
-  // Bartels). On the equator geodetic and geocentric latitude coincide and r = 6378137 m + h.
+  // With only g10 (axial dipole), the field on the equator is horizontal, -g10 (a/r)^3 nT north
+  // (Chapman & Bartels). On the equator geodetic and geocentric latitude coincide and r = 6378137 m
+  // + h.
   const std::string cof =
       "    2025.0            TEST        01/01/2025\n"
       "  1  0  -30000.0       0.0       0.0        0.0\n"

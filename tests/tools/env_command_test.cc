@@ -2,10 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "engine/core/frames.h"
 #include "engine/environment/atmosphere.h"
@@ -40,10 +39,10 @@ Result RunAiris(const std::string& args) {
   return r;
 }
 
-const std::set<std::string> kKeys = {
-    "gravity_m_s2",  "temperature_k",   "pressure_pa",     "density_kg_m3",   "speed_of_sound_m_s",
-    "mag_north_nt",  "mag_east_nt",     "mag_down_nt",     "declination_deg", "inclination_deg",
-    "total_intensity_nt"};
+const std::set<std::string> kKeys = {"gravity_m_s2",    "temperature_k",      "pressure_pa",
+                                     "density_kg_m3",   "speed_of_sound_m_s", "mag_north_nt",
+                                     "mag_east_nt",     "mag_down_nt",        "declination_deg",
+                                     "inclination_deg", "total_intensity_nt"};
 
 TEST(EnvCommandTest, JsonHasExactlyTheDocumentedKeys) {
   const Result r = RunAiris("env --json");
@@ -67,7 +66,8 @@ TEST(EnvCommandTest, DefaultsAreTheReferenceOriginIn2026WithTheWmm) {
   EXPECT_DOUBLE_EQ(j["pressure_pa"].get<double>(), air.pressure_pa);
   EXPECT_DOUBLE_EQ(j["density_kg_m3"].get<double>(), air.density_kg_m3);
   EXPECT_DOUBLE_EQ(j["speed_of_sound_m_s"].get<double>(), air.speed_of_sound_m_s);
-  const engine::GeodeticPosition origin{engine::DegToRad(47.641468), engine::DegToRad(-122.140165), alt_m};
+  const engine::GeodeticPosition origin{engine::DegToRad(47.641468), engine::DegToRad(-122.140165),
+                                        alt_m};
   const engine::Vec3 b = engine::WorldMagneticModel::Wmm2025().CalcField_nT(origin, 2026.0);
   EXPECT_DOUBLE_EQ(j["mag_north_nt"].get<double>(), b.x());
   EXPECT_DOUBLE_EQ(j["mag_east_nt"].get<double>(), b.y());
@@ -79,7 +79,8 @@ TEST(EnvCommandTest, DefaultsAreTheReferenceOriginIn2026WithTheWmm) {
 }
 
 TEST(EnvCommandTest, OptionsChooseThePointDateAndModel) {
-  const Result r = RunAiris("env --json --lat -33.9 --lon 18.4 --alt-m 2500 --date 2029.5 --magnetic dipole");
+  const Result r =
+      RunAiris("env --json --lat -33.9 --lon 18.4 --alt-m 2500 --date 2029.5 --magnetic dipole");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const engine::GeodeticPosition p{engine::DegToRad(-33.9), engine::DegToRad(18.4), 2500.0};
@@ -93,15 +94,17 @@ TEST(EnvCommandTest, OptionsChooseThePointDateAndModel) {
 TEST(EnvCommandTest, TextOutputNamesEveryQuantityWithItsUnit) {
   const Result r = RunAiris("env");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* part : {"gravity", "m/s^2", "temperature", " K\n", "pressure", " Pa\n", "density",
-                           "kg/m^3", "speed of sound", "north", "east", "down", " nT", "declination",
-                           "inclination", "deg", "total intensity", "WMM-2025"}) {
+  for (const char* part : {"gravity", "m/s^2", "temperature", " K\n", "pressure", " Pa\n",
+                           "density", "kg/m^3", "speed of sound", "north", "east", "down", " nT",
+                           "declination", "inclination", "deg", "total intensity", "WMM-2025"}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing in:\n" << r.out;
   }
 }
 
-// A bad input exits non-zero with one line on stderr that names the option, and prints nothing on stdout.
-void ExpectError(const std::string& args, const std::string& option, const std::string& detail = "") {
+// A bad input exits non-zero with one line on stderr that names the option, and prints nothing on
+// stdout.
+void ExpectError(const std::string& args, const std::string& option,
+                 const std::string& detail = "") {
   const Result r = RunAiris(args);
   EXPECT_NE(r.exit_code, 0) << args;
   EXPECT_TRUE(r.out.empty()) << args << " printed: " << r.out;
@@ -119,9 +122,10 @@ TEST(EnvCommandTest, RejectsOutOfRangeCoordinates) {
 }
 
 TEST(EnvCommandTest, RejectsAltitudesOutsideTheModels) {
-  ExpectError("env --alt-m 900000", "--alt-m", "850000");           // above the WMM's 850 km
-  ExpectError("env --alt-m=-2000", "--alt-m", "-1000");              // below the WMM's -1 km
-  ExpectError("env --alt-m 1000001 --magnetic dipole", "--alt-m", "1000000");  // above the atmosphere
+  ExpectError("env --alt-m 900000", "--alt-m", "850000");  // above the WMM's 850 km
+  ExpectError("env --alt-m=-2000", "--alt-m", "-1000");    // below the WMM's -1 km
+  ExpectError("env --alt-m 1000001 --magnetic dipole", "--alt-m",
+              "1000000");  // above the atmosphere
   ExpectError("env --alt-m=-5001 --magnetic dipole", "--alt-m", "-5000");
 }
 
