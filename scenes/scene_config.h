@@ -99,11 +99,20 @@ struct MaterialConfig {
   void Validate() const;
 };
 
+/// Default ground surface: grass-green, little bounce, high friction.
+inline MaterialConfig DefaultGroundMaterial() {
+  MaterialConfig m;
+  m.color = Eigen::Vector3d(0.33, 0.42, 0.27);
+  m.restitution = 0.2;
+  m.friction = 0.8;
+  return m;
+}
+
 /// The `ground` block: a flat plane at z = 0 centred on the origin.
 struct GroundConfig {
   bool enabled = true;
   Eigen::Vector2d size_m = Eigen::Vector2d(2000.0, 2000.0);
-  MaterialConfig material{Eigen::Vector3d(0.33, 0.42, 0.27), "", 0.2, 0.8};
+  MaterialConfig material = DefaultGroundMaterial();
   std::string class_name = "ground";
 
   template <class V>

@@ -7,5 +7,6 @@ namespace airis::tools {
 // Each subcommand of `airis` adds itself to the app; the callback it installs sets `exit_code`.
 // One function per <name>_command.cc.
 void AddEnvCommand(CLI::App& app, int& exit_code);
+void AddSceneCommand(CLI::App& app, int& exit_code);
 
 }  // namespace airis::tools

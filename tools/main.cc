@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   airis::tools::AddEnvCommand(app, exit_code);
+  airis::tools::AddSceneCommand(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }

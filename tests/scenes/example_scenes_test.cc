@@ -1,0 +1,102 @@
+// The example scenes shipped in scenes/ all load, with the contents their comments promise. Tests run
+// from the repository root (airis_add_test's WORKING_DIRECTORY).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "scenes/mesh_loader.h"
+#include "scenes/scene.h"
+#include "scenes/scene_stats.h"
+
+namespace airis::scenes {
+namespace {
+
+std::map<std::string, std::size_t> CountByClass(const Scene& s) {
+  std::map<std::string, std::size_t> out;
+  for (const auto& c : CalcSceneStats(s).classes) out[c.name] = c.objects;
+  return out;
+}
+
+TEST(ExampleScenesTest, EmptyIsGroundOnly) {
+  const Scene s = LoadScene("scenes/empty.yaml");
+  EXPECT_EQ(s.name, "empty");
+  ASSERT_EQ(s.static_scene.objects.size(), 1u);
+  EXPECT_EQ(s.static_scene.objects[0].name, "ground");
+  ASSERT_EQ(s.vehicles.size(), 1u);
+}
+
+TEST(ExampleScenesTest, CityHasHundredsOfBuildingsStreetsCarsAndLamps) {
+  const Scene s = LoadScene("scenes/city.yaml");
+  const auto count = CountByClass(s);
+  EXPECT_GE(count.at("building"), 300u);
+  EXPECT_GE(count.at("road"), 20u);
+  EXPECT_GE(count.at("car"), 100u);
+  EXPECT_GE(count.at("lamp_post"), 100u);
+  const SceneStats stats = CalcSceneStats(s);
+  // About 1 km x 1 km of city (the ground plane, object 0, is larger).
+  Eigen::AlignedBox3d city;
+  for (std::size_t i = 1; i < s.static_scene.objects.size(); ++i) city.extend(s.static_scene.ObjectBounds(i));
+  EXPECT_NEAR(city.sizes().x(), 1000.0, 100.0);
+  EXPECT_NEAR(city.sizes().y(), 1000.0, 100.0);
+  EXPECT_LT(stats.models, 40u);
+  ASSERT_EQ(s.vehicles.size(), 1u);
+  EXPECT_EQ(s.vehicles[0].preset, "quadrotor");
+  EXPECT_EQ(s.environment.magnetic_model, engine::MagneticModelKind::kWmm);
+}
+
+TEST(ExampleScenesTest, ForestHasThousandsOfTreesOnAFewMeshes) {
+  const Scene s = LoadScene("scenes/forest.yaml");
+  const auto count = CountByClass(s);
+  EXPECT_GE(count.at("tree"), 2000u);
+  EXPECT_GT(count.at("vegetation"), 0u);
+  EXPECT_LE(s.static_scene.meshes.size(), 4u);  // plane, cylinder, cone, sphere
+}
+
+TEST(ExampleScenesTest, LandingPadLoadsTheMeshAssetThroughAssimp) {
+  const Scene s = LoadScene("scenes/landing_pad.yaml");
+  const auto& objects = s.static_scene.objects;
+  ASSERT_GE(objects.size(), 2u);
+  EXPECT_EQ(objects[1].name, "pad");
+  const engine::Model& pad = s.static_scene.models[objects[1].model];
+  EXPECT_EQ(pad.parts.size(), 3u);  // pad, marking, ring materials
+  // 4 m across, 0.11 m tall, lying on the ground (z from -0.11 to 0) after the y-up conversion.
+  EXPECT_NEAR(pad.bounds.sizes().x(), 4.0 * std::cos(3.14159265 / 8), 1e-3);
+  EXPECT_NEAR(pad.bounds.min().z(), -0.11, 1e-4);
+  EXPECT_NEAR(pad.bounds.max().z(), 0.0, 1e-4);
+  EXPECT_EQ(CountByClass(s).at("crate"), 12u);
+}
+
+TEST(ExampleScenesTest, ComposedIncludesTheCityTileAndPark) {
+  const Scene s = LoadScene("scenes/composed.yaml");
+  EXPECT_EQ(s.name, "composed");
+  EXPECT_EQ(s.files.size(), 3u);
+  ASSERT_EQ(s.generated.size(), 2u);
+  EXPECT_EQ(s.generated[0].kind, "city");
+  EXPECT_EQ(s.generated[1].kind, "forest");
+  EXPECT_GT(s.generated[1].trees, 500u);
+  EXPECT_EQ(s.vehicles.size(), 2u);
+}
+
+TEST(MeshLoaderTest, LandingPadVolumeMatchesItsOctagon) {
+  const MeshFile f = LoadMeshFile("scenes/assets/landing_pad.obj", MeshAxes::kYUp);
+  ASSERT_EQ(f.materials.size() >= 3, true);
+  // The base slab: a regular octagon of circumradius 2 m (area 2 sqrt(2) r^2) 0.1 m thick. Its signed
+  // volume is positive only if every face winds outward after the axis conversion.
+  for (const auto& part : f.parts) {
+    if (f.materials[part.material].name != "pad") continue;
+    const engine::TriangleMesh& m = f.meshes[part.mesh];
+    double v = 0.0;
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+      v += m.positions[m.indices[t]].cast<double>().dot(
+               m.positions[m.indices[t + 1]].cast<double>().cross(m.positions[m.indices[t + 2]].cast<double>())) /
+           6.0;
+    }
+    EXPECT_NEAR(v, 2.0 * std::sqrt(2.0) * 4.0 * 0.1, 1e-4);
+    return;
+  }
+  FAIL() << "no part with material 'pad'";
+}
+
+}  // namespace
+}  // namespace airis::scenes
