@@ -3,6 +3,7 @@
 #include "engine/core/config.h"
 #include "engine/environment/atmosphere.h"
 #include "sensors/sensor_checks.h"
+#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -30,7 +31,7 @@ Barometer::Barometer(std::string name, const BarometerConfig& config, engine::Ra
       drift_step_(GaussMarkovStep::Make(config.drift_sigma, config.drift_correlation_s,
                                         1.0 / config.rate_hz)) {
   // The drift starts in its stationary distribution, so its statistics do not depend on the run's length.
-  drift_ = stream_.Gaussian(config.drift_sigma);
+  drift_ = config.drift_sigma * StandardNormal(stream_);
 }
 
 std::span<const std::string> Barometer::columns() const { return kColumns; }
@@ -48,8 +49,8 @@ void Barometer::Sample(const engine::SensorContext& context) {
   const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
   const engine::AtmosphereSample air = context.environment->CalcAir(p_WS);
 
-  drift_ = drift_step_.Next(drift_, stream_.Gaussian());
-  const double white_pa = stream_.Gaussian(config_.pressure_noise_pa);
+  drift_ = drift_step_.Next(drift_, StandardNormal(stream_));
+  const double white_pa = config_.pressure_noise_pa * StandardNormal(stream_);
 
   latest_.time_ns = context.now_ns;
   latest_.pressure_pa = air.pressure_pa * (1.0 + drift_) + white_pa;

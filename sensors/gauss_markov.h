@@ -4,6 +4,7 @@
 
 #include "engine/core/frames.h"
 #include "engine/core/random.h"
+#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -32,20 +33,20 @@ struct GaussMarkovStep {
   /// x_{k+1} from x_k and a standard normal draw.
   double Next(double x, double unit_normal) const { return a * x + b * unit_normal; }
 
-  /// Three independent axes advanced from `stream` (x, y, z draws in that order).
+  /// Three independent axes advanced from `stream` (StandardNormal draws, x, y, z in that order).
   engine::Vec3 Next(const engine::Vec3& x, engine::RandomStream& stream) const {
-    const double nx = stream.Gaussian();
-    const double ny = stream.Gaussian();
-    const double nz = stream.Gaussian();
+    const double nx = StandardNormal(stream);
+    const double ny = StandardNormal(stream);
+    const double nz = StandardNormal(stream);
     return engine::Vec3(a * x.x() + b * nx, a * x.y() + b * ny, a * x.z() + b * nz);
   }
 };
 
-/// Three standard normal draws (x, y, z in that order), times `sigma`.
+/// Three standard normal draws (StandardNormal; x, y, z in that order), times `sigma`.
 inline engine::Vec3 GaussianVec3(engine::RandomStream& stream, double sigma) {
-  const double x = stream.Gaussian();
-  const double y = stream.Gaussian();
-  const double z = stream.Gaussian();
+  const double x = StandardNormal(stream);
+  const double y = StandardNormal(stream);
+  const double z = StandardNormal(stream);
   return engine::Vec3(sigma * x, sigma * y, sigma * z);
 }
 

@@ -6,6 +6,7 @@
 #include "engine/core/config.h"
 #include "sensors/gauss_markov.h"
 #include "sensors/sensor_checks.h"
+#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -148,8 +149,8 @@ void Gps::Sample(const engine::SensorContext& context) {
   const double sigma_h = eph / std::sqrt(2.0);
   const Vec3 error_W = Vec3(sigma_h * unit_error.x(), sigma_h * unit_error.y(), epv * unit_error.z());
   const Vec3 p_W = config_.position_noise ? Vec3(past.p_W + error_W) : past.p_W;
-  const double vn = past.v_W.x() + stream_.Gaussian(config_.velocity_noise_m_s);
-  const double ve = past.v_W.y() + stream_.Gaussian(config_.velocity_noise_m_s);
+  const double vn = past.v_W.x() + config_.velocity_noise_m_s * StandardNormal(stream_);
+  const double ve = past.v_W.y() + config_.velocity_noise_m_s * StandardNormal(stream_);
 
   latest_.time_ns = now;
   latest_.position_time_ns = position_time;

@@ -15,6 +15,7 @@ void MagnetometerConfig::Validate() const {
   engine::RequirePositive("rate_hz", rate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("noise_gauss", noise_gauss);
+  engine::RequireNonNegative("field_update_distance_m", field_update_distance_m);
   for (int i = 0; i < 3; ++i) {
     engine::RequireFinite("scale_factor[" + std::to_string(i) + "]", scale_factor[i]);
     engine::RequireFinite("hard_iron_gauss[" + std::to_string(i) + "]", hard_iron_gauss[i]);
@@ -57,8 +58,13 @@ void Magnetometer::Sample(const engine::SensorContext& context) {
   AIRIS_DEMAND(context.state != nullptr && context.environment != nullptr);
   const engine::RigidBodyState& s = *context.state;
   const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
-  const engine::Vec3 field_W_nT = context.environment->CalcMagneticField_nT(p_WS);
-  const engine::Vec3 field_S_nT = R_SB_ * (s.q_WB.conjugate() * field_W_nT);
+  const double d = config_.field_update_distance_m;
+  if (!has_field_ || (p_WS - field_p_W_).squaredNorm() > d * d || d == 0.0) {
+    field_W_nT_ = context.environment->CalcMagneticField_nT(p_WS);
+    field_p_W_ = p_WS;
+    has_field_ = true;
+  }
+  const engine::Vec3 field_S_nT = R_SB_ * (s.q_WB.conjugate() * field_W_nT_);
 
   latest_.time_ns = context.now_ns;
   latest_.field_S_gauss =

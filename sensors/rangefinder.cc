@@ -4,6 +4,7 @@
 
 #include "engine/core/config.h"
 #include "sensors/sensor_checks.h"
+#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -56,7 +57,7 @@ void Rangefinder::Sample(const engine::SensorContext& context) {
   if (context.rays != nullptr) context.rays->Cast({&ray, 1}, {&hit, 1});
 
   // One draw per sample whether or not there is a return, so the stream does not depend on the scene.
-  const double noise_m = stream_.Gaussian(config_.noise_m);
+  const double noise_m = config_.noise_m * StandardNormal(stream_);
   latest_.time_ns = context.now_ns;
   latest_.hit = hit.hit();
   if (latest_.hit) {

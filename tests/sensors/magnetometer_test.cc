@@ -63,6 +63,26 @@ TEST(MagnetometerTest, CalibrationErrorsApplyInOrder) {
   EXPECT_NEAR((mag.latest().field_S_gauss - expected).norm(), 0.0, 1e-15);
 }
 
+TEST(MagnetometerTest, FieldIsReevaluatedAfterMovingTheConfiguredDistance) {
+  // GIVEN the dipole (whose field changes measurably over kilometres) and a 10 m update distance
+  const engine::Environment env = testing::MakeEnvironment(engine::MagneticModelKind::kDipole);
+  Magnetometer mag("mag", NoiselessConfig(), engine::RandomStream(1));
+  Truth truth;
+  mag.Update(truth.At(0, env));
+  const Vec3 at_origin = mag.latest().field_S_gauss;
+  // WHEN it moves 5 km in one step THEN the field is the one at the new place
+  truth.state.p_W = Vec3(5000, 0, 0);
+  mag.Update(truth.At(20'000'000, env));
+  const Vec3 there = 1e-5 * env.CalcMagneticField_nT(truth.state.p_W);
+  EXPECT_NEAR((mag.latest().field_S_gauss - there).norm(), 0.0, 1e-15);
+  EXPECT_GT((there - at_origin).norm(), 1e-4);  // the move is visible: the test can tell the two apart
+  // AND a further 5 m move keeps it (cached), differing from the exact field by far less than the noise
+  truth.state.p_W = Vec3(5005, 0, 0);
+  mag.Update(truth.At(40'000'000, env));
+  EXPECT_EQ(mag.latest().field_S_gauss, there);
+  EXPECT_LT((mag.latest().field_S_gauss - 1e-5 * env.CalcMagneticField_nT(truth.state.p_W)).norm(), 1e-5);
+}
+
 TEST(MagnetometerTest, WhiteNoiseHasConfiguredSigma) {
   const engine::Environment env = testing::MakeEnvironment();
   Magnetometer mag("mag", {}, engine::RandomStream(4));
