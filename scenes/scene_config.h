@@ -176,7 +176,7 @@ struct ObjectConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("name", name, "instance name (copies get _<i> or _<row>_<i>); default from mesh or primitive");
+    v.Field("name", name, "instance name (copies get suffixes _I or _ROW_I); default: mesh file stem or primitive");
     v.Field("mesh", mesh, "mesh file (OBJ, glTF/GLB, FBX, PLY, STL, DAE), relative to the scene file");
     v.Field("primitive", primitive, "unit primitive instead of a mesh (box 1x1x1, diameter-1 sphere, ...)");
     v.Field("mesh_axes", mesh_axes, "axes the mesh file is authored in: y_up (glTF), z_up or ned");
@@ -244,7 +244,7 @@ struct CityConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("name", name, "random stream name (generators/<name>); default <file>/city<k>");
+    v.Field("name", name, "random stream name (stream generators/NAME); default FILESTEM/cityK");
     v.Field("area", area, "area covered by the street grid (rectangle only)");
     v.Field("block_size_m", block_size_m, "block size between streets [north, east] (m)");
     v.Field("street_width_m", street_width_m, "street width kerb to kerb (m)");
@@ -353,7 +353,7 @@ struct ForestConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("name", name, "random stream name (generators/<name>); default <file>/forest<k>");
+    v.Field("name", name, "random stream name (stream generators/NAME); default FILESTEM/forestK");
     v.Field("area", area, "rectangle or polygon covered");
     v.Field("density_per_ha", density_per_ha, "trees per hectare (capped by min_spacing_m)");
     v.Field("min_spacing_m", min_spacing_m, "minimum distance between trunks (m), Poisson-disc");

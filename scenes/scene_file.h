@@ -28,8 +28,8 @@ struct VehicleEntryConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("name", name, "unique vehicle name (topics, logs, random streams vehicles/<name>/...)");
-    v.Field("preset", preset, "airframe preset name (vehicles/presets/<preset>.yaml)");
+    v.Field("name", name, "unique vehicle name (logs, random streams vehicles/NAME/...)");
+    v.Field("preset", preset, "airframe preset name (vehicles/presets/PRESET.yaml)");
     v.Field("start", start, "start pose");
     v.Field("overrides", overrides, "keys of the preset to change, same layout as the preset file");
     v.Field("sensors", sensors, "sensors and cameras with their mounts");

@@ -1,0 +1,97 @@
+// Loading and generating scenes of about 10,000 objects (DESIGN.md principle 5: "well under a second").
+// Counters: objects placed and the static scene's heap (EstimateMemoryBytes).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "engine/core/random.h"
+#include "scenes/generators.h"
+#include "scenes/scene.h"
+#include "scenes/scene_stats.h"
+
+namespace airis::scenes {
+namespace {
+
+// 36 ha at 280 trees/ha: about 10,000 trees.
+ForestConfig TenThousandTrees() {
+  ForestConfig c;
+  c.name = "bench";
+  c.area.size_m = Eigen::Vector2d(600, 600);
+  c.density_per_ha = 280;
+  c.min_spacing_m = 3.0;
+  return c;
+}
+
+// A 1.7 km x 1.7 km grid: about 10,000 buildings, sidewalks, lamps and cars.
+CityConfig TenThousandObjectCity() {
+  CityConfig c;
+  c.name = "bench";
+  c.area.size_m = Eigen::Vector2d(1700, 1700);
+  c.lot_size_m = Eigen::Vector2d(24, 24);
+  return c;
+}
+
+void ReportScene(benchmark::State& state, const engine::StaticScene& s) {
+  state.counters["objects"] = static_cast<double>(s.objects.size());
+  state.counters["memory_MiB"] = static_cast<double>(EstimateMemoryBytes(s)) / (1024.0 * 1024.0);
+  state.counters["models"] = static_cast<double>(s.models.size());
+  state.counters["meshes"] = static_cast<double>(s.meshes.size());
+}
+
+void BM_GenerateForest10k(benchmark::State& state) {
+  const ForestConfig config = TenThousandTrees();
+  auto run = [&] {
+    SceneBuilder b;
+    engine::RandomStream stream(1);
+    GenerateForest(config, {5, 6}, config.name, stream, b);
+    return b.Finish();
+  };
+  const engine::StaticScene warm = run();  // warm-up, and the numbers for the counters
+  for (auto _ : state) {
+    engine::StaticScene s = run();
+    benchmark::DoNotOptimize(s.objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(warm.objects.size()));
+  ReportScene(state, warm);
+}
+BENCHMARK(BM_GenerateForest10k)->Unit(benchmark::kMillisecond);
+
+void BM_GenerateCity10k(benchmark::State& state) {
+  const CityConfig config = TenThousandObjectCity();
+  auto run = [&] {
+    SceneBuilder b;
+    engine::RandomStream stream(1);
+    GenerateCity(config, {4, 2, 3, 10, 7, std::nullopt}, config.name, stream, b);
+    return b.Finish();
+  };
+  const engine::StaticScene warm = run();
+  for (auto _ : state) {
+    engine::StaticScene s = run();
+    benchmark::DoNotOptimize(s.objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(warm.objects.size()));
+  ReportScene(state, warm);
+}
+BENCHMARK(BM_GenerateCity10k)->Unit(benchmark::kMillisecond);
+
+// The whole path: YAML text -> parse -> validate -> generate -> whole-scene checks, with a vehicle whose
+// start is tested against every object.
+void BM_LoadForestScene10k(benchmark::State& state) {
+  const std::string text =
+      "scene: {name: bench, seed: 1}\n"
+      "generators:\n"
+      "  - forest: {area: {size_m: [600, 600]}, density_per_ha: 280, clearings: [{center_m: [0, 0], radius_m: 10}]}\n"
+      "vehicles:\n"
+      "  - {name: d, preset: quadrotor, start: {position_m: [0, 0, -0.2]}}\n";
+  const Scene warm = LoadSceneFromString(text, "bench.yaml");
+  for (auto _ : state) {
+    Scene s = LoadSceneFromString(text, "bench.yaml");
+    benchmark::DoNotOptimize(s.static_scene.objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(warm.static_scene.objects.size()));
+  ReportScene(state, warm.static_scene);
+}
+BENCHMARK(BM_LoadForestScene10k)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace airis::scenes
