@@ -8,8 +8,9 @@ namespace airis::sensors {
 
 namespace {
 
-// Running integral theta_k = T0 * sum_{i<k} rate_i, accumulated in long double so that a large constant rate
-// (1 g on an accelerometer) does not swamp the small second differences of long records.
+// Running integral theta_k = T0 * sum_{i<k} rate_i, accumulated in long double so that a large
+// constant rate (1 g on an accelerometer) does not swamp the small second differences of long
+// records.
 std::vector<long double> Integrate(std::span<const double> rate, double sample_period_s) {
   std::vector<long double> theta(rate.size() + 1);
   theta[0] = 0.0L;
@@ -45,15 +46,16 @@ AllanPoint CalcOverlappingAllanDeviation(std::span<const double> rate, double sa
   return AllanAt(Integrate(rate, sample_period_s), sample_period_s, m);
 }
 
-std::vector<AllanPoint> CalcAllanDeviationCurve(std::span<const double> rate, double sample_period_s,
-                                                int points_per_decade) {
+std::vector<AllanPoint> CalcAllanDeviationCurve(std::span<const double> rate,
+                                                double sample_period_s, int points_per_decade) {
   AIRIS_DEMAND(points_per_decade > 0);
   const std::vector<long double> theta = Integrate(rate, sample_period_s);
   std::vector<AllanPoint> curve;
   const std::size_t max_m = (theta.size() - 1) / 2;
   std::size_t last_m = 0;
   for (int i = 0;; ++i) {
-    const auto m = static_cast<std::size_t>(std::llround(std::pow(10.0, double(i) / points_per_decade)));
+    const auto m =
+        static_cast<std::size_t>(std::llround(std::pow(10.0, double(i) / points_per_decade)));
     if (m > max_m) break;
     if (m == last_m) continue;
     last_m = m;

@@ -30,7 +30,8 @@ Barometer::Barometer(std::string name, const BarometerConfig& config, engine::Ra
       stream_(stream),
       drift_step_(GaussMarkovStep::Make(config.drift_sigma, config.drift_correlation_s,
                                         1.0 / config.rate_hz)) {
-  // The drift starts in its stationary distribution, so its statistics do not depend on the run's length.
+  // The drift starts in its stationary distribution, so its statistics do not depend on the run's
+  // length.
   drift_ = config.drift_sigma * StandardNormal(stream_);
 }
 

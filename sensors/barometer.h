@@ -14,9 +14,9 @@ namespace airis::sensors {
 struct BarometerConfig {
   double rate_hz = 50.0;  ///< samples per simulated second
   engine::MountConfig mount;
-  double pressure_noise_pa = 2.7;      ///< white noise on the pressure, 1 sigma
-  double drift_sigma = 0.001825;       ///< stationary 1 sigma of the relative pressure-factor drift b
-  double drift_correlation_s = 3600.0; ///< correlation time of b (paper sec. 3.4.1: 1 hour)
+  double pressure_noise_pa = 2.7;  ///< white noise on the pressure, 1 sigma
+  double drift_sigma = 0.001825;   ///< stationary 1 sigma of the relative pressure-factor drift b
+  double drift_correlation_s = 3600.0;  ///< correlation time of b (paper sec. 3.4.1: 1 hour)
 
   template <class V>
   void Visit(V& v) {
@@ -38,17 +38,20 @@ struct BarometerSample {
   engine::TimeNs time_ns = -1;  ///< simulated time of the sample
   double pressure_pa = 0.0;     ///< measured static pressure
   double temperature_k = 0.0;   ///< air temperature at the sensor (standard atmosphere)
-  double altitude_m = 0.0;      ///< pressure altitude: the standard atmosphere inverted at pressure_pa
+  double altitude_m = 0.0;  ///< pressure altitude: the standard atmosphere inverted at pressure_pa
 };
 
-/// Barometer (paper sec. 3.4.1): the U.S. Standard Atmosphere 1976 pressure p at the sensor's altitude,
+/// Barometer (paper sec. 3.4.1): the U.S. Standard Atmosphere 1976 pressure p at the sensor's
+/// altitude,
 ///   p_out = p (1 + b_k) + w_k,
-/// b a first-order Gauss-Markov drift with exact discretisation (stationary sigma drift_sigma, correlation
-/// time drift_correlation_s; the reference implementation's (1 - a) scaling is not copied), w white noise.
-/// The altitude reported is the standard atmosphere inverted at p_out, as a barometric altimeter computes it.
+/// b a first-order Gauss-Markov drift with exact discretisation (stationary sigma drift_sigma,
+/// correlation time drift_correlation_s; the reference implementation's (1 - a) scaling is not
+/// copied), w white noise. The altitude reported is the standard atmosphere inverted at p_out, as a
+/// barometric altimeter computes it.
 class Barometer final : public engine::Sensor {
  public:
-  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream.
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random
+  /// stream.
   Barometer(std::string name, const BarometerConfig& config, engine::RandomStream stream);
 
   const BarometerSample& latest() const { return latest_; }

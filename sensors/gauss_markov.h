@@ -12,16 +12,16 @@ namespace airis::sensors {
 ///   dx = -x / tau dt + sigma sqrt(2 / tau) dW,
 /// whose exact discretisation is
 ///   x_{k+1} = a x_k + b n_k,   a = exp(-dt / tau),   b = sigma sqrt(1 - a^2),   n_k ~ N(0, 1),
-/// so the stationary standard deviation is exactly sigma and the autocorrelation at lag T is exp(-T / tau),
-/// for any step. (Gelb, Applied Optimal Estimation, 1974, sec. 3.8; the paper's reference implementation
-/// scales the innovation by (1 - a) instead, which leaves a stationary sigma far below the configured one:
-/// reference/parameters.md.)
+/// so the stationary standard deviation is exactly sigma and the autocorrelation at lag T is exp(-T
+/// / tau), for any step. (Gelb, Applied Optimal Estimation, 1974, sec. 3.8; the paper's reference
+/// implementation scales the innovation by (1 - a) instead, which leaves a stationary sigma far
+/// below the configured one: reference/parameters.md.)
 struct GaussMarkovStep {
   double a = 1.0;  ///< decay per step, exp(-dt / tau)
   double b = 0.0;  ///< innovation standard deviation per step, sigma sqrt(1 - a^2)
 
-  /// Coefficients for stationary sigma `sigma` (> = 0, any unit), correlation time `correlation_s` (> 0) and
-  /// step `dt_s` (>= 0). Uses expm1 so that 1 - a^2 keeps its precision when dt << tau.
+  /// Coefficients for stationary sigma `sigma` (> = 0, any unit), correlation time `correlation_s`
+  /// (> 0) and step `dt_s` (>= 0). Uses expm1 so that 1 - a^2 keeps its precision when dt << tau.
   static GaussMarkovStep Make(double sigma, double correlation_s, double dt_s) {
     GaussMarkovStep s;
     const double x = -dt_s / correlation_s;

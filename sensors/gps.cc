@@ -14,14 +14,15 @@ using engine::TimeNs;
 using engine::Vec3;
 
 namespace {
-const std::string kColumns[] = {"fix_type",           "latitude_deg",      "longitude_deg",
-                                "altitude_m",         "velocity_north_m_s", "velocity_east_m_s",
-                                "eph_m",              "epv_m",             "position_time_s"};
+const std::string kColumns[] = {
+    "fix_type",          "latitude_deg", "longitude_deg", "altitude_m",     "velocity_north_m_s",
+    "velocity_east_m_s", "eph_m",        "epv_m",         "position_time_s"};
 
 // First-order decay from `initial` to `final` with time constant `tau_s`, started at `start_ns`.
 double Decay(double initial, double final_value, double tau_s, TimeNs start_ns, TimeNs t_ns) {
   if (t_ns <= start_ns) return initial;
-  return final_value + (initial - final_value) * std::exp(-engine::ToSeconds(t_ns - start_ns) / tau_s);
+  return final_value +
+         (initial - final_value) * std::exp(-engine::ToSeconds(t_ns - start_ns) / tau_s);
 }
 }  // namespace
 
@@ -39,8 +40,8 @@ void GpsConfig::Validate() const {
   engine::RequirePositive("fix_3d_max_eph_m", fix_3d_max_eph_m);
   engine::RequirePositive("fix_2d_max_eph_m", fix_2d_max_eph_m);
   engine::Require(fix_2d_max_eph_m >= fix_3d_max_eph_m, "fix_2d_max_eph_m",
-                  "must be >= fix_3d_max_eph_m (got " + engine::FormatNumber(fix_2d_max_eph_m) + " < " +
-                      engine::FormatNumber(fix_3d_max_eph_m) + ")");
+                  "must be >= fix_3d_max_eph_m (got " + engine::FormatNumber(fix_2d_max_eph_m) +
+                      " < " + engine::FormatNumber(fix_3d_max_eph_m) + ")");
   engine::RequirePositive("position_error_correlation_s", position_error_correlation_s);
   engine::RequireInRange("position_white_fraction", position_white_fraction, 0.0, 1.0);
   engine::RequireNonNegative("velocity_noise_m_s", velocity_noise_m_s);
@@ -57,19 +58,23 @@ Gps::Gps(std::string name, const GpsConfig& config, engine::RandomStream stream)
       stream_(stream),
       latency_ns_(engine::SecondsToNs(config.latency_s, "latency_s")),
       startup_ns_(engine::SecondsToNs(config.startup_delay_s, "startup_delay_s")) {
-  // Fixes are at least half a period apart (the schedule fires at the first tick at or after each due time
-  // and the rate never exceeds the tick rate), so this many entries always span the latency.
-  const auto capacity = static_cast<std::size_t>(2.0 * std::ceil(config.latency_s * config.rate_hz)) + 4;
+  // Fixes are at least half a period apart (the schedule fires at the first tick at or after each
+  // due time and the rate never exceeds the tick rate), so this many entries always span the
+  // latency.
+  const auto capacity =
+      static_cast<std::size_t>(2.0 * std::ceil(config.latency_s * config.rate_hz)) + 4;
   history_.resize(capacity);
   slow_error_ = GaussianVec3(stream_, 1.0);  // stationary start
 }
 
 double Gps::CalcEph_m(TimeNs t_ns) const {
-  return Decay(config_.eph_initial_m, config_.eph_final_m, config_.eph_time_constant_s, startup_ns_, t_ns);
+  return Decay(config_.eph_initial_m, config_.eph_final_m, config_.eph_time_constant_s, startup_ns_,
+               t_ns);
 }
 
 double Gps::CalcEpv_m(TimeNs t_ns) const {
-  return Decay(config_.epv_initial_m, config_.epv_final_m, config_.epv_time_constant_s, startup_ns_, t_ns);
+  return Decay(config_.epv_initial_m, config_.epv_final_m, config_.epv_time_constant_s, startup_ns_,
+               t_ns);
 }
 
 std::span<const std::string> Gps::columns() const { return kColumns; }
@@ -95,7 +100,8 @@ Gps::Truth Gps::Lookup(TimeNs t_ns) const {
   if (t_ns <= at(0).t_ns) return at(0);
   const Truth& newest = at(history_size_ - 1);
   if (t_ns >= newest.t_ns) return newest;
-  // Search from the newest entry: the latency spans only a few fixes. Terminates because at(0) < t_ns.
+  // Search from the newest entry: the latency spans only a few fixes. Terminates because at(0) <
+  // t_ns.
   std::size_t i = history_size_ - 2;
   while (at(i).t_ns > t_ns) --i;
   const Truth& a = at(i);
@@ -109,8 +115,8 @@ Gps::Truth Gps::Lookup(TimeNs t_ns) const {
   const double s3 = s2 * s;
   Truth out;
   out.t_ns = t_ns;
-  out.p_W = (2 * s3 - 3 * s2 + 1) * a.p_W + (s3 - 2 * s2 + s) * h * a.v_W + (-2 * s3 + 3 * s2) * b.p_W +
-            (s3 - s2) * h * b.v_W;
+  out.p_W = (2 * s3 - 3 * s2 + 1) * a.p_W + (s3 - 2 * s2 + s) * h * a.v_W +
+            (-2 * s3 + 3 * s2) * b.p_W + (s3 - s2) * h * b.v_W;
   out.v_W = (1.0 - s) * a.v_W + s * b.v_W;
   return out;
 }
@@ -135,19 +141,20 @@ void Gps::Sample(const engine::SensorContext& context) {
   const TimeNs position_time = std::max<TimeNs>(0, now - latency_ns_);
   const Truth past = Lookup(position_time);
 
-  // Position error: unit-variance slow Gauss-Markov part advanced over the time since the last fix, plus
-  // white, scaled by the current accuracy estimates. Draw order is fixed for reproducibility.
+  // Position error: unit-variance slow Gauss-Markov part advanced over the time since the last fix,
+  // plus white, scaled by the current accuracy estimates. Draw order is fixed for reproducibility.
   const double dt_s = previous_fix_ns_ < 0 ? 0.0 : engine::ToSeconds(now - previous_fix_ns_);
   previous_fix_ns_ = now;
-  slow_error_ = GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, dt_s).Next(slow_error_,
-                                                                                           stream_);
+  slow_error_ = GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, dt_s)
+                    .Next(slow_error_, stream_);
   const Vec3 white = GaussianVec3(stream_, 1.0);
   const double w = config_.position_white_fraction;
   const Vec3 unit_error = std::sqrt(1.0 - w) * slow_error_ + std::sqrt(w) * white;
   const double eph = CalcEph_m(now);
   const double epv = CalcEpv_m(now);
   const double sigma_h = eph / std::sqrt(2.0);
-  const Vec3 error_W = Vec3(sigma_h * unit_error.x(), sigma_h * unit_error.y(), epv * unit_error.z());
+  const Vec3 error_W =
+      Vec3(sigma_h * unit_error.x(), sigma_h * unit_error.y(), epv * unit_error.z());
   const Vec3 p_W = config_.position_noise ? Vec3(past.p_W + error_W) : past.p_W;
   const double vn = past.v_W.x() + config_.velocity_noise_m_s * StandardNormal(stream_);
   const double ve = past.v_W.y() + config_.velocity_noise_m_s * StandardNormal(stream_);

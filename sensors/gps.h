@@ -10,25 +10,26 @@
 
 namespace airis::sensors {
 
-/// Description of a GNSS receiver. Defaults: u-blox M8 class with the paper's latency and the reference
-/// implementation's accuracy estimates (reference/parameters.md).
+/// Description of a GNSS receiver. Defaults: u-blox M8 class with the paper's latency and the
+/// reference implementation's accuracy estimates (reference/parameters.md).
 struct GpsConfig {
-  double rate_hz = 10.0;  ///< fixes per simulated second
+  double rate_hz = 10.0;      ///< fixes per simulated second
   engine::MountConfig mount;  ///< antenna position on the vehicle (its rotation is not used)
-  double latency_s = 0.2;          ///< a fix delivered at t describes the antenna at t - latency (paper)
-  double startup_delay_s = 1.0;    ///< no fix before this simulated time
-  double eph_initial_m = 100.0;    ///< horizontal accuracy estimate at startup
-  double eph_final_m = 0.1;        ///< horizontal accuracy estimate it settles to
+  double latency_s = 0.2;     ///< a fix delivered at t describes the antenna at t - latency (paper)
+  double startup_delay_s = 1.0;  ///< no fix before this simulated time
+  double eph_initial_m = 100.0;  ///< horizontal accuracy estimate at startup
+  double eph_final_m = 0.1;      ///< horizontal accuracy estimate it settles to
   double eph_time_constant_s = 0.9;
-  double epv_initial_m = 100.0;    ///< vertical accuracy estimate at startup
-  double epv_final_m = 0.1;        ///< vertical accuracy estimate it settles to
+  double epv_initial_m = 100.0;  ///< vertical accuracy estimate at startup
+  double epv_final_m = 0.1;      ///< vertical accuracy estimate it settles to
   double epv_time_constant_s = 0.9;
-  double fix_3d_max_eph_m = 3.0;   ///< 3D fix when eph <= this
-  double fix_2d_max_eph_m = 4.0;   ///< 2D fix when eph <= this (and not 3D); no fix above
+  double fix_3d_max_eph_m = 3.0;  ///< 3D fix when eph <= this
+  double fix_2d_max_eph_m = 4.0;  ///< 2D fix when eph <= this (and not 3D); no fix above
   bool position_noise = true;  ///< false: report the delayed truth exactly (eph/epv still reported)
-  double position_error_correlation_s = 60.0;  ///< correlation time of the slow part of the position error
-  double position_white_fraction = 0.2;        ///< fraction of the position error variance that is white
-  double velocity_noise_m_s = 0.05;            ///< white noise on each horizontal velocity component, 1 sigma
+  double position_error_correlation_s =
+      60.0;  ///< correlation time of the slow part of the position error
+  double position_white_fraction = 0.2;  ///< fraction of the position error variance that is white
+  double velocity_noise_m_s = 0.05;  ///< white noise on each horizontal velocity component, 1 sigma
 
   template <class V>
   void Visit(V& v) {
@@ -50,7 +51,8 @@ struct GpsConfig {
             "correlation time of the slowly varying position error (s)");
     v.Field("position_white_fraction", position_white_fraction,
             "fraction of the position error variance that is white, 0..1");
-    v.Field("velocity_noise_m_s", velocity_noise_m_s, "white noise on north and east velocity (m/s)");
+    v.Field("velocity_noise_m_s", velocity_noise_m_s,
+            "white noise on north and east velocity (m/s)");
   }
   /// Throws InvalidField naming the field.
   void Validate() const;
@@ -61,38 +63,42 @@ struct GpsConfig {
 /// Fix quality, numbered as MAVLink's GPS_FIX_TYPE.
 enum class GpsFixType { kNoFix = 1, k2D = 2, k3D = 3 };
 
-/// One GPS fix. Vertical velocity is not reported (paper sec. 3.4.4: receivers do not measure it reliably).
+/// One GPS fix. Vertical velocity is not reported (paper sec. 3.4.4: receivers do not measure it
+/// reliably).
 struct GpsSample {
-  engine::TimeNs time_ns = -1;           ///< simulated time the fix is delivered
-  engine::TimeNs position_time_ns = -1;  ///< simulated time the fix describes: time_ns - latency (>= 0)
+  engine::TimeNs time_ns = -1;  ///< simulated time the fix is delivered
+  engine::TimeNs position_time_ns =
+      -1;  ///< simulated time the fix describes: time_ns - latency (>= 0)
   GpsFixType fix_type = GpsFixType::kNoFix;
-  double latitude_rad = 0.0;   ///< WGS84 geodetic latitude
-  double longitude_rad = 0.0;  ///< WGS84 longitude, east positive
-  double altitude_m = 0.0;     ///< height above the WGS84 ellipsoid
+  double latitude_rad = 0.0;                ///< WGS84 geodetic latitude
+  double longitude_rad = 0.0;               ///< WGS84 longitude, east positive
+  double altitude_m = 0.0;                  ///< height above the WGS84 ellipsoid
   engine::Vec3 p_W = engine::Vec3::Zero();  ///< the same measured position in world NED (m)
   double velocity_north_m_s = 0.0;
   double velocity_east_m_s = 0.0;
   double ground_speed_m_s = 0.0;  ///< horizontal speed
-  double course_rad = 0.0;        ///< direction of the horizontal velocity, atan2(east, north), (-pi, pi]
-  double eph_m = 0.0;             ///< horizontal accuracy estimate (1 sigma of the horizontal error length)
-  double epv_m = 0.0;             ///< vertical accuracy estimate (1 sigma)
+  double course_rad = 0.0;  ///< direction of the horizontal velocity, atan2(east, north), (-pi, pi]
+  double eph_m = 0.0;  ///< horizontal accuracy estimate (1 sigma of the horizontal error length)
+  double epv_m = 0.0;  ///< vertical accuracy estimate (1 sigma)
 };
 
-/// GNSS receiver (paper sec. 3.4.4). At each fix time t it reports the antenna's state at t - latency, taken
-/// from a ring buffer of the truth seen at earlier fixes (cubic Hermite interpolation in position from the
-/// bracketing fixes' positions and velocities; exact when t - latency is itself a fix time, as with the
-/// defaults 10 Hz and 0.2 s).
+/// GNSS receiver (paper sec. 3.4.4). At each fix time t it reports the antenna's state at t -
+/// latency, taken from a ring buffer of the truth seen at earlier fixes (cubic Hermite
+/// interpolation in position from the bracketing fixes' positions and velocities; exact when t -
+/// latency is itself a fix time, as with the defaults 10 Hz and 0.2 s).
 ///
 /// Accuracy estimates decay from their initial to final values as a first-order filter started at
 /// startup_delay_s: eph(t) = eph_f + (eph_0 - eph_f) exp(-(t - t_start) / T). The position error is
-/// consistent with them: per horizontal axis sigma = eph / sqrt(2) (so eph is the RMS horizontal error),
-/// vertical sigma = epv, each made of a unit-variance Gauss-Markov part (correlation
-/// position_error_correlation_s) and a white part, mixed as sqrt(1 - w) g + sqrt(w) n. Horizontal velocity
-/// gets white noise. Fix type: 3D at eph <= fix_3d_max_eph_m, 2D at eph <= fix_2d_max_eph_m, otherwise none;
-/// none before startup_delay_s. Latitude, longitude and altitude come from the scene's geodetic frame.
+/// consistent with them: per horizontal axis sigma = eph / sqrt(2) (so eph is the RMS horizontal
+/// error), vertical sigma = epv, each made of a unit-variance Gauss-Markov part (correlation
+/// position_error_correlation_s) and a white part, mixed as sqrt(1 - w) g + sqrt(w) n. Horizontal
+/// velocity gets white noise. Fix type: 3D at eph <= fix_3d_max_eph_m, 2D at eph <=
+/// fix_2d_max_eph_m, otherwise none; none before startup_delay_s. Latitude, longitude and altitude
+/// come from the scene's geodetic frame.
 class Gps final : public engine::Sensor {
  public:
-  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream.
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random
+  /// stream.
   Gps(std::string name, const GpsConfig& config, engine::RandomStream stream);
 
   const GpsSample& latest() const { return latest_; }
@@ -121,10 +127,11 @@ class Gps final : public engine::Sensor {
   engine::RandomStream stream_;
   engine::TimeNs latency_ns_;
   engine::TimeNs startup_ns_;
-  std::vector<Truth> history_;  // ring buffer, capacity fixed at construction
+  std::vector<Truth> history_;    // ring buffer, capacity fixed at construction
   std::size_t history_head_ = 0;  // index of the oldest entry
   std::size_t history_size_ = 0;
-  engine::Vec3 slow_error_ = engine::Vec3::Zero();  // unit-variance Gauss-Markov state per axis (N, E, D)
+  engine::Vec3 slow_error_ =
+      engine::Vec3::Zero();              // unit-variance Gauss-Markov state per axis (N, E, D)
   engine::TimeNs previous_fix_ns_ = -1;  // time of the previous Sample, -1 before the first
   GpsSample latest_;
 };

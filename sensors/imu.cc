@@ -14,7 +14,7 @@ constexpr double kDegPerHourToRadPerSecond = 0.017453292519943295 / 3600.0;
 constexpr double kMicroG = 1e-6 * kStandardGravity_m_s2;
 constexpr double kMilliG = 1e-3 * kStandardGravity_m_s2;
 
-const std::string kColumns[] = {"gyro_x_rad_s",   "gyro_y_rad_s",   "gyro_z_rad_s",
+const std::string kColumns[] = {"gyro_x_rad_s", "gyro_y_rad_s", "gyro_z_rad_s",
                                 "accel_x_m_s2", "accel_y_m_s2", "accel_z_m_s2"};
 }  // namespace
 
@@ -53,12 +53,13 @@ Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
   // Bias instability B is the peak of the bias's Allan deviation: sigma_b = B / 0.617.
   const double gyro_bias_sigma =
       config.gyro_bias_instability_deg_h * kDegPerHourToRadPerSecond / kGaussMarkovAllanPeak;
-  const double accel_bias_sigma = config.accel_bias_instability_ug * kMicroG / kGaussMarkovAllanPeak;
+  const double accel_bias_sigma =
+      config.accel_bias_instability_ug * kMicroG / kGaussMarkovAllanPeak;
   gyro_bias_step_ = GaussMarkovStep::Make(gyro_bias_sigma, config.gyro_bias_correlation_s, dt_s);
   accel_bias_step_ = GaussMarkovStep::Make(accel_bias_sigma, config.accel_bias_correlation_s, dt_s);
 
-  // Power-on draws, in a fixed order: in-run biases from their stationary distribution, then turn-on biases,
-  // then scale factors.
+  // Power-on draws, in a fixed order: in-run biases from their stationary distribution, then
+  // turn-on biases, then scale factors.
   gyro_bias_ = GaussianVec3(stream_, gyro_bias_sigma);
   accel_bias_ = GaussianVec3(stream_, accel_bias_sigma);
   gyro_turn_on_bias_ = GaussianVec3(stream_, engine::DegToRad(config.gyro_turn_on_bias_deg_s));
@@ -89,7 +90,8 @@ void Imu::Sample(const engine::SensorContext& context) {
   const Vec3 w_S = R_SB_ * w_B;
   const Vec3 f_S = R_SB_ * f_B;
 
-  // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are reproducible.
+  // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
+  // reproducible.
   gyro_bias_ = gyro_bias_step_.Next(gyro_bias_, stream_);
   accel_bias_ = accel_bias_step_.Next(accel_bias_, stream_);
   const Vec3 gyro_white = GaussianVec3(stream_, gyro_white_sigma_rad_s_);

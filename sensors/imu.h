@@ -11,9 +11,9 @@
 
 namespace airis::sensors {
 
-/// Description of an inertial measurement unit (gyroscope + accelerometer). Noise figures are in the units a
-/// data sheet or an Allan-deviation plot uses and are converted once, when the Imu is built. Defaults: an
-/// MPU-6000-class MEMS IMU (reference/parameters.md).
+/// Description of an inertial measurement unit (gyroscope + accelerometer). Noise figures are in
+/// the units a data sheet or an Allan-deviation plot uses and are converted once, when the Imu is
+/// built. Defaults: an MPU-6000-class MEMS IMU (reference/parameters.md).
 struct ImuConfig {
   double rate_hz = 1000.0;  ///< samples per simulated second
   engine::MountConfig mount;
@@ -21,14 +21,14 @@ struct ImuConfig {
   double gyro_noise_density_deg_s_sqrt_hz = 0.005;  ///< angle random walk N (0.3 deg/sqrt(h))
   double gyro_bias_instability_deg_h = 4.6;         ///< flat region of the gyro's Allan deviation
   double gyro_bias_correlation_s = 500.0;           ///< correlation time of the in-run bias
-  double gyro_turn_on_bias_deg_s = 0.0;             ///< 1 sigma of the constant bias drawn at power-on
-  double gyro_scale_factor_ppm = 0.0;               ///< 1 sigma of the per-axis scale error drawn at power-on
+  double gyro_turn_on_bias_deg_s = 0.0;  ///< 1 sigma of the constant bias drawn at power-on
+  double gyro_scale_factor_ppm = 0.0;    ///< 1 sigma of the per-axis scale error drawn at power-on
 
   double accel_noise_density_ug_sqrt_hz = 240.0;  ///< velocity random walk (0.24 mg/sqrt(Hz))
-  double accel_bias_instability_ug = 36.0;        ///< flat region of the accelerometer's Allan deviation
-  double accel_bias_correlation_s = 800.0;        ///< correlation time of the in-run bias
-  double accel_turn_on_bias_mg = 0.0;             ///< 1 sigma of the constant bias drawn at power-on
-  double accel_scale_factor_ppm = 0.0;            ///< 1 sigma of the per-axis scale error drawn at power-on
+  double accel_bias_instability_ug = 36.0;  ///< flat region of the accelerometer's Allan deviation
+  double accel_bias_correlation_s = 800.0;  ///< correlation time of the in-run bias
+  double accel_turn_on_bias_mg = 0.0;       ///< 1 sigma of the constant bias drawn at power-on
+  double accel_scale_factor_ppm = 0.0;  ///< 1 sigma of the per-axis scale error drawn at power-on
 
   template <class V>
   void Visit(V& v) {
@@ -41,7 +41,8 @@ struct ImuConfig {
     v.Field("gyro_bias_correlation_s", gyro_bias_correlation_s, "gyro bias correlation time (s)");
     v.Field("gyro_turn_on_bias_deg_s", gyro_turn_on_bias_deg_s,
             "1 sigma of the gyro's constant turn-on bias (deg/s)");
-    v.Field("gyro_scale_factor_ppm", gyro_scale_factor_ppm, "1 sigma of the gyro scale error (ppm)");
+    v.Field("gyro_scale_factor_ppm", gyro_scale_factor_ppm,
+            "1 sigma of the gyro scale error (ppm)");
     v.Field("accel_noise_density_ug_sqrt_hz", accel_noise_density_ug_sqrt_hz,
             "accelerometer white noise density = velocity random walk (ug/sqrt(Hz))");
     v.Field("accel_bias_instability_ug", accel_bias_instability_ug,
@@ -62,27 +63,29 @@ struct ImuConfig {
 
 /// One IMU sample, in the sensor frame S (the mount's axes; FRD when the mount is not rotated).
 struct ImuSample {
-  engine::TimeNs time_ns = -1;                                ///< simulated time of the sample
+  engine::TimeNs time_ns = -1;                                   ///< simulated time of the sample
   engine::Vec3 angular_velocity_S_rad_s = engine::Vec3::Zero();  ///< gyroscope
-  engine::Vec3 specific_force_S_m_s2 = engine::Vec3::Zero();     ///< accelerometer: (0, 0, -g) level at rest
+  engine::Vec3 specific_force_S_m_s2 =
+      engine::Vec3::Zero();  ///< accelerometer: (0, 0, -g) level at rest
 };
 
 /// Gyroscope + accelerometer (paper sec. 3.4.2), each axis
 ///   output = (1 + s) * truth + b_on + b(t) + w,
-/// where w is white noise with per-sample sigma = N * sqrt(rate_hz) (a noise density N sampled at rate_hz;
-/// its Allan deviation is N / sqrt(tau)), b(t) a first-order Gauss-Markov bias with correlation time tau_c and
-/// stationary sigma B / 0.617 (so that the peak of its Allan deviation, the flat region read off a plot,
-/// equals the bias instability B), and b_on, s constants drawn at power-on.
+/// where w is white noise with per-sample sigma = N * sqrt(rate_hz) (a noise density N sampled at
+/// rate_hz; its Allan deviation is N / sqrt(tau)), b(t) a first-order Gauss-Markov bias with
+/// correlation time tau_c and stationary sigma B / 0.617 (so that the peak of its Allan deviation,
+/// the flat region read off a plot, equals the bias instability B), and b_on, s constants drawn at
+/// power-on.
 ///
-/// Truth: the gyroscope reads the body's angular velocity w_B; the accelerometer reads the specific force at
-/// its mounting point r = p_BS, lever arm included:
+/// Truth: the gyroscope reads the body's angular velocity w_B; the accelerometer reads the specific
+/// force at its mounting point r = p_BS, lever arm included:
 ///   f_S = R_SB (R_BW (a_W - g_W) + alpha_B x r + w_B x (w_B x r)),
-/// about (0, 0, -g) at rest (1 g up in FRD), zero in free fall, with spikes at contacts because a_W includes
-/// contact forces.
+/// about (0, 0, -g) at rest (1 g up in FRD), zero in free fall, with spikes at contacts because a_W
+/// includes contact forces.
 class Imu final : public engine::Sensor {
  public:
-  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream
-  /// (RandomStreams::Stream of its full name), consumed only by this sensor.
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random
+  /// stream (RandomStreams::Stream of its full name), consumed only by this sensor.
   Imu(std::string name, const ImuConfig& config, engine::RandomStream stream);
 
   const ImuSample& latest() const { return latest_; }
@@ -110,7 +113,7 @@ class Imu final : public engine::Sensor {
   engine::Vec3 accel_bias_;
   engine::Vec3 gyro_turn_on_bias_;
   engine::Vec3 accel_turn_on_bias_;
-  engine::Vec3 gyro_scale_;   // 1 + s per axis
+  engine::Vec3 gyro_scale_;  // 1 + s per axis
   engine::Vec3 accel_scale_;
   ImuSample latest_;
 };

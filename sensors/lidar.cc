@@ -18,15 +18,16 @@ void LidarConfig::Validate() const {
   ValidateNested("mount", mount);
   engine::RequireInRange("channels", channels, 1, 1024);
   engine::RequireInRange("vertical_fov_upper_deg", vertical_fov_upper_deg, -90.0, 90.0);
-  engine::RequireInRange("vertical_fov_lower_deg", vertical_fov_lower_deg, -90.0, vertical_fov_upper_deg);
+  engine::RequireInRange("vertical_fov_lower_deg", vertical_fov_lower_deg, -90.0,
+                         vertical_fov_upper_deg);
   engine::RequireInRange("horizontal_fov_deg", horizontal_fov_deg, 0.0, 360.0);
   engine::RequirePositive("horizontal_fov_deg", horizontal_fov_deg);
   engine::RequireInRange("horizontal_resolution_deg", horizontal_resolution_deg, 1e-3, 360.0);
   engine::RequireNonNegative("min_range_m", min_range_m);
   engine::RequirePositive("max_range_m", max_range_m);
   engine::Require(max_range_m > min_range_m, "max_range_m",
-                  "must be > min_range_m (got " + engine::FormatNumber(max_range_m) + " <= " +
-                      engine::FormatNumber(min_range_m) + ")");
+                  "must be > min_range_m (got " + engine::FormatNumber(max_range_m) +
+                      " <= " + engine::FormatNumber(min_range_m) + ")");
   engine::RequireNonNegative("range_noise_m", range_noise_m);
   engine::Require(static_cast<double>(channels) * CalcColumns() <= 1e7, "horizontal_resolution_deg",
                   "gives more than 10,000,000 points per scan");
@@ -53,12 +54,15 @@ Lidar::Lidar(std::string name, const LidarConfig& config, engine::RandomStream s
   const double first_azimuth_deg =
       config.horizontal_fov_deg >= 360.0 ? 0.0 : -0.5 * config.horizontal_fov_deg + 0.5 * step_deg;
   const double elevation_step_deg =
-      channels > 1 ? (config.vertical_fov_upper_deg - config.vertical_fov_lower_deg) / (channels - 1) : 0.0;
+      channels > 1
+          ? (config.vertical_fov_upper_deg - config.vertical_fov_lower_deg) / (channels - 1)
+          : 0.0;
   directions_S_.reserve(n);
   for (int c = 0; c < columns; ++c) {
     const double azimuth = engine::DegToRad(first_azimuth_deg + c * step_deg);
     for (int k = 0; k < channels; ++k) {
-      const double elevation = engine::DegToRad(config.vertical_fov_lower_deg + k * elevation_step_deg);
+      const double elevation =
+          engine::DegToRad(config.vertical_fov_lower_deg + k * elevation_step_deg);
       directions_S_.emplace_back(static_cast<float>(std::cos(elevation) * std::cos(azimuth)),
                                  static_cast<float>(std::cos(elevation) * std::sin(azimuth)),
                                  static_cast<float>(-std::sin(elevation)));
@@ -125,7 +129,8 @@ void Lidar::Sample(const engine::SensorContext& context) {
     point.class_id = hit.class_id;
     point.instance_id = hit.instance_id;
     if (point.hit) {
-      point.range_m = std::clamp(static_cast<float>(hit.distance_m + noise_m), min_range, max_range);
+      point.range_m =
+          std::clamp(static_cast<float>(hit.distance_m + noise_m), min_range, max_range);
       ++hit_count;
     } else {
       point.range_m = 0.0f;

@@ -13,19 +13,21 @@
 
 namespace airis::sensors {
 
-/// Description of a spinning multi-channel lidar. Defaults: Velodyne VLP-16 class (reference/parameters.md):
-/// 16 channels over +-15 deg, 100 m, 10 rotations/s, 625 columns per rotation = 100,000 points/s.
+/// Description of a spinning multi-channel lidar. Defaults: Velodyne VLP-16 class
+/// (reference/parameters.md): 16 channels over +-15 deg, 100 m, 10 rotations/s, 625 columns per
+/// rotation = 100,000 points/s.
 struct LidarConfig {
   double rotation_rate_hz = 10.0;  ///< rotations (= scans) per simulated second
   engine::MountConfig mount;       ///< sensor frame: x = azimuth 0, z = rotation axis (down in FRD)
   int channels = 16;               ///< lasers, spread evenly from the lower to the upper elevation
-  double vertical_fov_upper_deg = 15.0;  ///< elevation of the top channel (above the sensor's x-y plane)
-  double vertical_fov_lower_deg = -15.0; ///< elevation of the bottom channel
-  double horizontal_fov_deg = 360.0;     ///< swept azimuth; 360 = full rotation
+  double vertical_fov_upper_deg =
+      15.0;  ///< elevation of the top channel (above the sensor's x-y plane)
+  double vertical_fov_lower_deg = -15.0;     ///< elevation of the bottom channel
+  double horizontal_fov_deg = 360.0;         ///< swept azimuth; 360 = full rotation
   double horizontal_resolution_deg = 0.576;  ///< azimuth step between columns
-  double min_range_m = 0.5;   ///< nearer surfaces are not seen
-  double max_range_m = 100.0; ///< farther surfaces are not seen
-  double range_noise_m = 0.03; ///< white noise on each range, 1 sigma
+  double min_range_m = 0.5;                  ///< nearer surfaces are not seen
+  double max_range_m = 100.0;                ///< farther surfaces are not seen
+  double range_noise_m = 0.03;               ///< white noise on each range, 1 sigma
 
   template <class V>
   void Visit(V& v) {
@@ -33,7 +35,8 @@ struct LidarConfig {
     v.Field("mount", mount, "pose of the lidar on the vehicle");
     v.Field("channels", channels, "number of lasers");
     v.Field("vertical_fov_upper_deg", vertical_fov_upper_deg, "elevation of the top channel (deg)");
-    v.Field("vertical_fov_lower_deg", vertical_fov_lower_deg, "elevation of the bottom channel (deg)");
+    v.Field("vertical_fov_lower_deg", vertical_fov_lower_deg,
+            "elevation of the bottom channel (deg)");
     v.Field("horizontal_fov_deg", horizontal_fov_deg, "swept azimuth, up to 360 (deg)");
     v.Field("horizontal_resolution_deg", horizontal_resolution_deg, "azimuth step (deg)");
     v.Field("min_range_m", min_range_m, "minimum range (m)");
@@ -51,42 +54,47 @@ struct LidarConfig {
 
 /// One return of a lidar scan. Laid out compactly (12 bytes) because scans hold many of them.
 struct LidarPoint {
-  float range_m = 0.0f;                             ///< measured range along the beam; 0 without a return
+  float range_m = 0.0f;  ///< measured range along the beam; 0 without a return
   std::uint32_t instance_id = engine::kNoInstance;  ///< instance hit
   std::uint8_t class_id = engine::kNoClass;         ///< semantic class hit
   bool hit = false;                                 ///< a surface was within range
 };
 
-/// One full rotation. Point i belongs to column i / channels and channel i % channels (the firing order of
-/// a spinning lidar: all channels of a column, then the next column).
+/// One full rotation. Point i belongs to column i / channels and channel i % channels (the firing
+/// order of a spinning lidar: all channels of a column, then the next column).
 struct LidarScan {
-  engine::TimeNs time_ns = -1;                    ///< simulated time of the scan
-  engine::Vec3 p_WS = engine::Vec3::Zero();       ///< sensor position at the scan, world NED (m)
-  engine::Quat q_WS = engine::Quat::Identity();   ///< sensor attitude at the scan (sensor -> world)
+  engine::TimeNs time_ns = -1;                   ///< simulated time of the scan
+  engine::Vec3 p_WS = engine::Vec3::Zero();      ///< sensor position at the scan, world NED (m)
+  engine::Quat q_WS = engine::Quat::Identity();  ///< sensor attitude at the scan (sensor -> world)
   int channels = 0;
   int columns = 0;
   std::size_t hit_count = 0;
   std::vector<LidarPoint> points;  ///< channels * columns entries
 };
 
-/// Spinning lidar: every rotation period it casts channels x columns rays from the sensor's pose through the
-/// world's RayCaster (Embree, in batches) and fills a LidarScan in place. Each point carries its range (true
-/// distance plus white noise, clamped to the range limits), a hit flag and the label of what it hit.
-/// Simplification: the whole rotation is cast from the pose at the scan time (no motion distortion within a
-/// rotation). Listeners read the scan through latest() by const reference: nothing large is copied, and
-/// the buffers are reused, so Sample does not allocate after construction.
+/// Spinning lidar: every rotation period it casts channels x columns rays from the sensor's pose
+/// through the world's RayCaster (Embree, in batches) and fills a LidarScan in place. Each point
+/// carries its range (true distance plus white noise, clamped to the range limits), a hit flag and
+/// the label of what it hit. Simplification: the whole rotation is cast from the pose at the scan
+/// time (no motion distortion within a rotation). Listeners read the scan through latest() by const
+/// reference: nothing large is copied, and the buffers are reused, so Sample does not allocate
+/// after construction.
 class Lidar final : public engine::Sensor {
  public:
-  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream.
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random
+  /// stream.
   Lidar(std::string name, const LidarConfig& config, engine::RandomStream stream);
 
   const LidarScan& latest() const { return scan_; }
   const LidarConfig& config() const { return config_; }
 
-  /// Unit beam direction of point i in sensor axes (x azimuth 0, azimuth toward +y, elevation toward -z).
+  /// Unit beam direction of point i in sensor axes (x azimuth 0, azimuth toward +y, elevation
+  /// toward -z).
   const Eigen::Vector3f& direction_S(std::size_t i) const { return directions_S_[i]; }
   /// Cartesian position of point i in sensor axes (m): range times direction.
-  Eigen::Vector3f CalcPoint_S(std::size_t i) const { return scan_.points[i].range_m * directions_S_[i]; }
+  Eigen::Vector3f CalcPoint_S(std::size_t i) const {
+    return scan_.points[i].range_m * directions_S_[i];
+  }
   /// Points per simulated second: channels * columns * rotation_rate_hz.
   double points_per_second() const;
 

@@ -15,14 +15,15 @@ namespace airis::sensors {
 struct MagnetometerConfig {
   double rate_hz = 50.0;  ///< samples per simulated second
   engine::MountConfig mount;
-  double noise_gauss = 0.005;                           ///< white noise per axis, 1 sigma (G)
-  engine::Vec3 scale_factor = engine::Vec3::Ones();     ///< per-axis gain (dimensionless, 1 = ideal)
+  double noise_gauss = 0.005;                        ///< white noise per axis, 1 sigma (G)
+  engine::Vec3 scale_factor = engine::Vec3::Ones();  ///< per-axis gain (dimensionless, 1 = ideal)
   engine::Vec3 hard_iron_gauss = engine::Vec3::Zero();  ///< fixed bias in sensor axes (G)
   /// Soft-iron matrix, 9 numbers row by row; empty = identity.
   std::vector<double> soft_iron;
   /// The field model is evaluated again once the sensor has moved this far from where it was last
-  /// evaluated (0 = every sample). The main field's gradient is below 0.03 nT/m, so 10 m changes it by
-  /// < 0.3 nT = 3e-6 G, a thousandth of the noise, and saves most WMM evaluations (~0.9 us each).
+  /// evaluated (0 = every sample). The main field's gradient is below 0.03 nT/m, so 10 m changes it
+  /// by < 0.3 nT = 3e-6 G, a thousandth of the noise, and saves most WMM evaluations (~0.9 us
+  /// each).
   double field_update_distance_m = 10.0;
 
   template <class V>
@@ -32,7 +33,8 @@ struct MagnetometerConfig {
     v.Field("noise_gauss", noise_gauss, "white noise per axis, 1 sigma (gauss)");
     v.Field("scale_factor", scale_factor, "per-axis gain [x, y, z] (1 = ideal)");
     v.Field("hard_iron_gauss", hard_iron_gauss, "fixed bias [x, y, z] in sensor axes (gauss)");
-    v.Field("soft_iron", soft_iron, "3x3 soft-iron matrix, 9 numbers row by row (empty = identity)");
+    v.Field("soft_iron", soft_iron,
+            "3x3 soft-iron matrix, 9 numbers row by row (empty = identity)");
     v.Field("field_update_distance_m", field_update_distance_m,
             "re-evaluate the field model after moving this far (m; 0 = every sample)");
   }
@@ -44,19 +46,22 @@ struct MagnetometerConfig {
 
 /// One magnetometer sample.
 struct MagnetometerSample {
-  engine::TimeNs time_ns = -1;                        ///< simulated time of the sample
-  engine::Vec3 field_S_gauss = engine::Vec3::Zero();  ///< measured field in sensor axes (G; 1 G = 1e5 nT)
+  engine::TimeNs time_ns = -1;  ///< simulated time of the sample
+  engine::Vec3 field_S_gauss =
+      engine::Vec3::Zero();  ///< measured field in sensor axes (G; 1 G = 1e5 nT)
 };
 
-/// Magnetometer (paper sec. 3.4.3): the environment's geomagnetic field (tilted dipole or WMM, per scene) at
-/// the sensor, rotated into sensor axes, with calibration errors and noise:
+/// Magnetometer (paper sec. 3.4.3): the environment's geomagnetic field (tilted dipole or WMM, per
+/// scene) at the sensor, rotated into sensor axes, with calibration errors and noise:
 ///   m_S = K diag(s) R_SW B_W + h + w,
-/// K the soft-iron matrix, s the per-axis scale factors, h the hard-iron bias, w white noise. The field model
-/// is evaluated at this sensor's rate only, and only after the sensor has moved field_update_distance_m
-/// since the last evaluation (the world field B_W is kept; the rotation into sensor axes is every sample).
+/// K the soft-iron matrix, s the per-axis scale factors, h the hard-iron bias, w white noise. The
+/// field model is evaluated at this sensor's rate only, and only after the sensor has moved
+/// field_update_distance_m since the last evaluation (the world field B_W is kept; the rotation
+/// into sensor axes is every sample).
 class Magnetometer final : public engine::Sensor {
  public:
-  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream.
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random
+  /// stream.
   Magnetometer(std::string name, const MagnetometerConfig& config, engine::RandomStream stream);
 
   const MagnetometerSample& latest() const { return latest_; }

@@ -18,8 +18,8 @@ void RangefinderConfig::Validate() const {
   engine::RequireNonNegative("min_range_m", min_range_m);
   engine::RequirePositive("max_range_m", max_range_m);
   engine::Require(max_range_m > min_range_m, "max_range_m",
-                  "must be > min_range_m (got " + engine::FormatNumber(max_range_m) + " <= " +
-                      engine::FormatNumber(min_range_m) + ")");
+                  "must be > min_range_m (got " + engine::FormatNumber(max_range_m) +
+                      " <= " + engine::FormatNumber(min_range_m) + ")");
   engine::RequireNonNegative("noise_m", noise_m);
   engine::RequireFinite("no_return_distance_m", no_return_distance_m);
 }
@@ -29,7 +29,8 @@ void RangefinderConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
   RequireRateWithinPhysics("rate_hz", rate_hz, physics_rate_hz);
 }
 
-Rangefinder::Rangefinder(std::string name, const RangefinderConfig& config, engine::RandomStream stream)
+Rangefinder::Rangefinder(std::string name, const RangefinderConfig& config,
+                         engine::RandomStream stream)
     : Sensor(std::move(name), (config.Validate(), config.rate_hz)),
       config_(config),
       stream_(stream),
@@ -56,13 +57,14 @@ void Rangefinder::Sample(const engine::SensorContext& context) {
   engine::RayHit hit;
   if (context.rays != nullptr) context.rays->Cast({&ray, 1}, {&hit, 1});
 
-  // One draw per sample whether or not there is a return, so the stream does not depend on the scene.
+  // One draw per sample whether or not there is a return, so the stream does not depend on the
+  // scene.
   const double noise_m = config_.noise_m * StandardNormal(stream_);
   latest_.time_ns = context.now_ns;
   latest_.hit = hit.hit();
   if (latest_.hit) {
-    latest_.distance_m = static_cast<float>(
-        std::clamp(static_cast<double>(hit.distance_m) + noise_m, config_.min_range_m, config_.max_range_m));
+    latest_.distance_m = static_cast<float>(std::clamp(
+        static_cast<double>(hit.distance_m) + noise_m, config_.min_range_m, config_.max_range_m));
   } else {
     latest_.distance_m = static_cast<float>(config_.no_return_distance_m);
   }

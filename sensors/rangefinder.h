@@ -42,20 +42,21 @@ struct RangefinderConfig {
 
 /// One rangefinder sample.
 struct RangefinderSample {
-  engine::TimeNs time_ns = -1;     ///< simulated time of the sample
-  bool hit = false;                ///< a surface was within [min_range_m, max_range_m]
-  float distance_m = -1.0f;        ///< measured distance, or no_return_distance_m without a return
+  engine::TimeNs time_ns = -1;  ///< simulated time of the sample
+  bool hit = false;             ///< a surface was within [min_range_m, max_range_m]
+  float distance_m = -1.0f;     ///< measured distance, or no_return_distance_m without a return
   std::uint8_t class_id = engine::kNoClass;         ///< semantic class of what the beam hit
   std::uint32_t instance_id = engine::kNoInstance;  ///< instance of what the beam hit
 };
 
-/// Rangefinder: one ray from the sensor origin along its +x axis, cast through the world's RayCaster
-/// (Embree). A return within range reports the true distance plus white noise, clamped to the range
-/// limits, and the label of the surface hit; no return reports no_return_distance_m. Worlds without a ray
-/// caster give no returns.
+/// Rangefinder: one ray from the sensor origin along its +x axis, cast through the world's
+/// RayCaster (Embree). A return within range reports the true distance plus white noise, clamped to
+/// the range limits, and the label of the surface hit; no return reports no_return_distance_m.
+/// Worlds without a ray caster give no returns.
 class Rangefinder final : public engine::Sensor {
  public:
-  /// @param config validated here (throws InvalidField). @param stream this sensor's own random stream.
+  /// @param config validated here (throws InvalidField). @param stream this sensor's own random
+  /// stream.
   Rangefinder(std::string name, const RangefinderConfig& config, engine::RandomStream stream);
 
   const RangefinderSample& latest() const { return latest_; }

@@ -10,14 +10,15 @@ namespace airis::sensors {
 /// Standard gravity, for converting data-sheet figures in g, mg and ug (ISO 80000-3).
 inline constexpr double kStandardGravity_m_s2 = 9.80665;
 
-/// Peak of the Allan deviation of a first-order Gauss-Markov process as a fraction of its stationary sigma:
-/// sigma_A(T)^2 = 2 sigma^2 (tau_c / T) [1 - tau_c / (2T) (3 - 4 exp(-T/tau_c) + exp(-2T/tau_c))]
-/// (IEEE Std 952-1997, annex C) is largest at T = 1.8926 tau_c, where sigma_A = 0.617364 sigma.
-/// Sensors map a data sheet's bias instability (the flat region of the Allan curve) to sigma = B / this.
+/// Peak of the Allan deviation of a first-order Gauss-Markov process as a fraction of its
+/// stationary sigma: sigma_A(T)^2 = 2 sigma^2 (tau_c / T) [1 - tau_c / (2T) (3 - 4 exp(-T/tau_c) +
+/// exp(-2T/tau_c))] (IEEE Std 952-1997, annex C) is largest at T = 1.8926 tau_c, where sigma_A =
+/// 0.617364 sigma. Sensors map a data sheet's bias instability (the flat region of the Allan curve)
+/// to sigma = B / this.
 inline constexpr double kGaussMarkovAllanPeak = 0.6173642831;
 
-/// Throws InvalidField(field) unless 0 < rate_hz <= physics_rate_hz: a sensor cannot sample more often
-/// than the physics tick that produces its truth.
+/// Throws InvalidField(field) unless 0 < rate_hz <= physics_rate_hz: a sensor cannot sample more
+/// often than the physics tick that produces its truth.
 void RequireRateWithinPhysics(std::string_view field, double rate_hz, double physics_rate_hz);
 
 /// Runs `config.Validate()` and prefixes the field of any InvalidField with `prefix` and a dot

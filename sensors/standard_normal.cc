@@ -13,13 +13,14 @@ constexpr double kV = 0.00492867323399;
 
 double Density(double x) { return std::exp(-0.5 * x * x); }
 
-// x[0] = V / f(r) makes the base layer's rectangle plus the tail an area V; layer i >= 1 spans heights
-// f(x[i]) to f(x[i+1]) with area x[i] (f(x[i+1]) - f(x[i])) = V; x[256] = 0.
+// x[0] = V / f(r) makes the base layer's rectangle plus the tail an area V; layer i >= 1 spans
+// heights f(x[i]) to f(x[i+1]) with area x[i] (f(x[i+1]) - f(x[i])) = V; x[256] = 0.
 std::array<double, kLayers + 1> MakeEdges() {
   std::array<double, kLayers + 1> x{};
   x[0] = kV / Density(kR);
   x[1] = kR;
-  for (int i = 1; i < kLayers - 1; ++i) x[i + 1] = std::sqrt(-2.0 * std::log(kV / x[i] + Density(x[i])));
+  for (int i = 1; i < kLayers - 1; ++i)
+    x[i + 1] = std::sqrt(-2.0 * std::log(kV / x[i] + Density(x[i])));
   x[kLayers] = 0.0;
   return x;
 }
@@ -35,7 +36,8 @@ double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u) {
     const double x = static_cast<double>(u >> 11) * 0x1.0p-53 * kLayerEdges[i];
     if (x < kLayerEdges[i + 1]) return negative ? -x : x;
     if (i == 0) {
-      // Tail beyond r (Marsaglia 1964): x = r + a, a exponential, accepted with probability exp(-a^2/2).
+      // Tail beyond r (Marsaglia 1964): x = r + a, a exponential, accepted with probability
+      // exp(-a^2/2).
       double a = 0.0;
       double b = 0.0;
       do {

@@ -15,13 +15,14 @@ extern const std::array<double, 257> kLayerEdges;
 double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u);
 }  // namespace ziggurat
 
-/// A standard normal draw N(0, 1) from `stream` by the ziggurat method (Marsaglia and Tsang, "The Ziggurat
-/// Method for Generating Random Variables", J. Stat. Softw. 5(8), 2000), 256 layers, with the layer index
-/// (bits 0-7), the sign (bit 8) and a 53-bit uniform (bits 11-63) taken from disjoint bits of one 64-bit
-/// draw, which avoids the correlation Doornik (2005) found in the 32-bit original. About 99% of draws cost
-/// one NextU64, a multiply and a compare (inline here); RandomStream::Gaussian (polar method: log, sqrt,
-/// division, rejection) costs several times more, which matters for an IMU drawing 12 normals a sample at
-/// 1 kHz. Deterministic: the same stream gives the same draws.
+/// A standard normal draw N(0, 1) from `stream` by the ziggurat method (Marsaglia and Tsang, "The
+/// Ziggurat Method for Generating Random Variables", J. Stat. Softw. 5(8), 2000), 256 layers, with
+/// the layer index (bits 0-7), the sign (bit 8) and a 53-bit uniform (bits 11-63) taken from
+/// disjoint bits of one 64-bit draw, which avoids the correlation Doornik (2005) found in the
+/// 32-bit original. About 99% of draws cost one NextU64, a multiply and a compare (inline here);
+/// RandomStream::Gaussian (polar method: log, sqrt, division, rejection) costs several times more,
+/// which matters for an IMU drawing 12 normals a sample at 1 kHz. Deterministic: the same stream
+/// gives the same draws.
 inline double StandardNormal(engine::RandomStream& stream) {
   const std::uint64_t u = stream.NextU64();
   const std::size_t i = u & 0xFF;

@@ -25,14 +25,16 @@ double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Boxes 2-20 m wide and 5-60 m tall with random yaw, standing on z = 0, all instances of one unit box.
+// Boxes 2-20 m wide and 5-60 m tall with random yaw, standing on z = 0, all instances of one unit
+// box.
 engine::StaticScene MakeCity(int count, double extent_m) {
   engine::StaticScene scene;
   engine::TriangleMesh box;
   box.name = "primitive:box";
   box.primitive = engine::Primitive::kBox;
   for (int i = 0; i < 8; ++i) {
-    box.positions.emplace_back((i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f);
+    box.positions.emplace_back((i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f,
+                               (i & 4) ? 0.5f : -0.5f);
     box.normals.push_back(box.positions.back().normalized());
     box.bounds.extend(box.positions.back());
   }
@@ -53,7 +55,8 @@ engine::StaticScene MakeCity(int count, double extent_m) {
                       -0.5 * size.z());
     engine::StaticObject o;
     o.T_WO = Eigen::Translation3d(center) *
-             Eigen::AngleAxisd(random.Uniform(-3.14159, 3.14159), Vec3::UnitZ()) * Eigen::Scaling(size);
+             Eigen::AngleAxisd(random.Uniform(-3.14159, 3.14159), Vec3::UnitZ()) *
+             Eigen::Scaling(size);
     o.class_id = static_cast<std::uint8_t>(1 + i % 4);
     o.instance_id = static_cast<std::uint32_t>(1 + i % engine::kMaxInstances);
     scene.objects.push_back(o);
@@ -84,7 +87,8 @@ nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options) {
   const engine::RandomStreams streams(1);
   engine::EnvironmentConfig env_config;
   const engine::Environment environment(
-      env_config, {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0}, streams.Stream("env"));
+      env_config, {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
+      streams.Stream("env"));
   engine::RigidBodyState state;
   state.p_W = Vec3(0, 0, -30);
   state.v_W = Vec3(3, 1, 0);
@@ -140,7 +144,8 @@ nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options) {
   out["magnetometer_ns"] = TimeSamples(magnetometer, context, 20000);
   out["gps_ns"] = TimeSamples(gps, context, 20000);
 
-  // The reference quad's four sensors on a 1 kHz tick, each at its own rate, through Sensor::Update.
+  // The reference quad's four sensors on a 1 kHz tick, each at its own rate, through
+  // Sensor::Update.
   {
     sensors::Imu q_imu("imu", {}, streams.Stream("quad/imu"));
     sensors::Barometer q_baro("barometer", {}, streams.Stream("quad/barometer"));
@@ -158,7 +163,8 @@ nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options) {
       state.p_W.x() += 1e-3;  // keep the truth changing so nothing is cached by accident
       for (engine::Sensor* s : all) s->Update(context);
     }
-    out["reference_quad_sensors_ns_per_tick"] = SecondsSince(start) * 1e9 / static_cast<double>(ticks);
+    out["reference_quad_sensors_ns_per_tick"] =
+        SecondsSince(start) * 1e9 / static_cast<double>(ticks);
   }
   out["ticks_per_s_bare"] = nullptr;
   out["ticks_per_s_with_sensors"] = nullptr;

@@ -12,24 +12,33 @@ namespace airis::engine {
 
 namespace {
 
-// Rays traced per rtcIntersect1M call: large enough for Embree's stream tracer to form coherent packets,
-// small enough to live on the stack (256 * 80 bytes).
+// Rays traced per rtcIntersect1M call: large enough for Embree's stream tracer to form coherent
+// packets, small enough to live on the stack (256 * 80 bytes).
 constexpr std::size_t kBatch = 256;
 
 std::string DeviceErrorText(RTCDevice device) {
   switch (rtcGetDeviceError(device)) {
-    case RTC_ERROR_NONE: return "no error";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-    case RTC_ERROR_CANCELLED: return "cancelled";
-    default: return "unknown error";
+    case RTC_ERROR_NONE:
+      return "no error";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+      return "cancelled";
+    default:
+      return "unknown error";
   }
 }
 
 void Check(RTCDevice device, bool ok, const char* what) {
-  if (!ok) throw std::runtime_error(std::string("EmbreeRayCaster: ") + what + ": " + DeviceErrorText(device));
+  if (!ok)
+    throw std::runtime_error(std::string("EmbreeRayCaster: ") + what + ": " +
+                             DeviceErrorText(device));
 }
 
 // One Embree scene holding the triangles of `mesh` in its own frame.
@@ -51,10 +60,12 @@ RTCScene BuildMeshScene(RTCDevice device, const TriangleMesh& mesh) {
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
   if (mesh.triangle_count() > 0) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-    auto* triangles = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangle_count()));
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), mesh.positions.size()));
+    auto* triangles = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), mesh.triangle_count()));
     Check(device, vertices != nullptr && triangles != nullptr, "rtcSetNewGeometryBuffer");
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
       vertices[3 * i + 0] = mesh.positions[i].x();
@@ -118,8 +129,9 @@ EmbreeRayCaster::EmbreeRayCaster(const StaticScene& scene) {
         InstanceInfo info;
         info.class_id = object.class_id;
         info.instance_id = object.instance_id;
-        // Embree reports an instance hit's normal in the instanced scene's space (RTCHit: "geometry normal
-        // in object space"); normals map to the world by the inverse transpose of the linear part.
+        // Embree reports an instance hit's normal in the instanced scene's space (RTCHit: "geometry
+        // normal in object space"); normals map to the world by the inverse transpose of the linear
+        // part.
         info.normal_to_W = T_WP.linear().inverse().transpose();
         instances_.push_back(info);
       }
@@ -145,8 +157,8 @@ EmbreeRayCaster::~EmbreeRayCaster() {
 }
 
 std::size_t EmbreeRayCaster::mesh_scene_count() const {
-  return static_cast<std::size_t>(
-      std::count_if(mesh_scenes_.begin(), mesh_scenes_.end(), [](RTCScene s) { return s != nullptr; }));
+  return static_cast<std::size_t>(std::count_if(mesh_scenes_.begin(), mesh_scenes_.end(),
+                                                [](RTCScene s) { return s != nullptr; }));
 }
 
 void EmbreeRayCaster::Cast(std::span<const Ray> rays, std::span<RayHit> hits) const {

@@ -1,5 +1,5 @@
-// Per-sample cost of each sensor, the reference quad's sensors per 1 kHz tick, and lidar rays per second
-// through Embree in a 10,000-box city (1 km x 1 km).
+// Per-sample cost of each sensor, the reference quad's sensors per 1 kHz tick, and lidar rays per
+// second through Embree in a 10,000-box city (1 km x 1 km).
 
 #include <benchmark/benchmark.h>
 
@@ -32,18 +32,21 @@ struct Rig {
 };
 
 const engine::EmbreeRayCaster& City() {
-  static const auto* caster = new engine::EmbreeRayCaster(testing::MakeCityOfBoxes(10000, 1000.0, 2026));
+  static const auto* caster =
+      new engine::EmbreeRayCaster(testing::MakeCityOfBoxes(10000, 1000.0, 2026));
   return *caster;
 }
 
 // Each Update at the sensor's own period, so every call samples.
 template <class SensorT, class Config>
-void RunSampled(benchmark::State& state, const Config& config, const engine::RayCaster* rays = nullptr) {
+void RunSampled(benchmark::State& state, const Config& config,
+                const engine::RayCaster* rays = nullptr) {
   Rig rig;
   SensorT sensor("s", config, engine::RandomStream(1));
   const auto period = static_cast<engine::TimeNs>(1e9 / sensor.schedule().rate_hz());
   engine::TimeNs now = 0;
-  for (int i = 0; i < 100; ++i, now += period) sensor.Update(rig.truth.At(now, rig.environment, rays));
+  for (int i = 0; i < 100; ++i, now += period)
+    sensor.Update(rig.truth.At(now, rig.environment, rays));
   for (auto _ : state) {
     benchmark::DoNotOptimize(sensor.Update(rig.truth.At(now, rig.environment, rays)));
     now += period;
@@ -52,7 +55,9 @@ void RunSampled(benchmark::State& state, const Config& config, const engine::Ray
 }
 
 void BM_ImuSample(benchmark::State& state) { RunSampled<Imu>(state, ImuConfig{}); }
-void BM_BarometerSample(benchmark::State& state) { RunSampled<Barometer>(state, BarometerConfig{}); }
+void BM_BarometerSample(benchmark::State& state) {
+  RunSampled<Barometer>(state, BarometerConfig{});
+}
 void BM_MagnetometerSampleWmm(benchmark::State& state) {
   RunSampled<Magnetometer>(state, MagnetometerConfig{});
 }
@@ -66,8 +71,9 @@ void BM_RangefinderSampleCity(benchmark::State& state) {
   RunSampled<Rangefinder>(state, RangefinderConfig{}, &City());
 }
 
-// IMU 1 kHz + barometer 50 Hz + magnetometer 50 Hz + GPS 10 Hz through Sensor::Update on every 1 kHz tick;
-// one iteration = one tick, so the time per iteration is the amortised cost the sensors add to a tick.
+// IMU 1 kHz + barometer 50 Hz + magnetometer 50 Hz + GPS 10 Hz through Sensor::Update on every 1
+// kHz tick; one iteration = one tick, so the time per iteration is the amortised cost the sensors
+// add to a tick.
 void BM_ReferenceQuadSensorsPerTick(benchmark::State& state) {
   Rig rig;
   Imu imu("imu", {}, engine::RandomStream(1));
@@ -97,7 +103,8 @@ void BM_LidarScanCity(benchmark::State& state) {
   std::size_t rays = 0;
   std::size_t hits = 0;
   const auto move = [&] {
-    rig.truth.state.p_W = Vec3(poses.Uniform(-400, 400), poses.Uniform(-400, 400), -poses.Uniform(20, 80));
+    rig.truth.state.p_W =
+        Vec3(poses.Uniform(-400, 400), poses.Uniform(-400, 400), -poses.Uniform(20, 80));
     now += 100'000'000;
   };
   move();
@@ -121,7 +128,8 @@ void BM_EmbreeIncoherentRaysCity(benchmark::State& state) {
   std::vector<engine::Ray> rays(4096);
   for (engine::Ray& r : rays) {
     r.origin_W = Vec3(random.Uniform(-500, 500), random.Uniform(-500, 500), -random.Uniform(2, 80));
-    r.direction_W = Vec3(random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-0.5, 0.5)).normalized();
+    r.direction_W =
+        Vec3(random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-0.5, 0.5)).normalized();
     r.max_range_m = 100.0f;
   }
   std::vector<engine::RayHit> hits(rays.size());

@@ -16,21 +16,23 @@ namespace {
 // Closed-form Allan deviation of a first-order Gauss-Markov process (IEEE Std 952-1997, annex C).
 double GaussMarkovAllan(double sigma, double tau_c, double T) {
   const double x = T / tau_c;
-  return sigma * std::sqrt((2.0 / x) * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x)));
+  return sigma *
+         std::sqrt((2.0 / x) * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x)));
 }
 
 TEST(AllanDeviationTest, WhiteNoiseFallsAsDensityOverSqrtTau) {
-  // GIVEN 10^6 samples at 100 Hz of white noise with density N = 0.01 unit/sqrt(Hz) (sigma N sqrt(f))
+  // GIVEN 10^6 samples at 100 Hz of white noise with density N = 0.01 unit/sqrt(Hz) (sigma N
+  // sqrt(f))
   const double rate_hz = 100.0;
   const double density = 0.01;
   engine::RandomStream random(1);
   std::vector<double> x(1'000'000);
   for (double& v : x) v = random.Gaussian(density * std::sqrt(rate_hz));
-  // THEN sigma_A(tau) = N / sqrt(tau). With K = 10^4 s / tau roughly independent clusters the overlapping
-  // estimate has a relative standard error of about 0.75 / sqrt(K): 1.2% at tau = 2.5 s, 4% at 25 s; 5% and
-  // 15% are 4 of those.
-  for (const auto& [m, tolerance] : {std::pair<std::size_t, double>{1, 0.05}, {10, 0.05}, {250, 0.05},
-                                     {2500, 0.15}}) {
+  // THEN sigma_A(tau) = N / sqrt(tau). With K = 10^4 s / tau roughly independent clusters the
+  // overlapping estimate has a relative standard error of about 0.75 / sqrt(K): 1.2% at tau = 2.5
+  // s, 4% at 25 s; 5% and 15% are 4 of those.
+  for (const auto& [m, tolerance] :
+       {std::pair<std::size_t, double>{1, 0.05}, {10, 0.05}, {250, 0.05}, {2500, 0.15}}) {
     const AllanPoint p = CalcOverlappingAllanDeviation(x, 1.0 / rate_hz, m);
     EXPECT_NEAR(p.deviation / (density / std::sqrt(p.tau_s)), 1.0, tolerance) << "tau " << p.tau_s;
   }
@@ -51,8 +53,8 @@ TEST(AllanDeviationTest, GaussMarkovMatchesClosedFormAndPeakFactor) {
   std::vector<double> x(2'000'000);
   double b = random.Gaussian();
   for (double& v : x) v = b = step.Next(b, random.Gaussian());
-  // THEN its Allan curve follows the closed form; 20,000 s / tau >= 2,000 clusters: ~2-3% standard error,
-  // 10% tolerance.
+  // THEN its Allan curve follows the closed form; 20,000 s / tau >= 2,000 clusters: ~2-3% standard
+  // error, 10% tolerance.
   for (double T : {0.1, 1.0, 1.8926, 5.0}) {
     const auto m = static_cast<std::size_t>(std::lround(T / dt));
     const AllanPoint p = CalcOverlappingAllanDeviation(x, dt, m);

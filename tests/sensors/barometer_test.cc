@@ -80,7 +80,8 @@ TEST(BarometerTest, DriftHasConfiguredStationarySigmaAndCorrelationTime) {
   var /= b.size();
   // THEN sigma matches within 10% (standard error sqrt(tau / T) = 1%)
   EXPECT_NEAR(std::sqrt(var) / 0.001825, 1.0, 0.10);
-  // AND the lag-90 (3600 s) autocorrelation gives the correlation time within 10% (standard error ~1.2%)
+  // AND the lag-90 (3600 s) autocorrelation gives the correlation time within 10% (standard error
+  // ~1.2%)
   const std::size_t lag = 90;
   double cov = 0.0;
   for (std::size_t k = 0; k + lag < b.size(); ++k) cov += (b[k] - mean) * (b[k + lag] - mean);

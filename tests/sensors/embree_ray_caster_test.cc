@@ -59,8 +59,9 @@ TEST(EmbreeRayCasterTest, WallAtKnownDistance) {
 }
 
 TEST(EmbreeRayCasterTest, GroundPlaneAtHeightAndTilt) {
-  // GIVEN a 1 km ground slab whose top face is z = 0, pitched by 20 degrees about y through the origin
-  // (box centre moved half its thickness along the tilted normal), and a point 30 m above the origin
+  // GIVEN a 1 km ground slab whose top face is z = 0, pitched by 20 degrees about y through the
+  // origin (box centre moved half its thickness along the tilted normal), and a point 30 m above
+  // the origin
   const double tilt = engine::DegToRad(20.0);
   BoxSpec ground;
   ground.size_m = Vec3(1000.0, 1000.0, 2.0);
@@ -77,7 +78,8 @@ TEST(EmbreeRayCasterTest, GroundPlaneAtHeightAndTilt) {
     EXPECT_NEAR(hit.distance_m, h - x0 * std::tan(tilt), kFloatTolerance_m) << x0;
     EXPECT_NEAR(hit.normal_W.cast<double>().dot(normal_up), 1.0, 1e-5);
   }
-  // AND a ray at 60 degrees off vertical toward -x from above the origin meets it where the closed form says
+  // AND a ray at 60 degrees off vertical toward -x from above the origin meets it where the closed
+  // form says
   const double b = engine::DegToRad(60.0);
   const Vec3 d(-std::sin(b), 0, std::cos(b));
   const RayHit hit = CastOne(caster, MakeRay(Vec3(0, 0, -h), d));
@@ -128,8 +130,9 @@ TEST(EmbreeRayCasterTest, EmptySceneHitsNothing) {
   EXPECT_FALSE(CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitX())).hit());
 }
 
-// Slab-method distance to an axis-aligned box (closed form): the entry distance, or the exit distance from
-// inside (a ray tracer sees the inner side of the face), infinity when missed or behind.
+// Slab-method distance to an axis-aligned box (closed form): the entry distance, or the exit
+// distance from inside (a ray tracer sees the inner side of the face), infinity when missed or
+// behind.
 double SlabDistance(const Vec3& o, const Vec3& d, const Vec3& lo, const Vec3& hi) {
   double t0 = 0.0;
   double t1 = std::numeric_limits<double>::infinity();
@@ -162,7 +165,8 @@ TEST(EmbreeRayCasterTest, InstancedBoxesMatchSlabIntersectionInBatches) {
   std::vector<Ray> rays(2000);
   for (Ray& r : rays) {
     r = MakeRay(Vec3(random.Uniform(-120, 120), random.Uniform(-120, 120), random.Uniform(-40, -1)),
-                Vec3(random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-0.3, 0.6)), 500.0f);
+                Vec3(random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-0.3, 0.6)),
+                500.0f);
   }
   std::vector<RayHit> hits(rays.size());
   caster.Cast(rays, hits);
@@ -172,8 +176,8 @@ TEST(EmbreeRayCasterTest, InstancedBoxesMatchSlabIntersectionInBatches) {
     double best = std::numeric_limits<double>::infinity();
     std::uint32_t best_id = engine::kNoInstance;
     for (const BoxSpec& b : boxes) {
-      const double t = SlabDistance(rays[i].origin_W, rays[i].direction_W, b.center_W - 0.5 * b.size_m,
-                                    b.center_W + 0.5 * b.size_m);
+      const double t = SlabDistance(rays[i].origin_W, rays[i].direction_W,
+                                    b.center_W - 0.5 * b.size_m, b.center_W + 0.5 * b.size_m);
       if (t < best) {
         best = t;
         best_id = b.instance_id;

@@ -98,7 +98,8 @@ TEST(GpsTest, FixTypeFollowsStartupAndThresholds) {
   const engine::Environment env = testing::MakeEnvironment();
   Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
   const std::vector<GpsSample> fixes = Fly(gps, env, 8.0);
-  // eph crosses 4 m at 1 + 0.9 ln(99.9 / 3.9) = 3.918 s and 3 m at 1 + 0.9 ln(99.9 / 2.9) = 4.186 s.
+  // eph crosses 4 m at 1 + 0.9 ln(99.9 / 3.9) = 3.918 s and 3 m at 1 + 0.9 ln(99.9 / 2.9) = 4.186
+  // s.
   for (const GpsSample& f : fixes) {
     const double t = engine::ToSeconds(f.time_ns);
     GpsFixType expected = GpsFixType::kNoFix;

@@ -67,8 +67,8 @@ TEST(ImuTest, FreeFallReadsZero) {
 }
 
 TEST(ImuTest, LandingShowsASpikeThenOneG) {
-  // GIVEN a hand-made drop: 1 s of free fall, a 10 ms contact deceleration of 50 m/s^2 upward (contact
-  // forces in a_W), then rest
+  // GIVEN a hand-made drop: 1 s of free fall, a 10 ms contact deceleration of 50 m/s^2 upward
+  // (contact forces in a_W), then rest
   const engine::Environment env = testing::MakeEnvironment();
   Truth truth;
   truth.accelerations = testing::AtRest(env, truth.state.p_W);
@@ -94,8 +94,8 @@ TEST(ImuTest, LandingShowsASpikeThenOneG) {
 }
 
 TEST(ImuTest, LeverArmAddsCentripetalAndTangentialTerms) {
-  // GIVEN an IMU 0.1 m forward of the centre of mass, body spinning at 4 rad/s about z and accelerating at
-  // 10 rad/s^2, in free fall (so only the lever-arm terms remain)
+  // GIVEN an IMU 0.1 m forward of the centre of mass, body spinning at 4 rad/s about z and
+  // accelerating at 10 rad/s^2, in free fall (so only the lever-arm terms remain)
   const engine::Environment env = testing::MakeEnvironment();
   Truth truth;
   truth.state.w_B = Vec3(0, 0, 4.0);
@@ -150,8 +150,9 @@ TEST(ImuTest, AllanDeviationAtOneSecondRecoversRandomWalk) {
   // GIVEN the default IMU (1 kHz) at rest for 1000 s
   const ImuConfig config;
   const Record r = RecordAtRest(config, 1000.0, 42);
-  // THEN sigma_A(1 s) equals the noise density: 0.005 deg/s and 240 ug. ~1000 clusters: ~2.4% standard
-  // error; the bias adds < 0.1% in quadrature at 1 s (tau_c = 500-800 s); 10% tolerance (issue's figure).
+  // THEN sigma_A(1 s) equals the noise density: 0.005 deg/s and 240 ug. ~1000 clusters: ~2.4%
+  // standard error; the bias adds < 0.1% in quadrature at 1 s (tau_c = 500-800 s); 10% tolerance
+  // (issue's figure).
   const double gyro = CalcOverlappingAllanDeviation(r.gyro_x, 1e-3, 1000).deviation;
   const double accel = CalcOverlappingAllanDeviation(r.accel_z, 1e-3, 1000).deviation;
   EXPECT_NEAR(gyro / engine::DegToRad(0.005), 1.0, 0.10);
@@ -159,8 +160,9 @@ TEST(ImuTest, AllanDeviationAtOneSecondRecoversRandomWalk) {
 }
 
 TEST(ImuTest, AllanDeviationFlatRegionRecoversBiasInstability) {
-  // GIVEN white noise off and short bias correlation times (2 s and 3 s) so a 20,000 s record at 100 Hz
-  // spans thousands of them (the model does not depend on tau_c except through the Allan curve's position)
+  // GIVEN white noise off and short bias correlation times (2 s and 3 s) so a 20,000 s record at
+  // 100 Hz spans thousands of them (the model does not depend on tau_c except through the Allan
+  // curve's position)
   ImuConfig config;
   config.rate_hz = 100.0;
   config.gyro_noise_density_deg_s_sqrt_hz = 0.0;
@@ -168,11 +170,13 @@ TEST(ImuTest, AllanDeviationFlatRegionRecoversBiasInstability) {
   config.gyro_bias_correlation_s = 2.0;
   config.accel_bias_correlation_s = 3.0;
   const Record r = RecordAtRest(config, 20000.0, 7);
-  // THEN the maximum of the Allan curve (the flat region, near 1.89 tau_c) equals the bias instability:
-  // 4.6 deg/h and 36 ug. >= 3000 clusters near the peak: ~2% standard error; 10% tolerance.
+  // THEN the maximum of the Allan curve (the flat region, near 1.89 tau_c) equals the bias
+  // instability: 4.6 deg/h and 36 ug. >= 3000 clusters near the peak: ~2% standard error; 10%
+  // tolerance.
   const auto peak = [](const std::vector<double>& x) {
     double best = 0.0;
-    for (const AllanPoint& p : CalcAllanDeviationCurve(x, 0.01, 20)) best = std::max(best, p.deviation);
+    for (const AllanPoint& p : CalcAllanDeviationCurve(x, 0.01, 20))
+      best = std::max(best, p.deviation);
     return best;
   };
   EXPECT_NEAR(peak(r.gyro_x) / engine::DegToRad(4.6 / 3600.0), 1.0, 0.10);

@@ -54,8 +54,8 @@ TEST(LidarTest, GroundPlaneRangesMatchHeightOverSineOfElevation) {
   truth.state.p_W = Vec3(3, -4, -10.0);
   ASSERT_TRUE(lidar.Update(truth.At(0, env, &caster)));
   const LidarScan& scan = lidar.latest();
-  // THEN every downward beam (elevation e < 0) returns h / sin(-e) when within 100 m, labelled; upward and
-  // near-horizontal ones do not return
+  // THEN every downward beam (elevation e < 0) returns h / sin(-e) when within 100 m, labelled;
+  // upward and near-horizontal ones do not return
   std::size_t expected_hits = 0;
   for (std::size_t i = 0; i < scan.points.size(); ++i) {
     const double e = Elevation(lidar, i);
@@ -97,7 +97,8 @@ TEST(LidarTest, WallRangesMatchDistanceOverDirectionCosine) {
       continue;
     }
     const double expected = 20.0 / d_W.x();
-    if (expected > 100.0 || std::abs(expected * d_W.y()) > 190.0) continue;  // out of range or near the edge
+    if (expected > 100.0 || std::abs(expected * d_W.y()) > 190.0)
+      continue;  // out of range or near the edge
     ++hits;
     ASSERT_TRUE(scan.points[i].hit) << i;
     EXPECT_NEAR(scan.points[i].range_m, expected, kRelativeTolerance * expected) << i;

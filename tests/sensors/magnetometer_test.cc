@@ -26,7 +26,8 @@ TEST(MagnetometerTest, NoiselessEqualsEnvironmentFieldInBodyAxes) {
     truth.state.p_W = Vec3(100, -50, -30);
     truth.state.q_WB = engine::QuatFromEuler({0.2, -0.1, 0.7});
     mag.Update(truth.At(0, env));
-    const Vec3 expected_G = 1e-5 * (truth.state.q_WB.conjugate() * env.CalcMagneticField_nT(truth.state.p_W));
+    const Vec3 expected_G =
+        1e-5 * (truth.state.q_WB.conjugate() * env.CalcMagneticField_nT(truth.state.p_W));
     EXPECT_NEAR((mag.latest().field_S_gauss - expected_G).norm(), 0.0, 1e-15);
     EXPECT_GT(expected_G.norm(), 0.2);  // Earth's field is 0.25-0.65 G
   }
@@ -75,12 +76,15 @@ TEST(MagnetometerTest, FieldIsReevaluatedAfterMovingTheConfiguredDistance) {
   mag.Update(truth.At(20'000'000, env));
   const Vec3 there = 1e-5 * env.CalcMagneticField_nT(truth.state.p_W);
   EXPECT_NEAR((mag.latest().field_S_gauss - there).norm(), 0.0, 1e-15);
-  EXPECT_GT((there - at_origin).norm(), 1e-4);  // the move is visible: the test can tell the two apart
-  // AND a further 5 m move keeps it (cached), differing from the exact field by far less than the noise
+  EXPECT_GT((there - at_origin).norm(),
+            1e-4);  // the move is visible: the test can tell the two apart
+  // AND a further 5 m move keeps it (cached), differing from the exact field by far less than the
+  // noise
   truth.state.p_W = Vec3(5005, 0, 0);
   mag.Update(truth.At(40'000'000, env));
   EXPECT_EQ(mag.latest().field_S_gauss, there);
-  EXPECT_LT((mag.latest().field_S_gauss - 1e-5 * env.CalcMagneticField_nT(truth.state.p_W)).norm(), 1e-5);
+  EXPECT_LT((mag.latest().field_S_gauss - 1e-5 * env.CalcMagneticField_nT(truth.state.p_W)).norm(),
+            1e-5);
 }
 
 TEST(MagnetometerTest, WhiteNoiseHasConfiguredSigma) {

@@ -17,8 +17,8 @@ using testing::Truth;
 // Embree's single-precision distances: ~1e-6 relative at tens of metres.
 constexpr double kFloatTolerance_m = 1e-4;
 
-// A 1 km ground slab with its top at z = 0 (class 3, instance 9) and a wall whose near face is x = 25 m
-// (class 5, instance 10).
+// A 1 km ground slab with its top at z = 0 (class 3, instance 9) and a wall whose near face is x =
+// 25 m (class 5, instance 10).
 engine::StaticScene GroundAndWall() {
   BoxSpec ground;
   ground.center_W = Vec3(0, 0, 1.0);
@@ -53,7 +53,8 @@ TEST(RangefinderTest, DownwardBeamMeasuresHeightOverCosineOfTilt) {
     ASSERT_TRUE(rf.Update(truth.At(t, env, &caster)));
     // THEN the distance is h / cos(roll) and the ground's labels are reported
     ASSERT_TRUE(rf.latest().hit);
-    EXPECT_NEAR(rf.latest().distance_m, 12.0 / std::cos(engine::DegToRad(roll_deg)), kFloatTolerance_m);
+    EXPECT_NEAR(rf.latest().distance_m, 12.0 / std::cos(engine::DegToRad(roll_deg)),
+                kFloatTolerance_m);
     EXPECT_EQ(rf.latest().class_id, 3);
     EXPECT_EQ(rf.latest().instance_id, 9u);
     EXPECT_EQ(rf.latest().time_ns, t);
@@ -64,7 +65,7 @@ TEST(RangefinderTest, ForwardBeamSeesTheWallAndNotBeyondMaxRange) {
   const engine::Environment env = testing::MakeEnvironment();
   const engine::EmbreeRayCaster caster(GroundAndWall());
   RangefinderConfig c = NoiselessConfig();
-  c.mount.pitch_deg = 0.0;             // beam forward
+  c.mount.pitch_deg = 0.0;               // beam forward
   c.mount.position_m = Vec3(0.5, 0, 0);  // half a metre ahead of the centre of mass
   Rangefinder rf("rf", c, engine::RandomStream(1));
   Truth truth;
@@ -96,7 +97,8 @@ TEST(RangefinderTest, NoiseHasConfiguredSigma) {
     rf.Update(truth.At(static_cast<engine::TimeNs>(k) * 20'000'000, env, &caster));
     ss += std::pow(rf.latest().distance_m - 10.0, 2);
   }
-  // 5000 samples: 1% standard error of sigma; clamping at 0.2 / 40 m is 49 sigma away. 5% tolerance.
+  // 5000 samples: 1% standard error of sigma; clamping at 0.2 / 40 m is 49 sigma away. 5%
+  // tolerance.
   EXPECT_NEAR(std::sqrt(ss / n) / 0.2, 1.0, 0.05);
 }
 

@@ -37,11 +37,14 @@ engine::TriangleMesh MakeUnitBoxMesh() {
   engine::TriangleMesh mesh;
   mesh.name = "primitive:box";
   mesh.primitive = engine::Primitive::kBox;
-  // Each face: outward normal n and two in-plane axes u, v with u x v = n, so (0, 1, 2) and (0, 2, 3) over
-  // corners c - u - v, c + u - v, c + u + v, c - u + v run counter-clockwise seen from outside.
-  const Eigen::Vector3f normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  // Each face: outward normal n and two in-plane axes u, v with u x v = n, so (0, 1, 2) and (0, 2,
+  // 3) over corners c - u - v, c + u - v, c + u + v, c - u + v run counter-clockwise seen from
+  // outside.
+  const Eigen::Vector3f normals[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   for (const Eigen::Vector3f& n : normals) {
-    const Eigen::Vector3f helper = std::abs(n.x()) > 0.5f ? Eigen::Vector3f::UnitY() : Eigen::Vector3f::UnitX();
+    const Eigen::Vector3f helper =
+        std::abs(n.x()) > 0.5f ? Eigen::Vector3f::UnitY() : Eigen::Vector3f::UnitX();
     const Eigen::Vector3f u = 0.5f * helper.cross(n).normalized();
     const Eigen::Vector3f v = 0.5f * n.cross(u).normalized();
     const Eigen::Vector3f c = 0.5f * n;
@@ -69,9 +72,8 @@ engine::StaticScene MakeBoxScene(const std::vector<BoxSpec>& boxes) {
   for (const BoxSpec& b : boxes) {
     engine::StaticObject o;
     o.model = 0;
-    o.T_WO = Eigen::Translation3d(b.center_W) *
-             Eigen::AngleAxisd(b.yaw_rad, Vec3::UnitZ()) * Eigen::AngleAxisd(b.pitch_rad, Vec3::UnitY()) *
-             Eigen::Scaling(b.size_m);
+    o.T_WO = Eigen::Translation3d(b.center_W) * Eigen::AngleAxisd(b.yaw_rad, Vec3::UnitZ()) *
+             Eigen::AngleAxisd(b.pitch_rad, Vec3::UnitY()) * Eigen::Scaling(b.size_m);
     o.class_id = b.class_id;
     o.instance_id = b.instance_id;
     o.collision = b.collision;

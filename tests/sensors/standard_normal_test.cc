@@ -23,8 +23,8 @@ TEST(StandardNormalTest, MomentsMatchTheNormalDistribution) {
     s3 += x * x * x;
     s4 += x * x * x * x;
   }
-  // THEN mean 0, variance 1, skewness 0, kurtosis 3. Standard errors for n = 4e6: mean 5e-4, variance
-  // 7e-4, skewness 1.2e-3, kurtosis 2.4e-3; tolerances are about 5 of them.
+  // THEN mean 0, variance 1, skewness 0, kurtosis 3. Standard errors for n = 4e6: mean 5e-4,
+  // variance 7e-4, skewness 1.2e-3, kurtosis 2.4e-3; tolerances are about 5 of them.
   EXPECT_NEAR(s1 / n, 0.0, 0.0025);
   EXPECT_NEAR(s2 / n, 1.0, 0.0035);
   EXPECT_NEAR(s3 / n, 0.0, 0.006);
@@ -44,8 +44,8 @@ TEST(StandardNormalTest, DistributionAndTailsMatchTheNormalCdf) {
     d = std::max({d, std::abs(cdf - double(i) / n), std::abs(cdf - double(i + 1) / n)});
   }
   EXPECT_LT(d, 0.00195);
-  // The tail beyond r = 3.654 comes from a separate branch: P(|x| > 4) = 6.33e-5, ~63 of 1e6 (Poisson
-  // sd 8); P(|x| > 3) = 2.70e-3 (2700, sd 52).
+  // The tail beyond r = 3.654 comes from a separate branch: P(|x| > 4) = 6.33e-5, ~63 of 1e6
+  // (Poisson sd 8); P(|x| > 3) = 2.70e-3 (2700, sd 52).
   const auto beyond = [&](double t) {
     return std::count_if(x.begin(), x.end(), [t](double v) { return std::abs(v) > t; });
   };
