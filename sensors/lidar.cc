@@ -29,13 +29,28 @@ void LidarConfig::Validate() const {
                   "must be > min_range_m (got " + engine::FormatNumber(max_range_m) +
                       " <= " + engine::FormatNumber(min_range_m) + ")");
   engine::RequireNonNegative("range_noise_m", range_noise_m);
-  engine::Require(static_cast<double>(channels) * CalcColumns() <= 1e7, "horizontal_resolution_deg",
-                  "gives more than 10,000,000 points per scan");
+  engine::Require(channel_elevations_deg.size() <= 1024, "channel_elevations_deg",
+                  "must list at most 1024 channels");
+  for (std::size_t i = 0; i < channel_elevations_deg.size(); ++i) {
+    engine::RequireInRange("channel_elevations_deg[" + std::to_string(i) + "]",
+                           channel_elevations_deg[i], -90.0, 90.0);
+  }
+  engine::Require(static_cast<double>(CalcElevations_deg().size()) * CalcColumns() <= 1e7,
+                  "horizontal_resolution_deg", "gives more than 10,000,000 points per scan");
 }
 
 void LidarConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
   Validate();
   RequireRateWithinPhysics("rotation_rate_hz", rotation_rate_hz, physics_rate_hz);
+}
+
+std::vector<double> LidarConfig::CalcElevations_deg() const {
+  if (!channel_elevations_deg.empty()) return channel_elevations_deg;
+  std::vector<double> out(static_cast<std::size_t>(std::max(channels, 0)));
+  const double step =
+      channels > 1 ? (vertical_fov_upper_deg - vertical_fov_lower_deg) / (channels - 1) : 0.0;
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = vertical_fov_lower_deg + step * k;
+  return out;
 }
 
 int LidarConfig::CalcColumns() const {
@@ -47,22 +62,18 @@ Lidar::Lidar(std::string name, const LidarConfig& config, engine::RandomStream s
       config_(config),
       stream_(stream) {
   const int columns = config.CalcColumns();
-  const int channels = config.channels;
-  const std::size_t n = static_cast<std::size_t>(columns) * channels;
+  const std::vector<double> elevations_deg = config.CalcElevations_deg();
+  const auto channels = static_cast<int>(elevations_deg.size());
+  const std::size_t n = static_cast<std::size_t>(columns) * elevations_deg.size();
   // Full turns start at azimuth 0; partial sweeps are centred on the sensor's x axis.
   const double step_deg = config.horizontal_fov_deg / columns;
   const double first_azimuth_deg =
       config.horizontal_fov_deg >= 360.0 ? 0.0 : -0.5 * config.horizontal_fov_deg + 0.5 * step_deg;
-  const double elevation_step_deg =
-      channels > 1
-          ? (config.vertical_fov_upper_deg - config.vertical_fov_lower_deg) / (channels - 1)
-          : 0.0;
   directions_S_.reserve(n);
   for (int c = 0; c < columns; ++c) {
     const double azimuth = engine::DegToRad(first_azimuth_deg + c * step_deg);
-    for (int k = 0; k < channels; ++k) {
-      const double elevation =
-          engine::DegToRad(config.vertical_fov_lower_deg + k * elevation_step_deg);
+    for (double elevation_deg : elevations_deg) {
+      const double elevation = engine::DegToRad(elevation_deg);
       directions_S_.emplace_back(static_cast<float>(std::cos(elevation) * std::cos(azimuth)),
                                  static_cast<float>(std::cos(elevation) * std::sin(azimuth)),
                                  static_cast<float>(-std::sin(elevation)));

@@ -20,9 +20,12 @@ struct LidarConfig {
   double rotation_rate_hz = 10.0;  ///< rotations (= scans) per simulated second
   engine::MountConfig mount;       ///< sensor frame: x = azimuth 0, z = rotation axis (down in FRD)
   int channels = 16;               ///< lasers, spread evenly from the lower to the upper elevation
-  double vertical_fov_upper_deg =
-      15.0;  ///< elevation of the top channel (above the sensor's x-y plane)
-  double vertical_fov_lower_deg = -15.0;     ///< elevation of the bottom channel
+  /// Elevation of the top channel, above the sensor's x-y plane (deg).
+  double vertical_fov_upper_deg = 15.0;
+  double vertical_fov_lower_deg = -15.0;  ///< elevation of the bottom channel (deg)
+  /// Explicit elevation of each channel (deg), for lidars with uneven spacing; when not empty it
+  /// replaces channels and the vertical field of view.
+  std::vector<double> channel_elevations_deg;
   double horizontal_fov_deg = 360.0;         ///< swept azimuth; 360 = full rotation
   double horizontal_resolution_deg = 0.576;  ///< azimuth step between columns
   double min_range_m = 0.5;                  ///< nearer surfaces are not seen
@@ -37,6 +40,8 @@ struct LidarConfig {
     v.Field("vertical_fov_upper_deg", vertical_fov_upper_deg, "elevation of the top channel (deg)");
     v.Field("vertical_fov_lower_deg", vertical_fov_lower_deg,
             "elevation of the bottom channel (deg)");
+    v.Field("channel_elevations_deg", channel_elevations_deg,
+            "elevation of each channel (deg); replaces channels and the vertical fov when given");
     v.Field("horizontal_fov_deg", horizontal_fov_deg, "swept azimuth, up to 360 (deg)");
     v.Field("horizontal_resolution_deg", horizontal_resolution_deg, "azimuth step (deg)");
     v.Field("min_range_m", min_range_m, "minimum range (m)");
@@ -48,6 +53,8 @@ struct LidarConfig {
   /// Validate() plus rotation_rate_hz <= physics_rate_hz.
   void ValidateForPhysicsRate(double physics_rate_hz) const;
 
+  /// Elevation of each channel (deg), bottom first unless channel_elevations_deg says otherwise.
+  std::vector<double> CalcElevations_deg() const;
   /// Columns per scan: round(horizontal_fov_deg / horizontal_resolution_deg), at least 1.
   int CalcColumns() const;
 };

@@ -40,6 +40,25 @@ TEST(LidarTest, DefaultIsVlp16Class) {
   EXPECT_NEAR(engine::RadToDeg(Azimuth(lidar, 16)), 0.576, 1e-4);
 }
 
+TEST(LidarTest, ExplicitChannelElevationsReplaceTheEvenSpread) {
+  LidarConfig c;
+  c.channel_elevations_deg = {-30.0, -10.0, -1.0, 2.0, 10.5};
+  c.horizontal_resolution_deg = 1.0;
+  Lidar lidar("lidar", c, engine::RandomStream(1));
+  EXPECT_EQ(lidar.latest().channels, 5);
+  EXPECT_EQ(lidar.latest().columns, 360);
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_NEAR(engine::RadToDeg(Elevation(lidar, 5 * 7 + k)), c.channel_elevations_deg[k], 1e-4);
+  }
+  c.channel_elevations_deg[3] = 95.0;
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "channel_elevations_deg[3]");
+  }
+}
+
 TEST(LidarTest, GroundPlaneRangesMatchHeightOverSineOfElevation) {
   // GIVEN a level lidar 10 m above a 1 km ground slab
   BoxSpec ground;
