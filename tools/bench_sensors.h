@@ -9,23 +9,33 @@ struct SensorBenchOptions {
   int city_boxes = 10000;         ///< boxes in the lidar scene (one shared mesh, instanced)
   double city_extent_m = 1000.0;  ///< side of the square they are scattered over
   int lidar_scans = 40;           ///< VLP-16 scans timed (10,000 rays each)
-  double sensor_seconds = 20.0;   ///< simulated seconds of the reference quad's sensors at 1 kHz
+  double sensor_seconds = 100.0;  ///< simulated seconds of the reference quad's sensors at 1 kHz
 };
 
-/// Runs the sensor benchmarks on the calling thread and returns their results (wall-clock, this
-/// machine):
-///   lidar_rays_per_s        rays per second cast by one core through the Embree caster, VLP-16
-///   scans from
-///                           random poses 20-80 m up in a city of `city_boxes` boxes over
-///                           `city_extent_m`
-///   lidar_hit_fraction      fraction of those rays that returned
-///   caster_build_s          time to build the Embree scene of the city
-///   imu_ns, barometer_ns, magnetometer_ns, gps_ns, rangefinder_ns   cost of one Sample (ns)
-///   reference_quad_sensors_ns_per_tick   IMU 1 kHz + barometer 50 Hz + magnetometer 50 Hz + GPS 10
-///   Hz,
-///                           driven through Sensor::Update on every 1 kHz tick, amortised per tick
-///   ticks_per_s_bare / ticks_per_s_with_sensors   null with a note: they need the World (for the
-///   lead)
+/// Simulation ticks per wall-clock second of the reference quad-x hovering in an empty world,
+/// without sensors and with IMU (1 kHz), barometer and magnetometer (50 Hz) and GPS (10 Hz).
+struct QuadTickRates {
+  double bare_ticks_per_s = 0.0;
+  double with_sensors_ticks_per_s = 0.0;
+};
+/// Measures QuadTickRates over about `seconds` of simulated time each (alternating rounds, best
+/// kept).
+QuadTickRates MeasureReferenceQuadTicks(double seconds = 20.0);
+
+/// Runs the sensor benchmarks on the calling thread and returns their results, timed in that
+/// thread's CPU time (so other processes on the machine do not inflate them; the caster build uses
+/// Embree's worker threads and is wall clock):
+/// - lidar_rays_per_s: rays per second one core casts through the Embree caster, VLP-16 scans from
+/// random
+///   poses 20-80 m up in a city of `city_boxes` boxes over `city_extent_m`; lidar_hit_fraction: the
+///   share that returned; caster_build_s: time to build the city's Embree scene.
+/// - imu_ns, barometer_ns, magnetometer_ns, gps_ns, rangefinder_ns: cost of one sample.
+/// - reference_quad_sensors_ns_per_tick: IMU 1 kHz + barometer 50 Hz + magnetometer 50 Hz + GPS 10
+/// Hz
+///   driven through Sensor::Update on every 1 kHz tick, amortised per tick.
+/// - ticks_per_s_bare, ticks_per_s_with_sensors, sensor_overhead_fraction:
+/// MeasureReferenceQuadTicks over
+///   `sensor_seconds`.
 nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options = {});
 
 }  // namespace airis::tools

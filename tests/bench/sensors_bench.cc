@@ -13,6 +13,7 @@
 #include "sensors/magnetometer.h"
 #include "sensors/rangefinder.h"
 #include "tests/sensors/sensor_test_util.h"
+#include "tools/bench_sensors.h"
 
 namespace airis::sensors {
 namespace {
@@ -141,6 +142,18 @@ void BM_EmbreeIncoherentRaysCity(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rays.size()));
 }
 
+// Whole simulation ticks of the reference quad hovering in an empty world, without and with its
+// four sensors; the ratio is what the sensors add to a tick. Reported as ticks per second via
+// items.
+void BM_QuadTickRates(benchmark::State& state) {
+  tools::QuadTickRates rates;
+  for (auto _ : state) rates = tools::MeasureReferenceQuadTicks(200.0);
+  state.counters["bare_ticks_per_s"] = rates.bare_ticks_per_s;
+  state.counters["with_sensors_ticks_per_s"] = rates.with_sensors_ticks_per_s;
+  state.counters["bare_ns_per_tick"] = 1e9 / rates.bare_ticks_per_s;
+  state.counters["with_sensors_ns_per_tick"] = 1e9 / rates.with_sensors_ticks_per_s;
+}
+
 BENCHMARK(BM_ImuSample);
 BENCHMARK(BM_BarometerSample);
 BENCHMARK(BM_MagnetometerSampleWmm);
@@ -150,6 +163,7 @@ BENCHMARK(BM_RangefinderSampleCity);
 BENCHMARK(BM_ReferenceQuadSensorsPerTick);
 BENCHMARK(BM_LidarScanCity)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EmbreeIncoherentRaysCity)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_QuadTickRates)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace airis::sensors
