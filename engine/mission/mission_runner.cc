@@ -11,7 +11,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTakeoffTolerance_m = 0.3;
 constexpr double kSettledSpeed_m_s = 0.3;
-constexpr double kPathEndTolerance_m = 1.0;
 constexpr double kYawTolerance_rad = 2.0 * kPi / 180.0;
 
 double WrapPi(double a) { return std::remainder(a, 2.0 * kPi); }
@@ -103,7 +102,9 @@ MissionRunner::State MissionRunner::Update(const MissionInput& input, VehicleCom
       Fail(input.now_ns, Format("timed out after %.1f s, %.2f m from its target", elapsed_s, distance));
       break;
     }
-    if (!RunStep(input, command)) break;
+    const bool done = RunStep(input, command);
+    last_command_ = *command;
+    if (!done) break;
     FinishStep(input.now_ns);
   }
   last_ns_ = input.now_ns;
@@ -117,7 +118,12 @@ void MissionRunner::StartStep(const MissionInput& input) {
   step_start_ns_ = input.now_ns;
   last_ns_ = input.now_ns;
   events_.push_back({input.now_ns, step_index_, std::string(StepKindName(step.spec)), "started"});
-  hold_ = HoldAt(s.p_W, YawOf(s));
+  // Hold steps keep the previous target (a goto's point, a path's end) rather than where the vehicle was.
+  const bool had_target = last_command_.mode == CommandMode::kPosition;
+  hold_ = had_target ? last_command_ : HoldAt(s.p_W, YawOf(s));
+  hold_.velocity_W.setZero();
+  hold_.acceleration_W.setZero();
+  hold_.speed_limit_m_s = 0.0;
   double nominal_s = 0.0;
   double timeout_s = 0.0;
   path_.reset();
@@ -129,13 +135,14 @@ void MissionRunner::StartStep(const MissionInput& input) {
     points.insert(points.begin(), s.p_W);
     path_ = std::make_unique<Path>(points, corner_radius_m);
     path_speed_m_s_ = speed_m_s;
+    path_ref_speed_m_s_ = 0.0;
     path_yaw_rad_ = yaw_deg ? std::optional<double>(DegToRad(*yaw_deg)) : std::nullopt;
     hold_.position_W = path_->PositionAt(path_->length_m());
     nominal_s = path_->length_m() / speed_m_s;
   };
 
   if (const auto* t = std::get_if<TakeoffStep>(&step.spec)) {
-    hold_.position_W = Vec3(s.p_W.x(), s.p_W.y(), home_W_.z() - t->altitude_m);
+    hold_ = HoldAt(Vec3(s.p_W.x(), s.p_W.y(), home_W_.z() - t->altitude_m), YawOf(s));
     nominal_s = std::abs(hold_.position_W.z() - s.p_W.z());
     timeout_s = t->timeout_s;
   } else if (const auto* g = std::get_if<GotoStep>(&step.spec)) {
@@ -177,6 +184,7 @@ void MissionRunner::StartStep(const MissionInput& input) {
     timeout_s = y->timeout_s;
   } else if (const auto* l = std::get_if<LandStep>(&step.spec)) {
     hold_.mode = CommandMode::kLand;
+    if (!had_target) hold_.position_W = s.p_W;
     nominal_s = std::abs(home_W_.z() - s.p_W.z());  // height to lose at ~1 m/s
     timeout_s = l->timeout_s;
   } else if (const auto* w = std::get_if<WaitStep>(&step.spec)) {
@@ -195,10 +203,25 @@ bool MissionRunner::FollowPath(const MissionInput& input, double dt_s, VehicleCo
   const double error = (p - path_->PositionAt(path_s_m_)).norm();
   if (path_s_m_ > 0.0) max_tracking_error_m_ = std::max(max_tracking_error_m_, error);
   const bool advancing = error < MaxLead(path_speed_m_s_) && path_s_m_ < path_->length_m();
-  if (advancing) path_s_m_ = std::min(path_->length_m(), path_s_m_ + path_speed_m_s_ * dt_s);
+  const double previous_speed = path_ref_speed_m_s_;
+  if (advancing) {
+    // Speed profile: ramp at kPathAccel, slow for corners ahead and for the end (CalcSpeedLimit).
+    const double limit = path_->CalcSpeedLimit(path_s_m_, path_speed_m_s_, kPathLateralAccel_m_s2,
+                                               kPathAccel_m_s2);
+    path_ref_speed_m_s_ = std::min(path_ref_speed_m_s_ + kPathAccel_m_s2 * dt_s, limit);
+    // Near the end the limit can reach 0 before s does: keep a crawl so the reference arrives.
+    path_s_m_ = std::min(path_->length_m(), path_s_m_ + std::max(path_ref_speed_m_s_, 0.05) * dt_s);
+  } else {
+    path_ref_speed_m_s_ = 0.0;
+  }
   const Vec3 tangent = path_->TangentAt(path_s_m_);
   VehicleCommand c = HoldAt(path_->PositionAt(path_s_m_), command->yaw_rad);
-  c.velocity_W = advancing ? Vec3(tangent * path_speed_m_s_) : Vec3::Zero();
+  c.velocity_W = advancing ? Vec3(tangent * path_ref_speed_m_s_) : Vec3::Zero();
+  if (advancing && dt_s > 0.0) {
+    // Acceleration feed-forward: along the path (speed change) and toward the corner's centre (v^2 / r).
+    c.acceleration_W = tangent * ((path_ref_speed_m_s_ - previous_speed) / dt_s) +
+                       path_ref_speed_m_s_ * path_ref_speed_m_s_ * path_->CurvatureAt(path_s_m_);
+  }
   c.speed_limit_m_s = 1.5 * path_speed_m_s_;
   if (path_yaw_rad_) {
     c.yaw_rad = *path_yaw_rad_;
@@ -247,6 +270,10 @@ bool MissionRunner::RunStep(const MissionInput& input, VehicleCommand* command) 
     const Vec3 tangent(-direction * std::sin(phi), direction * std::cos(phi), 0.0);
     VehicleCommand c = HoldAt(reference(orbit_travelled_rad_), 0.0);
     c.velocity_W = advancing ? Vec3(tangent * o->speed_m_s) : Vec3::Zero();
+    if (advancing) {
+      // Centripetal feed-forward v^2 / r toward the centre.
+      c.acceleration_W = -(o->speed_m_s * o->speed_m_s / o->radius_m) * Vec3(std::cos(phi), std::sin(phi), 0.0);
+    }
     c.speed_limit_m_s = 1.5 * o->speed_m_s;
     const Vec3 to_center = o->center_ned_m - s.p_W;
     c.yaw_rad = o->face_center ? std::atan2(to_center.y(), to_center.x())

@@ -50,9 +50,18 @@ struct MissionEvent {
 ///
 /// Automatic timeouts (step `timeout_s: 0`): 3x the step's nominal duration (distance / speed, turns x circle /
 /// speed, ...) plus 30 s. Takeoff and land assume 1 m/s vertical for their nominal duration.
+///
+/// Paths and surveys move a reference point along the path whose speed ramps up and down at kPathAccel_m_s2,
+/// slows for corners so that v^2 / r <= kPathLateralAccel_m_s2, and comes to rest at the end: a multirotor can
+/// follow it closely. A step that holds (hover, yaw, land) holds the previous step's target when there was one,
+/// not wherever the vehicle happened to be when that step finished.
 class MissionRunner {
  public:
   enum class State { kRunning, kSucceeded, kFailed };
+
+  static constexpr double kPathAccel_m_s2 = 2.0;         ///< along-path acceleration of the reference
+  static constexpr double kPathLateralAccel_m_s2 = 3.0;  ///< centripetal acceleration allowed in corners
+  static constexpr double kPathEndTolerance_m = 0.3;     ///< a path is done within this of its end
 
   /// @param frame the world's geodetic frame (for geodetic goto). @param host may be null when the mission
   /// has no capture, set_wind or random_poses step (AIRIS_DEMAND otherwise).
@@ -103,7 +112,9 @@ class MissionRunner {
   VehicleCommand hold_;                 // the command a step holds (position, yaw)
   std::unique_ptr<Path> path_;          // path, survey
   double path_s_m_ = 0.0;               // reference arc length along path_
-  double path_speed_m_s_ = 0.0;
+  double path_speed_m_s_ = 0.0;     // the step's cruise speed
+  double path_ref_speed_m_s_ = 0.0; // current speed of the reference
+  VehicleCommand last_command_;     // what the vehicle was last told (a new step holds its target)
   std::optional<double> path_yaw_rad_;  // fixed heading, or face travel
   double orbit_phase_rad_ = 0.0;
   double orbit_travelled_rad_ = 0.0;

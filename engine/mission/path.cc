@@ -92,6 +92,31 @@ Vec3 Path::TangentAt(double s_m) const {
   return std::sin(phi) * p.normal + std::cos(phi) * p.direction;
 }
 
+Vec3 Path::CurvatureAt(double s_m) const {
+  const double s = std::clamp(s_m, 0.0, length_m_);
+  const Piece& p = PieceAt(s);
+  if (p.radius_m == 0.0) return Vec3::Zero();
+  const double phi = std::clamp(s - p.s0_m, 0.0, p.length_m) / p.radius_m;
+  // Toward the centre: cos(phi) n - sin(phi) d (the derivative of the tangent).
+  return (std::cos(phi) * p.normal - std::sin(phi) * p.direction) / p.radius_m;
+}
+
+double Path::CalcSpeedLimit(double s_m, double max_speed_m_s, double lateral_accel_m_s2,
+                            double decel_m_s2) const {
+  const double s = std::clamp(s_m, 0.0, length_m_);
+  // Stop at the end: v^2 = 2 a d.
+  double v = std::min(max_speed_m_s, std::sqrt(2.0 * decel_m_s2 * (length_m_ - s)));
+  // Corners ahead, nearest first; once braking distance alone allows max speed, farther ones cannot limit.
+  for (auto it = pieces_.begin() + (&PieceAt(s) - pieces_.data()); it != pieces_.end(); ++it) {
+    const double distance = std::max(0.0, it->s0_m - s);
+    if (2.0 * decel_m_s2 * distance > max_speed_m_s * max_speed_m_s) break;
+    if (it->radius_m == 0.0) continue;
+    const double v_corner_sq = lateral_accel_m_s2 * it->radius_m;
+    v = std::min(v, std::sqrt(v_corner_sq + 2.0 * decel_m_s2 * distance));
+  }
+  return v;
+}
+
 std::vector<Vec3> CalcLawnmowerWaypoints(std::span<const Vec3> polygon_ned_m, double spacing_m,
                                          double heading_rad, double down_m) {
   AIRIS_DEMAND(spacing_m > 0.0);

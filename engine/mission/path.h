@@ -21,6 +21,13 @@ class Path {
   Vec3 PositionAt(double s_m) const;
   /// Unit tangent (direction of travel) at arc length `s_m`; the first leg's direction for a 1-point path is +x.
   Vec3 TangentAt(double s_m) const;
+  /// Curvature vector at arc length `s_m`: the unit normal toward the centre of the turn divided by its radius
+  /// (1/m); zero on straight legs. Centripetal acceleration at speed v is v^2 times this.
+  Vec3 CurvatureAt(double s_m) const;
+  /// Highest speed at arc length `s_m` from which a vehicle braking at `decel_m_s2` can take every corner ahead
+  /// with at most `lateral_accel_m_s2` (v^2 / r) and stop at the end of the path; capped at `max_speed_m_s`.
+  double CalcSpeedLimit(double s_m, double max_speed_m_s, double lateral_accel_m_s2,
+                        double decel_m_s2) const;
 
  private:
   struct Piece {

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <array>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 #include "engine/core/clock.h"
@@ -10,6 +12,7 @@
 #include "engine/physics/rigid_body.h"
 #include "engine/physics/rigid_body_state.h"
 #include "engine/world/sensor.h"
+#include "engine/world/vehicle_command.h"
 
 namespace airis::engine {
 
@@ -67,6 +70,21 @@ class Vehicle {
   /// Advances the actuator dynamics (motor lag, tilt rate limits) over the step starting at context.now_ns
   /// and returns the wrench to hold over that step. Called once per tick by the Simulation; allocation-free.
   virtual Wrench UpdateActuators(const ActuatorContext& context) = 0;
+
+  /// Tells the vehicle what to do (missions, bridges, learning code). This default, for a vehicle without a
+  /// flight controller, accepts kDisarmed (all actuators 0) and kMotors (the first actuator_count() values
+  /// of command.motors) and throws std::invalid_argument for any other mode.
+  virtual void SetCommand(const VehicleCommand& command) {
+    std::array<double, kMaxActuators> u{};
+    if (command.mode == CommandMode::kMotors) u = command.motors;
+    if (command.mode != CommandMode::kMotors && command.mode != CommandMode::kDisarmed) {
+      throw std::invalid_argument("vehicle '" + name_ +
+                                  "' has no flight controller: it takes only motor commands and disarm");
+    }
+    SetActuatorCommands(std::span<const double>(u.data(), static_cast<std::size_t>(actuator_count())));
+  }
+  /// True once the vehicle's controller has detected touchdown after a land command and disarmed.
+  virtual bool landed() const { return false; }
 
   /// Controller hook, called at the end of every tick after the sensors sampled (a flight controller reads
   /// its sensors here and sets the commands for the next tick). The default does nothing (open loop).

@@ -25,6 +25,7 @@ struct VehicleCommand {
   CommandMode mode = CommandMode::kDisarmed;
   Vec3 position_W = Vec3::Zero();          ///< kPosition, kLand (horizontal hold), world NED (m)
   Vec3 velocity_W = Vec3::Zero();          ///< kVelocity; feed-forward in kPosition (m/s)
+  Vec3 acceleration_W = Vec3::Zero();      ///< feed-forward in kPosition and kVelocity (m/s^2)
   double speed_limit_m_s = 0.0;            ///< kPosition: cap on speed toward the target, 0 = none
   double yaw_rad = 0.0;                    ///< heading for kVelocity, kPosition, kLand (0 = north)
   Quat attitude_WB = Quat::Identity();     ///< kAttitudeThrust

@@ -21,6 +21,23 @@ TEST(PathTest, RightAngleCornerIsAQuarterCircleOfTheGivenRadius) {
   EXPECT_LT((path.PositionAt(path.length_m()) - Vec3(10, 10, 0)).norm(), 1e-12);
   EXPECT_LT((path.TangentAt(0.0) - Vec3::UnitX()).norm(), 1e-12);
   EXPECT_LT((path.TangentAt(path.length_m()) - Vec3::UnitY()).norm(), 1e-12);
+  // Curvature: 1/r toward the centre on the arc, zero on the legs.
+  const double mid_arc = 8.0 + M_PI / 2;
+  EXPECT_LT((path.CurvatureAt(mid_arc) - (Vec3(8, 2, 0) - path.PositionAt(mid_arc)) / 4.0).norm(), 1e-12);
+  EXPECT_EQ(path.CurvatureAt(4.0), Vec3::Zero());
+}
+
+TEST(PathTest, SpeedLimitSlowsForCornersAndStopsAtTheEnd) {
+  const std::vector<Vec3> pts = {Vec3(0, 0, 0), Vec3(100, 0, 0), Vec3(100, 100, 0)};
+  const Path path(pts, 2.0);  // corner arc starts at s = 98
+  // In the corner: sqrt(a_lat r) = sqrt(3 * 2).
+  EXPECT_NEAR(path.CalcSpeedLimit(99.0, 10.0, 3.0, 2.0), std::sqrt(6.0), 1e-12);
+  // 10 m before it: sqrt(6 + 2 * 2 * 10).
+  EXPECT_NEAR(path.CalcSpeedLimit(88.0, 10.0, 3.0, 2.0), std::sqrt(46.0), 1e-12);
+  // Far from corner and end: the cruise speed.
+  EXPECT_EQ(path.CalcSpeedLimit(10.0, 10.0, 3.0, 2.0), 10.0);
+  // 1 m from the end: sqrt(2 * 2 * 1).
+  EXPECT_NEAR(path.CalcSpeedLimit(path.length_m() - 1.0, 10.0, 3.0, 2.0), 2.0, 1e-12);
 }
 
 TEST(PathTest, PositionAndTangentAreContinuous) {

@@ -39,7 +39,7 @@ FlightController MakeController() {
 TEST(FlightControllerTest, DisarmedCommandsZero) {
   FlightController fc = MakeController();
   std::vector<double> u(4, 0.5);
-  fc.Update(kDt, engine::RigidBodyState{}, kG, u);
+  fc.Update(kDt, engine::RigidBodyState{}, kG, 1.0, u);
   for (double ui : u) EXPECT_EQ(ui, 0.0);
 }
 
@@ -52,7 +52,7 @@ TEST(FlightControllerTest, AtItsTargetItCommandsHoverThrustAndNoMoments) {
   engine::RigidBodyState s;
   s.p_W = t.position_W;
   std::vector<double> u(4);
-  fc.Update(kDt, s, kG, u);
+  fc.Update(kDt, s, kG, 1.0, u);
   // Hover: m g / (4 F_max) on every rotor (parameters.md: 0.58660).
   for (double ui : u) EXPECT_NEAR(ui, 0.58660, 1e-5);
 }
@@ -66,7 +66,7 @@ TEST(FlightControllerTest, TargetToTheNorthPitchesTheNoseDown) {
   engine::RigidBodyState s;
   s.p_W = Vec3(0, 0, -10);
   std::vector<double> u(4);
-  fc.Update(kDt, s, kG, u);
+  fc.Update(kDt, s, kG, 1.0, u);
   // Nose down = negative pitch torque in FRD: the rear rotors (1: RL, 3: RR) push harder than the front ones.
   const WrenchSetpoint w = fc.allocator().CalcWrench(u);
   EXPECT_LT(w.torque_B.y(), 0.0);
@@ -81,7 +81,7 @@ TEST(FlightControllerTest, YawSetpointTurnsTheRightWay) {
   t.yaw_rad = 0.5;  // heading east of north: positive yaw in NED/FRD
   fc.SetTarget(t);
   std::vector<double> u(4);
-  fc.Update(kDt, engine::RigidBodyState{}, kG, u);
+  fc.Update(kDt, engine::RigidBodyState{}, kG, 1.0, u);
   EXPECT_GT(fc.allocator().CalcWrench(u).torque_B.z(), 0.0);
 }
 
@@ -92,7 +92,7 @@ TEST(FlightControllerTest, AttitudeModeUsesTheThrustFraction) {
   t.thrust_fraction = 0.25;
   fc.SetTarget(t);
   std::vector<double> u(4);
-  fc.Update(kDt, engine::RigidBodyState{}, kG, u);
+  fc.Update(kDt, engine::RigidBodyState{}, kG, 1.0, u);
   for (double ui : u) EXPECT_NEAR(ui, 0.25, 1e-12);
 }
 
@@ -103,7 +103,7 @@ TEST(FlightControllerTest, MotorModePassesCommandsThroughClamped) {
   t.motors = {0.1, 1.5, -0.2, 0.7};
   fc.SetTarget(t);
   std::vector<double> u(4);
-  fc.Update(kDt, engine::RigidBodyState{}, kG, u);
+  fc.Update(kDt, engine::RigidBodyState{}, kG, 1.0, u);
   EXPECT_EQ(u, (std::vector<double>{0.1, 1.0, 0.0, 0.7}));
 }
 
@@ -116,9 +116,9 @@ TEST(FlightControllerTest, LandDisarmsAfterTouchdownTime) {
   fc.SetTarget(t);
   std::vector<double> u(4);
   const int ticks = static_cast<int>(FlightControllerConfig{}.touchdown_time_s / kDt);
-  for (int i = 0; i < ticks - 2; ++i) fc.Update(kDt, engine::RigidBodyState{}, kG, u);
+  for (int i = 0; i < ticks - 2; ++i) fc.Update(kDt, engine::RigidBodyState{}, kG, 1.0, u);
   EXPECT_FALSE(fc.landed());
-  for (int i = 0; i < 3; ++i) fc.Update(kDt, engine::RigidBodyState{}, kG, u);
+  for (int i = 0; i < 3; ++i) fc.Update(kDt, engine::RigidBodyState{}, kG, 1.0, u);
   EXPECT_TRUE(fc.landed());
   for (double ui : u) EXPECT_EQ(ui, 0.0);
 }

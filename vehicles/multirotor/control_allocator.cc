@@ -9,7 +9,7 @@
 namespace airis::vehicles {
 namespace {
 
-using CommandVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ControlAllocator::kMaxActuators, 1>;
+using CommandVector = Eigen::Matrix<double, ControlAllocator::kMaxActuators, 1>;
 
 Eigen::Matrix<double, 4, Eigen::Dynamic> BuildEffectiveness(std::span<const ActuatorEffect> effects) {
   Eigen::Matrix<double, 4, Eigen::Dynamic> B(4, static_cast<Eigen::Index>(effects.size()));
@@ -21,10 +21,10 @@ Eigen::Matrix<double, 4, Eigen::Dynamic> BuildEffectiveness(std::span<const Actu
   return B;
 }
 
-// Largest k in [0, 1] such that lo <= base + k * delta <= hi element-wise (base assumed inside).
-double MaxScaleWithin(const CommandVector& base, const CommandVector& delta, double lo, double hi) {
+// Largest k in [0, 1] such that lo <= base + k * delta <= hi for the first n elements (base assumed inside).
+double MaxScaleWithin(const CommandVector& base, const CommandVector& delta, int n, double lo, double hi) {
   double k = 1.0;
-  for (Eigen::Index i = 0; i < base.size(); ++i) {
+  for (int i = 0; i < n; ++i) {
     if (delta[i] > 1e-12) k = std::min(k, (hi - base[i]) / delta[i]);
     if (delta[i] < -1e-12) k = std::min(k, (lo - base[i]) / delta[i]);
   }
@@ -44,13 +44,13 @@ bool ControlAllocator::CanControl(std::span<const ActuatorEffect> effects) {
 
 ControlAllocator::ControlAllocator(std::span<const ActuatorEffect> effects) {
   AIRIS_DEMAND(CanControl(effects));
-  B_ = BuildEffectiveness(effects);
-  // B+ = B^T (B B^T)^-1: B has full row rank 4.
+  count_ = static_cast<int>(effects.size());
+  B_.leftCols(count_) = BuildEffectiveness(effects);
+  // B+ = B^T (B B^T)^-1: B has full row rank 4 (the zero padding adds nothing to B B^T).
   const Eigen::Matrix4d gram = B_ * B_.transpose();
   pinv_ = B_.transpose() * gram.inverse();
   // Collective thrust direction in command space: the commands giving unit thrust and no moments.
-  const CommandVector c = pinv_.col(0);
-  max_thrust_n_ = 1.0 / c.maxCoeff();
+  max_thrust_n_ = 1.0 / pinv_.col(0).head(count_).maxCoeff();
 }
 
 void ControlAllocator::Allocate(const WrenchSetpoint& setpoint, std::span<double> u_out) const {
@@ -60,7 +60,8 @@ void ControlAllocator::Allocate(const WrenchSetpoint& setpoint, std::span<double
   const CommandVector u_yaw = pinv_.col(3) * setpoint.torque_B.z();
 
   // 1. Roll/pitch must fit in [0, 1] at some thrust: if their spread exceeds the range, scale them down.
-  const double spread = u_rp.maxCoeff() - u_rp.minCoeff();
+  const int n = count_;
+  const double spread = u_rp.head(n).maxCoeff() - u_rp.head(n).minCoeff();
   if (spread > 1.0) u_rp *= 1.0 / spread;
 
   // 2. Thrust: as asked, then shifted along the collective direction just enough to fit roll/pitch.
@@ -69,7 +70,7 @@ void ControlAllocator::Allocate(const WrenchSetpoint& setpoint, std::span<double
   CommandVector u = u_rp + c * thrust;
   double lo_shift = -std::numeric_limits<double>::infinity();
   double hi_shift = std::numeric_limits<double>::infinity();
-  for (Eigen::Index i = 0; i < u.size(); ++i) {
+  for (int i = 0; i < n; ++i) {
     // need 0 <= u_i + c_i * dT <= 1
     if (c[i] > 1e-12) {
       lo_shift = std::max(lo_shift, (0.0 - u[i]) / c[i]);
@@ -82,7 +83,7 @@ void ControlAllocator::Allocate(const WrenchSetpoint& setpoint, std::span<double
   u = u.cwiseMax(0.0).cwiseMin(1.0);
 
   // 3. Yaw gets the headroom that is left.
-  const double k = MaxScaleWithin(u, u_yaw, 0.0, 1.0);
+  const double k = MaxScaleWithin(u, u_yaw, n, 0.0, 1.0);
   u += k * u_yaw;
   for (std::size_t i = 0; i < u_out.size(); ++i) {
     u_out[i] = std::clamp(u[static_cast<Eigen::Index>(i)], 0.0, 1.0);
@@ -91,8 +92,9 @@ void ControlAllocator::Allocate(const WrenchSetpoint& setpoint, std::span<double
 
 WrenchSetpoint ControlAllocator::CalcWrench(std::span<const double> u) const {
   AIRIS_DEMAND(u.size() == size());
-  const Eigen::Map<const Eigen::VectorXd> uv(u.data(), static_cast<Eigen::Index>(u.size()));
-  const Eigen::Vector4d w = B_ * uv;  // fixed 4 x (<= 12) product: no heap
+  CommandVector uv = CommandVector::Zero();
+  for (std::size_t i = 0; i < u.size(); ++i) uv[static_cast<Eigen::Index>(i)] = u[i];
+  const Eigen::Vector4d w = B_ * uv;
   return {w[0], engine::Vec3(w[1], w[2], w[3])};
 }
 

@@ -52,11 +52,13 @@ class ControlAllocator {
 
   /// Largest collective thrust (N) the actuators can produce with zero moments.
   double max_thrust_n() const { return max_thrust_n_; }
-  std::size_t size() const { return static_cast<std::size_t>(pinv_.rows()); }
+  std::size_t size() const { return static_cast<std::size_t>(count_); }
 
  private:
-  Eigen::Matrix<double, 4, Eigen::Dynamic, 0, 4, kMaxActuators> B_;
-  Eigen::Matrix<double, Eigen::Dynamic, 4, 0, kMaxActuators, 4> pinv_;
+  // Fixed-size and zero-padded beyond count_ actuators, so allocation never touches the heap.
+  Eigen::Matrix<double, 4, kMaxActuators> B_ = Eigen::Matrix<double, 4, kMaxActuators>::Zero();
+  Eigen::Matrix<double, kMaxActuators, 4> pinv_ = Eigen::Matrix<double, kMaxActuators, 4>::Zero();
+  int count_ = 0;
   double max_thrust_n_ = 0.0;
 };
 

@@ -20,6 +20,7 @@ void FlightControllerConfig::Validate() const {
   RequirePositive("velocity_gain_1_s", velocity_gain_1_s);
   engine::RequireNonNegative("velocity_integral_gain_1_s2", velocity_integral_gain_1_s2);
   engine::RequireNonNegative("max_velocity_integral_m_s2", max_velocity_integral_m_s2);
+  RequirePositive("integral_separation_m_s", integral_separation_m_s);
   RequirePositive("max_horizontal_accel_m_s2", max_horizontal_accel_m_s2);
   RequirePositive("max_vertical_accel_m_s2", max_vertical_accel_m_s2);
   engine::RequireInRange("max_tilt_deg", max_tilt_deg, 1.0, 89.0);
@@ -90,12 +91,24 @@ Vec3 FlightController::CalcVelocitySetpoint(const engine::RigidBodyState& state)
 Vec3 FlightController::CalcAccelerationSetpoint(double dt_s, const Vec3& v_sp,
                                                 const engine::RigidBodyState& state) {
   const Vec3 error = v_sp - state.v_W;
-  Vec3 a_sp = config_.velocity_gain_1_s * error + velocity_integral_;
+  const Vec3 a_free = config_.velocity_gain_1_s * error + velocity_integral_ + target_.acceleration_W;
+  Vec3 a_sp = a_free;
   const double h = a_sp.head<2>().norm();
-  if (h > config_.max_horizontal_accel_m_s2) a_sp.head<2>() *= config_.max_horizontal_accel_m_s2 / h;
+  const bool horizontal_saturated = h > config_.max_horizontal_accel_m_s2;
+  if (horizontal_saturated) a_sp.head<2>() *= config_.max_horizontal_accel_m_s2 / h;
   a_sp.z() = std::clamp(a_sp.z(), -config_.max_vertical_accel_m_s2, config_.max_vertical_accel_m_s2);
-  // Integrate after use (the integral acts from the next tick on), bounded so it cannot wind up.
-  velocity_integral_ += config_.velocity_integral_gain_1_s2 * dt_s * error;
+  const bool vertical_saturated = a_sp.z() != a_free.z();
+  // Anti-windup by conditional integration and integral separation: the integral exists to cancel steady
+  // disturbances (wind, thrust model error), so an axis integrates only while its acceleration is not at its
+  // limit and its velocity error is small; transients of large moves then neither charge it nor leave it to
+  // creep back. It acts from the next tick on and is bounded.
+  const double separation = config_.integral_separation_m_s;
+  if (!horizontal_saturated && error.head<2>().norm() < separation) {
+    velocity_integral_.head<2>() += config_.velocity_integral_gain_1_s2 * dt_s * error.head<2>();
+  }
+  if (!vertical_saturated && std::abs(error.z()) < separation) {
+    velocity_integral_.z() += config_.velocity_integral_gain_1_s2 * dt_s * error.z();
+  }
   const double n = velocity_integral_.norm();
   if (n > config_.max_velocity_integral_m_s2) {
     velocity_integral_ *= config_.max_velocity_integral_m_s2 / n;
@@ -127,8 +140,9 @@ Vec3 FlightController::CalcTorque(double dt_s, const Vec3& w_sp, const engine::R
 }
 
 void FlightController::Update(double dt_s, const engine::RigidBodyState& state, double gravity_m_s2,
-                              std::span<double> u) {
+                              double effect_scale, std::span<double> u) {
   AIRIS_DEMAND(u.size() == allocator_.size());
+  AIRIS_DEMAND(effect_scale > 0.0);
   switch (target_.mode) {
     case engine::CommandMode::kDisarmed:
       std::fill(u.begin(), u.end(), 0.0);
@@ -144,10 +158,10 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
   WrenchSetpoint wrench;
   Vec3 w_sp;
   if (target_.mode == engine::CommandMode::kRatesThrust) {
-    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n();
+    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n() * effect_scale;
     w_sp = target_.rates_B;
   } else if (target_.mode == engine::CommandMode::kAttitudeThrust) {
-    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n();
+    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n() * effect_scale;
     w_sp = CalcRateSetpoint(target_.attitude_WB.normalized(), state);
   } else {
     const Vec3 v_sp = CalcVelocitySetpoint(state);
@@ -183,6 +197,9 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
     }
   }
   wrench.torque_B = CalcTorque(dt_s, w_sp, state);
+  // The allocator knows the actuators at construction strength; ask it for the wrench they must give there.
+  wrench.thrust_n /= effect_scale;
+  wrench.torque_B /= effect_scale;
   allocator_.Allocate(wrench, u);
 }
 

@@ -19,8 +19,9 @@ struct FlightControllerConfig {
   double max_climb_speed_m_s = 4.0;
   double max_descent_speed_m_s = 2.5;
   double velocity_gain_1_s = 2.5;            ///< acceleration setpoint per m/s of velocity error
-  double velocity_integral_gain_1_s2 = 0.6;  ///< integral of velocity error (wind, thrust model errors)
+  double velocity_integral_gain_1_s2 = 0.3;  ///< integral of velocity error (wind, thrust model errors)
   double max_velocity_integral_m_s2 = 3.0;   ///< anti-windup bound on that integral's contribution
+  double integral_separation_m_s = 0.3;      ///< integrate only while the velocity error is below this
   double max_horizontal_accel_m_s2 = 6.0;
   double max_vertical_accel_m_s2 = 5.0;
   double max_tilt_deg = 35.0;                ///< largest tilt from vertical the controller commands
@@ -43,6 +44,8 @@ struct FlightControllerConfig {
     v.Field("velocity_gain_1_s", velocity_gain_1_s, "velocity loop: m/s^2 per m/s of error (1/s)");
     v.Field("velocity_integral_gain_1_s2", velocity_integral_gain_1_s2, "velocity integral gain (1/s^2)");
     v.Field("max_velocity_integral_m_s2", max_velocity_integral_m_s2, "velocity integral bound (m/s^2)");
+    v.Field("integral_separation_m_s", integral_separation_m_s,
+            "integrate the velocity error only while it is below this (m/s)");
     v.Field("max_horizontal_accel_m_s2", max_horizontal_accel_m_s2, "horizontal acceleration limit");
     v.Field("max_vertical_accel_m_s2", max_vertical_accel_m_s2, "vertical acceleration limit (m/s^2)");
     v.Field("max_tilt_deg", max_tilt_deg, "tilt limit from vertical (deg)");
@@ -75,8 +78,10 @@ class FlightController {
                    std::span<const ActuatorEffect> actuators);
 
   /// One control step of `dt_s` seconds: reads `state` and the target, writes motor commands `u` (size = actuator
-  /// count, each in [0, 1]). `gravity_m_s2` is the local gravity (feed-forward).
-  void Update(double dt_s, const engine::RigidBodyState& state, double gravity_m_s2,
+  /// count, each in [0, 1]). `gravity_m_s2` is the local gravity (feed-forward). `effect_scale` is how strong
+  /// the actuators are now relative to the effects given at construction (air density / reference density:
+  /// thrust and torque are proportional to it), so thin air is compensated exactly.
+  void Update(double dt_s, const engine::RigidBodyState& state, double gravity_m_s2, double effect_scale,
               std::span<double> u);
 
   /// Sets what to do; switching modes resets the integrators of loops that were not running.

@@ -36,6 +36,56 @@ Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
     if (r.tilt_channel >= 0) r.tilt_channel += static_cast<int>(rotors_.size());
   }
   commands_.assign(rotors_.size() + static_cast<std::size_t>(tilt_channels), 0.0);
+  if (commands_.size() > static_cast<std::size_t>(engine::kMaxActuators) ||
+      !ControlAllocator::CanControl(CalcActuatorEffects(kReferenceDensity_kg_m3))) {
+    throw engine::InvalidField("rotors", "the rotors cannot control thrust, roll, pitch and yaw "
+                                         "independently (or there are more than " +
+                                             std::to_string(engine::kMaxActuators) + " actuators)");
+  }
+  const auto effects = CalcActuatorEffects(kReferenceDensity_kg_m3);
+  controller_.emplace(config_.controller,
+                      VehicleParameters{body().mass_kg(), body().inertia_B()}, effects);
+  allocated_tilt_rad_.assign(rotors_.size(), 0.0);
+}
+
+std::vector<ActuatorEffect> Multirotor::CalcActuatorEffects(double air_density_kg_m3) const {
+  std::vector<ActuatorEffect> effects;
+  effects.reserve(rotors_.size());
+  for (const Rotor& r : rotors_) {
+    const Vec3 force = (r.thrust_per_density * air_density_kg_m3) * r.direction_B;
+    effects.push_back({force, r.position_B.cross(force) +
+                                  (r.torque_per_density_signed * air_density_kg_m3) * r.direction_B});
+  }
+  return effects;
+}
+
+void Multirotor::SetCommand(const engine::VehicleCommand& command) {
+  if (command.mode == engine::CommandMode::kMotors) {
+    controller_active_ = false;
+    SetActuatorCommands(std::span<const double>(command.motors.data(), commands_.size()));
+    return;
+  }
+  controller_->SetTarget(command);
+  controller_active_ = true;
+}
+
+void Multirotor::UpdateControl(const engine::ControlContext& context) {
+  if (!controller_active_) return;
+  const engine::RigidBodyState& state = state_source_->Estimate(context);
+  // Tilted rotors change what each motor does: rebuild the allocation when a tilt moved.
+  bool tilt_moved = false;
+  for (std::size_t i = 0; i < rotors_.size(); ++i) {
+    tilt_moved |= rotors_[i].tilt_rad != allocated_tilt_rad_[i];
+  }
+  if (tilt_moved) {
+    controller_->SetActuators(CalcActuatorEffects(kReferenceDensity_kg_m3));
+    for (std::size_t i = 0; i < rotors_.size(); ++i) allocated_tilt_rad_[i] = rotors_[i].tilt_rad;
+  }
+  const double rho = context.environment->CalcAir(state.p_W).density_kg_m3;
+  const double g = context.environment->CalcGravity_m_s2(state.p_W);
+  const std::span<double> motors(control_u_.data(), rotors_.size());
+  controller_->Update(context.dt_s, state, g, rho / kReferenceDensity_kg_m3, motors);
+  std::copy(motors.begin(), motors.end(), commands_.begin());
 }
 
 void Multirotor::CheckCommands(std::span<const double> commands) const {

@@ -1,11 +1,17 @@
 #pragma once
 
+#include <array>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "engine/world/vehicle.h"
+#include "vehicles/multirotor/control_allocator.h"
+#include "vehicles/multirotor/flight_controller.h"
 #include "vehicles/multirotor/multirotor_config.h"
+#include "vehicles/multirotor/state_source.h"
 
 namespace airis::vehicles {
 
@@ -30,6 +36,20 @@ class Multirotor final : public engine::Vehicle {
   void SetActuatorCommands(std::span<const double> commands) override;
   std::span<const double> actuator_commands() const override { return commands_; }
   engine::Wrench UpdateActuators(const engine::ActuatorContext& context) override;
+
+  /// Commands through the built-in flight controller (config().controller): any mode but kMotors switches the
+  /// controller on (it then sets the motor commands every tick from the state source); kMotors switches it off
+  /// and sets the actuators directly. Tilt actuators keep their last command in controlled modes.
+  void SetCommand(const engine::VehicleCommand& command) override;
+  /// True once a land command has detected touchdown and disarmed.
+  bool landed() const override { return controller_->landed(); }
+  /// Runs the flight controller (when on) at the end of the tick and sets the next tick's motor commands.
+  void UpdateControl(const engine::ControlContext& context) override;
+  /// Replaces where the controller reads the vehicle's state (default: ground truth).
+  void set_state_source(std::unique_ptr<StateSource> source) { state_source_ = std::move(source); }
+  const FlightController& controller() const { return *controller_; }
+  /// What each rotor does to the body at full command in air of `air_density_kg_m3`, at its current tilt.
+  std::vector<ActuatorEffect> CalcActuatorEffects(double air_density_kg_m3) const;
 
   /// Sets the commands and puts every motor and tilt actuator at its command at once (no lag): for
   /// initial conditions such as starting in hover. Same checks as SetActuatorCommands.
@@ -73,10 +93,18 @@ class Multirotor final : public engine::Vehicle {
   void CheckCommands(std::span<const double> commands) const;
   void ApplyTilt(Rotor& rotor, double tilt_rad);
 
+  /// Air density at which the controller's actuator effects are computed (sea level, standard atmosphere).
+  static constexpr double kReferenceDensity_kg_m3 = 1.225;
+
   MultirotorConfig config_;
   std::vector<Rotor> rotors_;
   std::vector<double> commands_;
   double cached_dt_s_ = -1.0;
+  std::optional<FlightController> controller_;  // built once the rotors are
+  bool controller_active_ = false;
+  std::unique_ptr<StateSource> state_source_ = std::make_unique<TruthStateSource>();
+  std::vector<double> allocated_tilt_rad_;      // rotor tilts the controller's allocation was built for
+  std::array<double, engine::kMaxActuators> control_u_{};
 };
 
 }  // namespace airis::vehicles

@@ -40,6 +40,11 @@ void MultirotorConfig::Validate() const {
   engine::RequireNonNegative("angular_drag_coefficient", angular_drag_coefficient);
   engine::RequireInRange("restitution", restitution, 0.0, 1.0);
   engine::RequireNonNegative("friction", friction);
+  try {
+    controller.Validate();
+  } catch (const engine::InvalidField& e) {
+    throw engine::InvalidField("controller." + e.field(), e.problem());
+  }
 }
 
 engine::RigidBodyConfig MultirotorConfig::CalcRigidBodyConfig() const {

@@ -5,6 +5,7 @@
 
 #include "engine/core/config.h"
 #include "engine/physics/rigid_body.h"
+#include "vehicles/multirotor/flight_controller.h"
 #include "vehicles/multirotor/rotor.h"
 
 namespace airis::vehicles {
@@ -30,6 +31,7 @@ struct MultirotorConfig {
   double restitution = 0.55;                     ///< contact restitution
   double friction = 0.5;                         ///< Coulomb friction coefficient
   std::vector<RotorConfig> rotors = ReferenceQuadXRotors();
+  FlightControllerConfig controller;             ///< gains and limits of the built-in flight controller
 
   template <class V>
   void Visit(V& v) {
@@ -45,6 +47,7 @@ struct MultirotorConfig {
     v.Field("restitution", restitution, "contact restitution [0, 1]");
     v.Field("friction", friction, "Coulomb friction coefficient");
     v.Field("rotors", rotors, "the rotors (vertices)");
+    v.Field("controller", controller, "built-in flight controller gains and limits");
   }
   /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, no rotors, or motors heavier than
   /// the vehicle.
