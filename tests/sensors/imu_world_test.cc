@@ -1,4 +1,5 @@
-// End to end: an IMU on a body dropped onto the ground through the World and Simulation (physics, contacts).
+// End to end: an IMU on a body dropped onto the ground through the World and Simulation (physics,
+// contacts).
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 #include "engine/world/simulation.h"
 #include "engine/world/world.h"
+#include "sensors/barometer.h"
 #include "sensors/imu.h"
 #include "tests/sensors/sensor_test_util.h"
 
@@ -62,6 +64,55 @@ TEST(ImuWorldTest, DropOnGroundReadsZeroThenSpikeThenOneG) {
   EXPECT_LT(peak, -5.0 * g);
   // ... and at rest it reads 1 g up (-g along body z) within 1% (contact solver slop)
   EXPECT_NEAR(f_z.back(), -g, 0.01 * g);
+}
+
+// The IMU stream of a 2 s drop, optionally with a barometer added to the same vehicle.
+std::vector<ImuSample> RecordDrop(std::uint64_t scene_seed, bool with_barometer) {
+  testing::BoxSpec ground;
+  ground.center_W = Vec3(0, 0, 1.0);
+  ground.size_m = Vec3(100, 100, 2.0);
+  auto scene = std::make_shared<const engine::StaticScene>(testing::MakeBoxScene({ground}));
+  auto world = std::make_unique<engine::World>(scene, testing::MakeEnvironment());
+  auto body = std::make_unique<PassiveBody>();
+  body->state().p_W = Vec3(0, 0, -2.0);
+  body->state().w_B = Vec3(0.3, -0.2, 0.5);
+  const std::size_t index = world->AddVehicle(std::move(body));
+  const engine::RandomStreams streams(scene_seed);
+  if (with_barometer) {
+    world->AddSensor(index, std::make_unique<Barometer>("baro", BarometerConfig{},
+                                                        streams.Stream("vehicles/box/baro")));
+  }
+  auto& imu = world->AddSensor(
+      index, std::make_unique<Imu>("imu", ImuConfig{}, streams.Stream("vehicles/box/imu")));
+  std::vector<ImuSample> samples;
+  imu.AddListener(
+      [&](const engine::Sensor& s) { samples.push_back(static_cast<const Imu&>(s).latest()); });
+  engine::Simulation simulation(std::move(world));
+  simulation.RunFor(2.0);
+  return samples;
+}
+
+bool Identical(const std::vector<ImuSample>& a, const std::vector<ImuSample>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].time_ns != b[i].time_ns ||
+        a[i].angular_velocity_S_rad_s != b[i].angular_velocity_S_rad_s ||
+        a[i].specific_force_S_m_s2 != b[i].specific_force_S_m_s2) {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(ImuWorldTest, SameSeedIsBitIdenticalAndOtherSensorsDoNotChangeTheStream) {
+  const std::vector<ImuSample> first = RecordDrop(11, false);
+  ASSERT_EQ(first.size(), 2000u);
+  // Same scene and seed: bit-identical, sample for sample.
+  EXPECT_TRUE(Identical(first, RecordDrop(11, false)));
+  // A barometer added to the vehicle draws from its own stream: the IMU's samples do not change.
+  EXPECT_TRUE(Identical(first, RecordDrop(11, true)));
+  // Another scene seed gives another stream (so the comparisons above can fail).
+  EXPECT_FALSE(Identical(first, RecordDrop(12, false)));
 }
 
 }  // namespace
