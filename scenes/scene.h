@@ -13,16 +13,15 @@
 #include "engine/core/geodetic.h"
 #include "engine/core/static_scene.h"
 #include "engine/environment/environment.h"
+#include "scenes/vehicle_config.h"
+#include "vehicles/multirotor/multirotor_config.h"
 
 namespace airis::scenes {
 
 using engine::Vec3;
 
-/// A YAML value kept unread (defined in scenes/scene_file.h), with its file for located errors.
-struct RawYaml;
-
-/// A vehicle as the scene describes it. The airframe and sensors are read by their owners' configs from
-/// `preset`, `overrides` and `sensors`.
+/// A vehicle as the scene describes it: the preset's airframe with the scene's overrides applied, its start
+/// pose and its sensors (configs read through their owners' Visit).
 struct VehicleDescription {
   std::string name;
   std::string preset;
@@ -30,8 +29,8 @@ struct VehicleDescription {
   double yaw_rad = 0.0;             ///< start heading, clockwise from north (rad)
   engine::SourceLocation where;     ///< the entry in its scene file
   std::string key_path;             ///< e.g. `vehicles[0]`
-  std::shared_ptr<const RawYaml> overrides;  ///< the `overrides` map (null node if absent)
-  std::shared_ptr<const RawYaml> sensors;    ///< the `sensors` list (null node if absent)
+  vehicles::MultirotorConfig airframe;  ///< preset + overrides, validated
+  std::vector<SensorDescription> sensors;
 };
 
 /// What each generator produced (for summaries).

@@ -107,8 +107,6 @@ void VehicleEntryConfig::Validate() const {
   engine::Require(!preset.empty(), "preset", "every vehicle needs a preset");
   engine::Require(!overrides.IsDefined() || overrides.IsNull() || overrides.IsMap(), "overrides",
           "expected a map of preset keys");
-  engine::Require(!sensors.IsDefined() || sensors.IsNull() || sensors.IsSequence() || sensors.IsMap(), "sensors",
-          "expected a list or map of sensors");
 }
 
 SceneDocument ReadSceneDocument(const std::string& path) {

@@ -13,26 +13,28 @@
 
 #include "engine/core/error.h"
 #include "scenes/scene_config.h"
+#include "scenes/vehicle_config.h"
 #include "scenes/yaml_reader.h"
 
 namespace airis::scenes {
 
-/// An entry of `vehicles`, kept generic until vehicle and sensor configs are read through their Visit:
-/// `overrides` and `sensors` stay raw YAML (with their marks) for the reader that knows their schema.
+/// An entry of `vehicles`. `overrides` stays raw YAML until the preset is known: it is then read over the
+/// preset's MultirotorConfig (so only the keys given change).
 struct VehicleEntryConfig {
   std::string name;
   std::string preset;
   StartPoseConfig start;
   YAML::Node overrides;
-  YAML::Node sensors;
+  std::vector<SensorEntryConfig> sensors;
 
   template <class V>
   void Visit(V& v) {
     v.Field("name", name, "unique vehicle name (logs, random streams vehicles/NAME/...)");
-    v.Field("preset", preset, "airframe preset name (vehicles/presets/PRESET.yaml)");
+    v.Field("preset", preset, "airframe preset: quad_x, quad_plus, hexa_x, octo_x or tilt_rotor");
     v.Field("start", start, "start pose");
-    v.Field("overrides", overrides, "keys of the preset to change, same layout as the preset file");
-    v.Field("sensors", sensors, "sensors and cameras with their mounts");
+    v.Field("overrides", overrides,
+            "airframe keys to change (MultirotorConfig, as in vehicles/presets/PRESET.yaml); a list replaces");
+    v.Field("sensors", sensors, "sensors with their configs and mounts");
   }
   void Validate() const;
 };
@@ -75,31 +77,56 @@ struct Sourced {
   YAML::Mark mark;       ///< the entry's position (its key, or the list element)
   int index_in_file = 0; ///< position among the file's entries of that kind
 
-  /// Location of `key` (a dotted path such as `material.texture`) inside the entry: the deepest key of it
-  /// that is present, or the entry itself when `key` is empty or absent.
+  /// Location of `key` (a path below the entry such as `material.texture` or `sensors[1].name`): the
+  /// deepest part of it that is present, or the entry itself when `key` is empty or absent.
   engine::SourceLocation Where(const std::string& key = "") const {
     YAML::Mark at = mark;
     YAML::Node current;
     current.reset(node);
     std::size_t pos = 0;
-    while (pos < key.size() && current.IsMap()) {
-      const std::size_t end = std::min(key.find('.', pos), key.size());
+    while (pos < key.size()) {
+      if (key[pos] == '.') {
+        ++pos;
+        continue;
+      }
+      if (key[pos] == '[') {
+        const std::size_t close = key.find(']', pos);
+        const std::size_t index = std::stoul(key.substr(pos + 1, close - pos - 1));
+        if (!current.IsSequence() || index >= current.size()) break;
+        current.reset(current[index]);
+        at = current.Mark();
+        pos = close + 1;
+        continue;
+      }
+      const std::size_t end = std::min(key.find_first_of(".[", pos), key.size());
       const std::string part = key.substr(pos, end - pos);
       bool found = false;
-      for (const auto& entry : current) {
-        if (entry.first.IsScalar() && entry.first.Scalar() == part) {
-          at = entry.first.Mark();
-          current.reset(entry.second);
-          found = true;
-          break;
+      if (current.IsMap()) {
+        for (const auto& entry : current) {
+          if (entry.first.IsScalar() && entry.first.Scalar() == part) {
+            at = entry.first.Mark();
+            current.reset(entry.second);
+            found = true;
+            break;
+          }
         }
       }
       if (!found) break;
-      pos = end + 1;
+      pos = end;
     }
     return YamlReader(file->path).Where(at);
   }
-  std::string PathOf(const std::string& key) const { return key.empty() ? key_path : key_path + "." + key; }
+  /// yaml-cpp mark of `key` inside the entry (as Where).
+  YAML::Mark MarkOf(const std::string& key) const {
+    const engine::SourceLocation w = Where(key);
+    YAML::Mark m;
+    m.line = w.line - 1;
+    m.column = w.column - 1;
+    return m;
+  }
+  std::string PathOf(const std::string& key) const {
+    return key.empty() ? key_path : (key[0] == '[' ? key_path + key : key_path + "." + key);
+  }
   /// Throws ConfigError at `key` of this entry.
   [[noreturn]] void Fail(const std::string& key, const std::string& problem) const {
     throw engine::ConfigError(Where(key), PathOf(key), problem);
@@ -131,13 +158,3 @@ std::string ResolveRelative(const std::string& base_file, const std::string& rel
 
 }  // namespace airis::scenes
 
-namespace airis::scenes {
-
-/// A YAML value kept unread, with the file it came from (for ConfigErrors when it is read later).
-struct RawYaml {
-  YAML::Node node;
-  std::string file;
-  std::string key_path;
-};
-
-}  // namespace airis::scenes

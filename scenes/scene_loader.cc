@@ -11,6 +11,7 @@
 #include "scenes/scene.h"
 #include "scenes/scene_builder.h"
 #include "scenes/scene_file.h"
+#include "vehicles/multirotor/airframe_presets.h"
 
 namespace airis::scenes {
 
@@ -255,8 +256,17 @@ class SceneAssembler {
     v.yaw_rad = DegToRad(c.start.yaw_deg);
     v.where = entry.Where();
     v.key_path = entry.key_path;
-    v.overrides = std::make_shared<RawYaml>(RawYaml{c.overrides, entry.file->path, entry.PathOf("overrides")});
-    v.sensors = std::make_shared<RawYaml>(RawYaml{c.sensors, entry.file->path, entry.PathOf("sensors")});
+    v.airframe = ReadAirframe(entry);
+    for (std::size_t i = 0; i < c.sensors.size(); ++i) {
+      SensorDescription sensor = DescribeSensor(c.sensors[i]);
+      for (const auto& other : v.sensors) {
+        if (other.name == sensor.name) {
+          entry.Fail("sensors[" + std::to_string(i) + "]",
+                     "duplicate sensor name '" + sensor.name + "' on vehicle '" + c.name + "' (name one with `name:`)");
+        }
+      }
+      v.sensors.push_back(std::move(sensor));
+    }
     if (has_ground && v.p_W.z() > 0.0) {
       entry.Fail("start.position_m", "vehicle '" + c.name + "' starts below the ground (z = " +
                                          engine::FormatNumber(v.p_W.z()) + " m; NED z is down, so heights are negative)");
@@ -273,6 +283,24 @@ class SceneAssembler {
                                          ")");
     }
     return v;
+  }
+
+  /// The preset's airframe with `overrides` read over it (only the keys given change).
+  static vehicles::MultirotorConfig ReadAirframe(const Sourced<VehicleEntryConfig>& entry) {
+    const VehicleEntryConfig& c = entry.config;
+    const auto preset = engine::ParseEnum<vehicles::AirframePreset>(c.preset);
+    if (!preset) {
+      std::vector<std::string> names;
+      for (const auto& n : EnumNames(vehicles::AirframePreset{})) names.emplace_back(n.name);
+      std::string problem = "unknown preset '" + c.preset + "'";
+      if (const auto close = engine::ClosestMatch(c.preset, names)) problem += " (did you mean '" + *close + "'?)";
+      entry.Fail("preset", problem + "; presets: " + JoinNames(names));
+    }
+    vehicles::MultirotorConfig airframe = vehicles::MakeAirframe(*preset);
+    if (c.overrides.IsDefined() && !c.overrides.IsNull()) {
+      YamlReader(entry.file->path).ReadStruct(c.overrides, entry.MarkOf("overrides"), entry.PathOf("overrides"), airframe);
+    }
+    return airframe;
   }
 
   SceneDocument doc_;

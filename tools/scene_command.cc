@@ -59,8 +59,11 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
   std::printf("geometry    %zu meshes (%zu triangles stored), %zu models, %zu materials, %zu triangles drawn\n",
               stats.meshes, stats.stored_triangles, stats.models, stats.materials, stats.drawn_triangles);
   for (const auto& v : s.vehicles) {
-    std::printf("vehicle     %s (preset %s) at [%g, %g, %g] m, yaw %g deg\n", v.name.c_str(), v.preset.c_str(),
-                v.p_W.x(), v.p_W.y(), v.p_W.z(), engine::RadToDeg(v.yaw_rad));
+    std::string sensors;
+    for (const auto& sensor : v.sensors) sensors += (sensors.empty() ? "" : ", ") + sensor.name;
+    std::printf("vehicle     %s (preset %s, %.3g kg) at [%g, %g, %g] m, yaw %g deg; sensors: %s\n", v.name.c_str(),
+                v.preset.c_str(), v.airframe.mass_kg, v.p_W.x(), v.p_W.y(), v.p_W.z(), engine::RadToDeg(v.yaw_rad),
+                sensors.empty() ? "none" : sensors.c_str());
   }
   if (!stats.bounds_W.isEmpty()) {
     const auto& lo = stats.bounds_W.min();

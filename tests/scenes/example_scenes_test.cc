@@ -41,7 +41,7 @@ TEST(ExampleScenesTest, CityHasHundredsOfBuildingsStreetsCarsAndLamps) {
   EXPECT_NEAR(city.sizes().y(), 1000.0, 100.0);
   EXPECT_LT(stats.models, 40u);
   ASSERT_EQ(s.vehicles.size(), 1u);
-  EXPECT_EQ(s.vehicles[0].preset, "quadrotor");
+  EXPECT_EQ(s.vehicles[0].preset, "quad_x");
   EXPECT_EQ(s.environment.magnetic_model, engine::MagneticModelKind::kWmm);
 }
 

@@ -155,7 +155,7 @@ TEST(SceneLoaderTest, VehicleInsideAnObjectNamesBoth) {
                                    "  - {name: shed, primitive: box, position_m: [10, 0, -2], scale: [4, 4, 4]}\n"
                                    "vehicles:\n"
                                    "  - name: drone1\n"
-                                   "    preset: quadrotor\n"
+                                   "    preset: quad_x\n"
                                    "    start: {position_m: [11, 1, -1]}\n");
   EXPECT_EQ(LoadError(path), path + ":6:13: vehicles[0].start.position_m: vehicle 'drone1' starts inside object "
                                     "'shed' (class structure, instance 2)");
@@ -163,13 +163,13 @@ TEST(SceneLoaderTest, VehicleInsideAnObjectNamesBoth) {
 
 TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
   SceneFiles f("vehicles");
-  const std::string a = f.Write("a.yaml", "vehicles:\n  - {name: d, preset: quadrotor, start: {position_m: [0, 0, 1]}}\n");
-  EXPECT_EQ(LoadError(a), a + ":2:42: vehicles[0].start.position_m: vehicle 'd' starts below the ground (z = 1 m; "
+  const std::string a = f.Write("a.yaml", "vehicles:\n  - {name: d, preset: quad_x, start: {position_m: [0, 0, 1]}}\n");
+  EXPECT_EQ(LoadError(a), a + ":2:39: vehicles[0].start.position_m: vehicle 'd' starts below the ground (z = 1 m; "
                               "NED z is down, so heights are negative)");
   const std::string b = f.Write("b.yaml",
                                 "vehicles:\n"
-                                "  - {name: d, preset: quadrotor}\n"
-                                "  - {name: d, preset: quadrotor, start: {position_m: [5, 0, -1]}}\n");
+                                "  - {name: d, preset: quad_x}\n"
+                                "  - {name: d, preset: quad_x, start: {position_m: [5, 0, -1]}}\n");
   EXPECT_EQ(LoadError(b), b + ":3:6: vehicles[1].name: duplicate vehicle name 'd' (also vehicles[0] at " + b + ":2)");
   const std::string c = f.Write("c.yaml", "vehicles:\n  - {name: d}\n");
   EXPECT_EQ(LoadError(c), c + ":2:5: vehicles[0].preset: every vehicle needs a preset");

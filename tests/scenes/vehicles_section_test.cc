@@ -1,0 +1,130 @@
+// The `vehicles` block: presets, overrides read through MultirotorConfig's Visit, sensors through theirs,
+// and the World built from a scene.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scenes/scene.h"
+#include "scenes/world_builder.h"
+#include "vehicles/multirotor/airframe_presets.h"
+
+namespace airis::scenes {
+namespace {
+
+using engine::ConfigError;
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    LoadSceneFromString(text, "scenes/v.yaml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(VehiclesSectionTest, UnknownPresetListsThePresets) {
+  EXPECT_EQ(ErrorOf("vehicles:\n  - name: d\n    preset: quad_xx\n"),
+            "scenes/v.yaml:3:5: vehicles[0].preset: unknown preset 'quad_xx' (did you mean 'quad_x'?); presets: "
+            "quad_x, quad_plus, hexa_x, octo_x, tilt_rotor");
+}
+
+TEST(VehiclesSectionTest, OverridesChangeOnlyTheKeysGiven) {
+  const Scene s = LoadSceneFromString(
+      "vehicles:\n"
+      "  - name: heavy\n"
+      "    preset: hexa_x\n"
+      "    overrides: {mass_kg: 1.6, friction: 0.7}\n",
+      "scenes/v.yaml");
+  ASSERT_EQ(s.vehicles.size(), 1u);
+  const vehicles::MultirotorConfig reference = vehicles::HexaXConfig();
+  EXPECT_EQ(s.vehicles[0].airframe.mass_kg, 1.6);
+  EXPECT_EQ(s.vehicles[0].airframe.friction, 0.7);
+  EXPECT_EQ(s.vehicles[0].airframe.rotors.size(), reference.rotors.size());
+  EXPECT_EQ(s.vehicles[0].airframe.box_size_m, reference.box_size_m);
+}
+
+TEST(VehiclesSectionTest, OverrideMistakesNameFileLineAndKey) {
+  EXPECT_EQ(ErrorOf("vehicles:\n"
+                    "  - name: d\n"
+                    "    preset: quad_x\n"
+                    "    overrides:\n"
+                    "      mas_kg: 2\n"),
+            "scenes/v.yaml:5:7: vehicles[0].overrides.mas_kg: unknown key 'mas_kg' (did you mean 'mass_kg'?)");
+  const std::string bad_value = ErrorOf(
+      "vehicles:\n"
+      "  - name: d\n"
+      "    preset: quad_x\n"
+      "    overrides:\n"
+      "      mass_kg: -1\n");
+  EXPECT_EQ(bad_value.rfind("scenes/v.yaml:5:7: vehicles[0].overrides.mass_kg: ", 0), 0u) << bad_value;
+}
+
+TEST(VehiclesSectionTest, SensorsAreReadThroughTheirConfigs) {
+  const Scene s = LoadSceneFromString(
+      "vehicles:\n"
+      "  - name: d\n"
+      "    preset: quad_x\n"
+      "    sensors:\n"
+      "      - imu: {rate_hz: 400}\n"
+      "      - barometer: {}\n"
+      "      - {name: down, rangefinder: {}}\n",
+      "scenes/v.yaml");
+  ASSERT_EQ(s.vehicles[0].sensors.size(), 3u);
+  EXPECT_EQ(s.vehicles[0].sensors[0].name, "imu");
+  EXPECT_EQ(std::get<sensors::ImuConfig>(s.vehicles[0].sensors[0].config).rate_hz, 400.0);
+  EXPECT_EQ(s.vehicles[0].sensors[1].name, "barometer");
+  EXPECT_EQ(s.vehicles[0].sensors[2].name, "down");
+  EXPECT_EQ(SensorKindName(s.vehicles[0].sensors[2].config), "rangefinder");
+}
+
+TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
+  EXPECT_EQ(ErrorOf("vehicles:\n"
+                    "  - name: d\n"
+                    "    preset: quad_x\n"
+                    "    sensors:\n"
+                    "      - imu:\n"
+                    "          rate_hz: -5\n"),
+            "scenes/v.yaml:6:11: vehicles[0].sensors[0].imu.rate_hz: must be > 0 (got -5)");
+  EXPECT_EQ(ErrorOf("vehicles:\n"
+                    "  - name: d\n"
+                    "    preset: quad_x\n"
+                    "    sensors:\n"
+                    "      - imu: {}\n"
+                    "      - imu: {}\n"),
+            "scenes/v.yaml:6:9: vehicles[0].sensors[1]: duplicate sensor name 'imu' on vehicle 'd' (name one "
+            "with `name:`)");
+  EXPECT_EQ(ErrorOf("vehicles:\n"
+                    "  - name: d\n"
+                    "    preset: quad_x\n"
+                    "    sensors:\n"
+                    "      - {name: x}\n"),
+            "scenes/v.yaml:5:9: vehicles[0].sensors[0].imu: expected one sensor: imu, barometer, magnetometer, gps, "
+            "rangefinder or lidar");
+}
+
+TEST(VehiclesSectionTest, BuildWorldPlacesVehiclesAndMountsSensors) {
+  const Scene s = LoadSceneFromString(
+      "scene: {seed: 5}\n"
+      "objects: [{name: wall, primitive: box, position_m: [10, 0, -5], scale: [1, 20, 10]}]\n"
+      "vehicles:\n"
+      "  - name: a\n"
+      "    preset: quad_x\n"
+      "    start: {position_m: [0, 0, -0.2], yaw_deg: 90}\n"
+      "    sensors: [{imu: {}}, {gps: {}}, {rangefinder: {}}]\n"
+      "  - {name: b, preset: octo_x, start: {position_m: [0, 5, -0.2]}}\n",
+      "scenes/v.yaml");
+  const auto world = BuildWorld(s);
+  ASSERT_EQ(world->vehicle_count(), 2u);
+  EXPECT_EQ(world->vehicle(0).name(), "a");
+  EXPECT_TRUE(world->vehicle(0).state().p_W.isApprox(engine::Vec3(0, 0, -0.2)));
+  // Yaw 90 deg: the body's forward axis points east.
+  EXPECT_TRUE((world->vehicle(0).state().q_WB * engine::Vec3::UnitX()).isApprox(engine::Vec3::UnitY(), 1e-12));
+  EXPECT_EQ(world->sensors(0).size(), 3u);
+  EXPECT_EQ(world->sensors(1).size(), 0u);
+  EXPECT_EQ(world->vehicle(1).actuator_count(), 8);
+  EXPECT_EQ(world->scene().objects.size(), 2u);
+  ASSERT_NE(world->ray_caster(), nullptr);
+}
+
+}  // namespace
+}  // namespace airis::scenes
