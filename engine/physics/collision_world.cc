@@ -5,6 +5,7 @@
 #include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
 #include <btBulletCollisionCommon.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/core/error.h"
@@ -66,16 +67,6 @@ class ContactCollector : public btManifoldResult {
   std::vector<Contact>& out_;
 };
 
-// Gathers the collision objects of the broadphase leaves that overlap a volume.
-struct LeafCollector : btDbvt::ICollide {
-  std::vector<const btCollisionObject*>* out = nullptr;
-  using btDbvt::ICollide::Process;
-  void Process(const btDbvtNode* leaf) override {
-    const auto* proxy = static_cast<const btBroadphaseProxy*>(leaf->data);
-    out->push_back(static_cast<const btCollisionObject*>(proxy->m_clientObject));
-  }
-};
-
 // Closest hit of a sweep, ignoring surfaces the motion does not go into.
 struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
   SweepCallback(const btVector3& from, const btVector3& to)
@@ -105,8 +96,155 @@ struct CollisionWorld::Bullet {
   std::vector<btBvhTriangleMeshShape*> mesh_shapes;  // per scene mesh, built on first use (owned above)
   std::vector<std::unique_ptr<btCollisionObject>> statics;
   std::vector<std::unique_ptr<btCollisionObject>> bodies;
-  btAlignedObjectArray<const btDbvtNode*> stack;
   std::vector<const btCollisionObject*> candidates;
+  // Oriented bounds of every static collider (its shape's local AABB placed in the world), indexed like
+  // colliders_: an exact, cheap sphere test that spares Bullet's narrowphase when AABBs merely overlap.
+  struct Bounds {
+    Vec3 centre_W;
+    Mat3 R_WL;
+    Vec3 half_m;
+  };
+  std::vector<Bounds> bounds;
+  std::vector<Vec3> body_half_m;
+  std::vector<double> body_radius_m;
+
+  // Static query grid: a uniform grid over x-y (the scene's ground plan) listing the colliders whose bounds
+  // overlap each cell, plus a list of colliders too large for it (ground planes). Bullet's DBVT answers the
+  // same query, but for a small box in a 10,000-object city it costs ~10x more (and btDbvt's top-down
+  // optimisation degenerates with one huge leaf); statics never move, so a grid built once is exact.
+  struct Aabb {
+    Vec3 lo, hi;
+  };
+  std::vector<Aabb> aabbs;                 // per collider, world
+  std::vector<std::uint32_t> large;        // colliders not in the grid
+  std::vector<std::uint32_t> cell_start;   // CSR offsets into cell_items, one per cell plus one
+  std::vector<std::uint32_t> cell_items;
+  std::vector<std::uint32_t> stamp;        // per collider: last query that saw it (dedupe across cells)
+  std::uint32_t query = 0;
+  double cell_m = 1.0;
+  double inverse_cell_1_m = 1.0;
+  double origin_x = 0.0, origin_y = 0.0;
+  int nx = 0, ny = 0;
+
+  void BuildGrid() {
+    const std::size_t n = bounds.size();
+    aabbs.resize(n);
+    stamp.assign(n, 0);
+    Eigen::AlignedBox2d plan;
+    std::vector<double> widths;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 reach = bounds[i].R_WL.cwiseAbs() * bounds[i].half_m;
+      aabbs[i] = Aabb{bounds[i].centre_W - reach, bounds[i].centre_W + reach};
+      widths.push_back(2.0 * reach.head<2>().maxCoeff());
+    }
+    if (n == 0) return;
+    std::vector<double> sorted = widths;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
+    const double median = sorted[n / 2];
+    // Objects wider than 16 median objects (ground planes, terrain) are tested one by one.
+    std::vector<std::uint32_t> gridded;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (widths[i] > 16.0 * median) {
+        large.push_back(static_cast<std::uint32_t>(i));
+      } else {
+        gridded.push_back(static_cast<std::uint32_t>(i));
+        plan.extend(aabbs[i].lo.head<2>());
+        plan.extend(aabbs[i].hi.head<2>());
+      }
+    }
+    if (gridded.empty()) return;
+    // About one object per cell, cells no smaller than the median object, at most 2^22 cells.
+    const Eigen::Vector2d size = plan.sizes().cwiseMax(1e-3);
+    cell_m = std::max({median, std::sqrt(size.prod() / static_cast<double>(gridded.size())), 1e-3});
+    while ((size.x() / cell_m + 1.0) * (size.y() / cell_m + 1.0) > double(1 << 22)) cell_m *= 2.0;
+    inverse_cell_1_m = 1.0 / cell_m;
+    origin_x = plan.min().x();
+    origin_y = plan.min().y();
+    nx = static_cast<int>(size.x() / cell_m) + 1;
+    ny = static_cast<int>(size.y() / cell_m) + 1;
+    cell_start.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) + 1, 0);
+    // Two passes: count per cell, then fill (CSR).
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<std::uint32_t> fill;
+      if (pass == 1) {
+        for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+        cell_items.resize(cell_start.back());
+        fill.assign(cell_start.begin(), cell_start.end() - 1);
+      }
+      for (std::uint32_t i : gridded) {
+        int x0, x1, y0, y1;
+        CellRange(aabbs[i].lo, aabbs[i].hi, &x0, &x1, &y0, &y1);
+        for (int y = y0; y <= y1; ++y) {
+          for (int x = x0; x <= x1; ++x) {
+            const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) +
+                                  static_cast<std::size_t>(x);
+            if (pass == 0) {
+              ++cell_start[c + 1];
+            } else {
+              cell_items[fill[c]++] = i;
+            }
+          }
+        }
+      }
+    }
+  }
+
+  void CellRange(const Vec3& lo, const Vec3& hi, int* x0, int* x1, int* y0, int* y1) const {
+    // Truncation is floor for the non-negative values that survive the clamp (no libm call).
+    auto cell = [&](double v, double origin, int count) {
+      const double c = (v - origin) * inverse_cell_1_m;
+      return c <= 0.0 ? 0 : c >= count - 1 ? count - 1 : static_cast<int>(c);
+    };
+    *x0 = cell(lo.x(), origin_x, nx);
+    *x1 = cell(hi.x(), origin_x, nx);
+    *y0 = cell(lo.y(), origin_y, ny);
+    *y1 = cell(hi.y(), origin_y, ny);
+  }
+
+  // Colliders whose world AABB overlaps [lo, hi] and whose oriented bounds come within `radius` of
+  // `centre`, into `candidates`.
+  void Candidates(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius) {
+    candidates.clear();
+    const double r2 = radius * radius;
+    auto consider = [&](std::uint32_t i) {
+      const Aabb& box = aabbs[i];
+      if (lo.x() > box.hi.x() || lo.y() > box.hi.y() || lo.z() > box.hi.z() || hi.x() < box.lo.x() ||
+          hi.y() < box.lo.y() || hi.z() < box.lo.z()) {
+        return;
+      }
+      const Bounds& b = bounds[i];
+      const Vec3 d = b.R_WL.transpose() * (centre - b.centre_W);
+      const Vec3 outside = (d.cwiseAbs() - b.half_m).cwiseMax(0.0);
+      if (outside.squaredNorm() <= r2) candidates.push_back(statics[i].get());
+    };
+    for (std::uint32_t i : large) consider(i);
+    if (nx == 0 || hi.x() < origin_x || hi.y() < origin_y || lo.x() > origin_x + nx * cell_m ||
+        lo.y() > origin_y + ny * cell_m) {
+      return;
+    }
+    int x0, x1, y0, y1;
+    CellRange(lo, hi, &x0, &x1, &y0, &y1);
+    const bool one_cell = x0 == x1 && y0 == y1;
+    if (!one_cell && ++query == 0) {  // the stamp counter wrapped: forget every stamp
+      std::fill(stamp.begin(), stamp.end(), 0);
+      query = 1;
+    }
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const std::size_t c =
+            static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x);
+        for (std::uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
+          const std::uint32_t i = cell_items[k];
+          // A collider spanning several cells of the query is considered once.
+          if (!one_cell) {
+            if (stamp[i] == query) continue;
+            stamp[i] = query;
+          }
+          consider(i);
+        }
+      }
+    }
+  }
 
   ~Bullet() {
     for (auto& o : statics) world.removeCollisionObject(o.get());
@@ -139,6 +277,17 @@ struct CollisionWorld::Bullet {
     object->setWorldTransform(T_WC);
     object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
     object->setUserIndex(collider_index);
+    btVector3 lo, hi;
+    shape->getAabb(btTransform::getIdentity(), lo, hi);
+    const btMatrix3x3& basis = T_WC.getBasis();
+    Mat3 R;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) R(i, j) = basis[i][j];
+    }
+    const Vec3 local_centre = 0.5 * (FromBt(lo) + FromBt(hi));
+    bounds.resize(static_cast<std::size_t>(collider_index) + 1);
+    bounds[static_cast<std::size_t>(collider_index)] =
+        Bounds{FromBt(T_WC.getOrigin()) + R * local_centre, R, 0.5 * (FromBt(hi) - FromBt(lo))};
     world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     statics.push_back(std::move(object));
@@ -257,7 +406,7 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       b.AddStatic(b.Own(shape), ToBt(R, centre), make_collider(part.material));
     }
   }
-  b.broadphase.optimize();
+  b.BuildGrid();
 }
 
 CollisionWorld::~CollisionWorld() = default;
@@ -269,6 +418,8 @@ int CollisionWorld::AddBody(const Vec3& box_size_m) {
   object->setCollisionShape(shape);
   object->setUserIndex(-1);
   b.bodies.push_back(std::move(object));
+  b.body_half_m.push_back(0.5 * box_size_m);
+  b.body_radius_m.push_back(0.5 * box_size_m.norm());
   return static_cast<int>(b.bodies.size() - 1);
 }
 
@@ -276,24 +427,17 @@ void CollisionWorld::FindContacts(int body, const Vec3& p_W, const Quat& q_WB, d
                                   std::vector<Contact>& contacts) {
   Bullet& b = *bullet_;
   contacts.clear();
-  btCollisionObject& body_object = *b.bodies[static_cast<std::size_t>(body)];
-  const btTransform T_WB = ToBt(q_WB.toRotationMatrix(), p_W);
-  body_object.setWorldTransform(T_WB);
-  btVector3 lo, hi;
-  body_object.getCollisionShape()->getAabb(T_WB, lo, hi);
-  const btScalar m = static_cast<btScalar>(margin_m);
-  const btVector3 pad{m, m, m};
-  const btDbvtVolume volume = btDbvtVolume::FromMM(lo - pad, hi + pad);
-
-  // Broadphase: walk both trees of the DBVT broadphase (statics never move, so they stay put).
-  b.candidates.clear();
-  LeafCollector leaves;
-  leaves.out = &b.candidates;
-  for (btDbvt& tree : b.broadphase.m_sets) {
-    tree.collideTVNoStackAlloc(tree.m_root, volume, b.stack, leaves);
-  }
+  const auto index = static_cast<std::size_t>(body);
+  // Broadphase: the body's world AABB (|R| half-extents) against both trees of the DBVT broadphase (statics
+  // never move, so they stay where they were inserted), then the exact bounding-sphere test.
+  const Mat3 R_WB = q_WB.toRotationMatrix();
+  const Vec3 reach = R_WB.cwiseAbs() * b.body_half_m[index] + Vec3::Constant(margin_m);
+  b.Candidates(p_W - reach, p_W + reach, p_W, b.body_radius_m[index] + margin_m);
   if (b.candidates.empty()) return;
 
+  btCollisionObject& body_object = *b.bodies[index];
+  const btTransform T_WB = ToBt(R_WB, p_W);
+  body_object.setWorldTransform(T_WB);
   // Narrowphase on the overlaps only, with Bullet's contact algorithms (box-box is exact).
   const btCollisionObjectWrapper body_wrap(nullptr, body_object.getCollisionShape(), &body_object,
                                            T_WB, -1, -1);
@@ -315,9 +459,16 @@ double CollisionWorld::Sweep(int body, const Quat& q_WB, const Vec3& from_W, con
                              Contact* hit) {
   Bullet& b = *bullet_;
   if ((to_W - from_W).squaredNorm() == 0.0) return 1.0;
-  const btCollisionObject& body_object = *b.bodies[static_cast<std::size_t>(body)];
-  const auto* shape = static_cast<const btConvexShape*>(body_object.getCollisionShape());
+  const auto index = static_cast<std::size_t>(body);
   const Mat3 R = q_WB.toRotationMatrix();
+  // Nothing near the swept segment: no sweep (the common case, and Bullet's sweep is costly).
+  const Vec3 reach = R.cwiseAbs() * b.body_half_m[index];
+  const Vec3 lo = from_W.cwiseMin(to_W) - reach, hi = from_W.cwiseMax(to_W) + reach;
+  b.Candidates(lo, hi, 0.5 * (from_W + to_W),
+               b.body_radius_m[index] + 0.5 * (to_W - from_W).norm());
+  if (b.candidates.empty()) return 1.0;
+  const btCollisionObject& body_object = *b.bodies[index];
+  const auto* shape = static_cast<const btConvexShape*>(body_object.getCollisionShape());
   const btTransform from = ToBt(R, from_W);
   const btTransform to = ToBt(R, to_W);
   SweepCallback callback(from.getOrigin(), to.getOrigin());

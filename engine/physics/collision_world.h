@@ -30,10 +30,13 @@ struct Contact {
 };
 
 /// The collision world (Bullet's btCollisionWorld with a dynamic AABB tree broadphase; Bullet's dynamics are
-/// not used). Built once from a StaticScene; static colliders never move and cost nothing per query beyond
-/// the tree descent: Bullet never recomputes their bounds (no performDiscreteCollisionDetection is called).
-/// Moving bodies are boxes that are not inserted in the broadphase: each query takes the body's pose, walks
-/// the static tree with the body's bounds and runs Bullet's narrowphase only on the overlaps.
+/// not used). Built once from a StaticScene; static colliders never move and cost nothing per query: Bullet
+/// never recomputes their bounds (performDiscreteCollisionDetection is never called). Moving bodies are boxes
+/// that are not inserted in the broadphase: each query takes the body's pose, looks its bounds up in a
+/// static uniform grid over the ground plan (built once; huge colliders such as ground planes are kept
+/// apart), keeps the colliders whose oriented bounds come within the body's bounding sphere, and runs
+/// Bullet's contact algorithms on those only. Sweeps use Bullet's convexSweepTest (through its broadphase),
+/// only when the grid finds something near the swept path.
 ///
 /// Shapes: primitives become Bullet primitives (box, sphere, cylinder, cone); a plane becomes a 1 m thick
 /// slab under its surface (on its local +z side, i.e. below it in NED) so nothing passes through it;

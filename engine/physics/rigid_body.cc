@@ -33,6 +33,9 @@ RigidBodyModel::RigidBodyModel(const RigidBodyConfig& config) : config_(config) 
   config_.Validate();
   inverse_mass_1_kg_ = 1.0 / config_.mass_kg;
   inverse_inertia_B_ = config_.inertia_B_kg_m2.inverse();
+  Mat3 off_diagonal = config_.inertia_B_kg_m2;
+  off_diagonal.diagonal().setZero();
+  principal_axes_ = off_diagonal.isZero(0.0);
   const Vec3& s = config_.box_size_m;
   cross_section_m2_ = Vec3(s.y() * s.z(), s.x() * s.z(), s.x() * s.y());
   linear_drag_factor_m2_ = 0.5 * config_.linear_drag_coefficient * cross_section_m2_;

@@ -36,6 +36,9 @@ class RigidBodyModel {
   double inverse_mass_1_kg() const { return inverse_mass_1_kg_; }
   const Mat3& inertia_B() const { return config_.inertia_B_kg_m2; }
   const Mat3& inverse_inertia_B() const { return inverse_inertia_B_; }
+  /// True when the body axes are principal axes (no products of inertia): the integrator then uses the
+  /// diagonal form of Euler's equation.
+  bool principal_axes() const { return principal_axes_; }
   /// Cross-section areas of the box seen along body x, y, z: [sy*sz, sx*sz, sx*sy] (m^2).
   const Vec3& cross_section_m2() const { return cross_section_m2_; }
   /// 1/2 C_lin A per axis (m^2): linear drag force is -rho * this * v|v| per body axis.
@@ -51,6 +54,7 @@ class RigidBodyModel {
   RigidBodyConfig config_;
   double inverse_mass_1_kg_;
   Mat3 inverse_inertia_B_;
+  bool principal_axes_;
   Vec3 cross_section_m2_;
   Vec3 linear_drag_factor_m2_;
   Vec3 angular_drag_factor_m5_;

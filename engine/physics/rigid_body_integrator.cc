@@ -22,6 +22,7 @@ struct Stage {
   Vec3 w;
 };
 
+template <bool kPrincipalAxes>
 inline Derivative Evaluate(const RigidBodyModel& body, const StepForcing& f, double z0,
                            const Stage& s) {
   const Quat q(s.q);  // not exactly unit inside the step; its rotation is used as is (RK4 consistency)
@@ -43,8 +44,12 @@ inline Derivative Evaluate(const RigidBodyModel& body, const StepForcing& f, dou
   const double wx = s.w.x(), wy = s.w.y(), wz = s.w.z();
   d.dq = 0.5 * Eigen::Vector4d(qw * wx + qy * wz - qz * wy, qw * wy + qz * wx - qx * wz,
                                qw * wz + qx * wy - qy * wx, -qx * wx - qy * wy - qz * wz);
-  const Mat3& I = body.inertia_B();
-  d.dw = body.inverse_inertia_B() * (torque_B - s.w.cross(I * s.w));
+  if constexpr (kPrincipalAxes) {
+    const Vec3 I = body.inertia_B().diagonal();
+    d.dw = (torque_B - s.w.cross(I.cwiseProduct(s.w))).cwiseProduct(body.inverse_inertia_B().diagonal());
+  } else {
+    d.dw = body.inverse_inertia_B() * (torque_B - s.w.cross(body.inertia_B() * s.w));
+  }
   return d;
 }
 
@@ -52,16 +57,15 @@ inline Stage Advance(const Stage& s, const Derivative& d, double h) {
   return Stage{s.p + h * d.dp, s.v + h * d.dv, s.q + h * d.dq, s.w + h * d.dw};
 }
 
-}  // namespace
-
-void StepRigidBody(const RigidBodyModel& body, const StepForcing& forcing, double dt_s,
-                   RigidBodyState& state, RigidBodyAccelerations& accelerations) {
+template <bool kPrincipalAxes>
+void Step(const RigidBodyModel& body, const StepForcing& forcing, double dt_s, RigidBodyState& state,
+          RigidBodyAccelerations& accelerations) {
   const Stage s0{state.p_W, state.v_W, state.q_WB.coeffs(), state.w_B};
   const double z0 = state.p_W.z();
-  const Derivative k1 = Evaluate(body, forcing, z0, s0);
-  const Derivative k2 = Evaluate(body, forcing, z0, Advance(s0, k1, 0.5 * dt_s));
-  const Derivative k3 = Evaluate(body, forcing, z0, Advance(s0, k2, 0.5 * dt_s));
-  const Derivative k4 = Evaluate(body, forcing, z0, Advance(s0, k3, dt_s));
+  const Derivative k1 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0);
+  const Derivative k2 = Evaluate<kPrincipalAxes>(body, forcing, z0, Advance(s0, k1, 0.5 * dt_s));
+  const Derivative k3 = Evaluate<kPrincipalAxes>(body, forcing, z0, Advance(s0, k2, 0.5 * dt_s));
+  const Derivative k4 = Evaluate<kPrincipalAxes>(body, forcing, z0, Advance(s0, k3, dt_s));
   const double h6 = dt_s / 6.0;
   state.p_W += h6 * (k1.dp + 2.0 * (k2.dp + k3.dp) + k4.dp);
   const Vec3 dv = h6 * (k1.dv + 2.0 * (k2.dv + k3.dv) + k4.dv);
@@ -78,6 +82,17 @@ void StepRigidBody(const RigidBodyModel& body, const StepForcing& forcing, doubl
   accelerations.gravity_W =
       Vec3(0.0, 0.0,
            forcing.gravity_m_s2 + forcing.gravity_gradient_1_s2 * (state.p_W.z() - z0));
+}
+
+}  // namespace
+
+void StepRigidBody(const RigidBodyModel& body, const StepForcing& forcing, double dt_s,
+                   RigidBodyState& state, RigidBodyAccelerations& accelerations) {
+  if (body.principal_axes()) {
+    Step<true>(body, forcing, dt_s, state, accelerations);
+  } else {
+    Step<false>(body, forcing, dt_s, state, accelerations);
+  }
 }
 
 bool IsFinite(const RigidBodyState& state) {

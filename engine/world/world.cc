@@ -20,9 +20,10 @@ ContactSolverConfig SolverConfig(const PhysicsConfig& physics) {
   return c;
 }
 
-// Height of the finite difference for the gravity gradient (m): large enough that the difference of two
-// doubles near 9.8 keeps ~9 digits, small enough that the curvature of g(h) does not matter.
-constexpr double kGravityGradientStep_m = 1.0;
+// The local environment model is refreshed when the body is this far from its reference altitude (m), and
+// its slopes are finite differences over the same height: with density scale heights of ~8 km and gravity's
+// of ~3000 km, the curvature left out is below 1e-8 relative.
+constexpr double kEnvironmentRefresh_m = 1.0;
 
 }  // namespace
 
@@ -91,7 +92,22 @@ int World::FindVehicle(std::string_view name) const {
 }
 
 void World::StepPhysics(TimeNs now_ns, double dt_s) {
-  for (std::size_t i = 0; i < slots_.size(); ++i) StepVehicle(slots_[i], i, now_ns, dt_s);
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    if (!slots_[i].held) StepVehicle(slots_[i], i, now_ns, dt_s);
+  }
+}
+
+void World::SetHeld(std::size_t i, bool held) {
+  Slot& slot = slots_[i];
+  slot.held = held;
+  if (!held) return;
+  RigidBodyState& s = slot.vehicle->state();
+  s.v_W.setZero();
+  s.w_B.setZero();
+  slot.accelerations.a_W.setZero();
+  slot.accelerations.alpha_B.setZero();
+  slot.accelerations.gravity_W = Vec3(0.0, 0.0, environment_.CalcGravity_m_s2(s.p_W));
+  slot.contacts.clear();
 }
 
 void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const {
@@ -112,18 +128,17 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   const Vec3 v0 = state.v_W;
   const Vec3 w0 = state.w_B;
 
-  // Environment at the start of the step (held over it; gravity is linearised in altitude).
-  StepForcing forcing;
-  try {
-    forcing.air_density_kg_m3 = environment_.CalcAir(p0).density_kg_m3;
-  } catch (const std::out_of_range& e) {
-    Fail(slot, now_ns, std::string("outside the atmosphere model: ") + e.what());
+  // Environment at the start of the step (held over it; gravity is linearised in altitude within it).
+  const double altitude_m = environment_.AltitudeOf(p0);
+  LocalEnvironment& local = slot.local;
+  if (!(std::abs(altitude_m - local.altitude_m) <= kEnvironmentRefresh_m)) {
+    RefreshLocalEnvironment(slot, now_ns, p0);
   }
-  forcing.gravity_m_s2 = environment_.CalcGravity_m_s2(p0);
-  forcing.gravity_gradient_1_s2 =
-      (environment_.CalcGravity_m_s2(p0 + Vec3(0.0, 0.0, kGravityGradientStep_m)) -
-       forcing.gravity_m_s2) /
-      kGravityGradientStep_m;
+  const double dh = altitude_m - local.altitude_m;
+  StepForcing forcing;
+  forcing.air_density_kg_m3 = local.density_kg_m3 + local.density_slope_kg_m4 * dh;
+  forcing.gravity_m_s2 = local.gravity_m_s2 + local.gravity_slope_1_s2 * dh;
+  forcing.gravity_gradient_1_s2 = -local.gravity_slope_1_s2;  // z_W points down: d/dz = -d/dh
   forcing.wind_W = environment_.wind().CalcVelocity_W(p0);
 
   const Wrench wrench =
@@ -165,6 +180,22 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   slot.accelerations.a_W = (state.v_W - v0) / dt_s;
   slot.accelerations.alpha_B = (state.w_B - w0) / dt_s;
   ReportNewContacts(slot, index, now_ns + SecondsToNs(dt_s), resolution);
+}
+
+void World::RefreshLocalEnvironment(Slot& slot, TimeNs now_ns, const Vec3& p_W) const {
+  LocalEnvironment& local = slot.local;
+  const Vec3 above_W = p_W - Vec3(0.0, 0.0, kEnvironmentRefresh_m);
+  try {
+    local.density_kg_m3 = environment_.CalcAir(p_W).density_kg_m3;
+    local.density_slope_kg_m4 =
+        (environment_.CalcAir(above_W).density_kg_m3 - local.density_kg_m3) / kEnvironmentRefresh_m;
+  } catch (const std::out_of_range& e) {
+    Fail(slot, now_ns, std::string("outside the atmosphere model: ") + e.what());
+  }
+  local.gravity_m_s2 = environment_.CalcGravity_m_s2(p_W);
+  local.gravity_slope_1_s2 =
+      (environment_.CalcGravity_m_s2(above_W) - local.gravity_m_s2) / kEnvironmentRefresh_m;
+  local.altitude_m = environment_.AltitudeOf(p_W);
 }
 
 void World::ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -76,6 +77,11 @@ class World {
   std::size_t vehicle_count() const { return slots_.size(); }
   Vehicle& vehicle(std::size_t i) { return *slots_[i].vehicle; }
   const Vehicle& vehicle(std::size_t i) const { return *slots_[i].vehicle; }
+  /// Holds vehicle `i` kinematically where its state puts it (true) or simulates it again (false). A held
+  /// vehicle is not moved, pushed or collided by StepPhysics; its velocities are zeroed and its accelerations
+  /// read as at rest (gravity only). For placing cameras at chosen poses (mission step random_poses).
+  void SetHeld(std::size_t i, bool held);
+  bool held(std::size_t i) const { return slots_[i].held; }
   /// Accelerations of vehicle `i` over the last step (contacts included).
   const RigidBodyAccelerations& accelerations(std::size_t i) const { return slots_[i].accelerations; }
   /// Contacts of vehicle `i` found in the last step (after the sweep, before their resolution).
@@ -103,8 +109,18 @@ class World {
   const PhysicsConfig& physics_config() const { return physics_; }
 
  private:
+  // Air density and gravity about a reference altitude, as value and slope (first-order Taylor model),
+  // refreshed when the body moves more than kEnvironmentRefresh_m from it. Both vary on kilometre scales:
+  // the model is good to ~1e-8 relative and spares the atmosphere model on most ticks.
+  struct LocalEnvironment {
+    double altitude_m = std::numeric_limits<double>::quiet_NaN();
+    double density_kg_m3 = 0.0, density_slope_kg_m4 = 0.0;  // per metre of altitude
+    double gravity_m_s2 = 0.0, gravity_slope_1_s2 = 0.0;    // per metre of altitude
+  };
   struct Slot {
     std::unique_ptr<Vehicle> vehicle;
+    bool held = false;  // SetHeld: kinematic, skipped by StepPhysics
+    LocalEnvironment local;
     int body = -1;  // handle in collision_
     std::vector<std::unique_ptr<Sensor>> sensors;
     RigidBodyAccelerations accelerations;
@@ -113,6 +129,7 @@ class World {
     std::vector<std::uint32_t> touching_next;  // scratch
   };
   void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
+  void RefreshLocalEnvironment(Slot& slot, TimeNs now_ns, const Vec3& p_W) const;
   [[noreturn]] void Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const;
   void ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
                          const ContactResolution& resolution);
