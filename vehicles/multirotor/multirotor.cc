@@ -30,6 +30,7 @@ Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
       r.max_tilt_rad = engine::DegToRad(rc.max_tilt_deg);
       r.tilt_rate_rad_s = engine::DegToRad(rc.tilt_rate_deg_s);
     }
+    UpdateUnitWrench(r);
     rotors_.push_back(r);
   }
   for (Rotor& r : rotors_) {
@@ -123,6 +124,13 @@ void Multirotor::ApplyTilt(Rotor& r, double tilt_rad) {
   const engine::Mat3 turn = Eigen::AngleAxisd(tilt_rad, r.tilt_axis_B).toRotationMatrix();
   r.direction_B = turn * r.base_direction_B;
   r.position_B = r.pivot_B + turn * (r.base_position_B - r.pivot_B);
+  UpdateUnitWrench(r);
+}
+
+void Multirotor::UpdateUnitWrench(Rotor& r) {
+  r.force_per_density_B = r.thrust_per_density * r.direction_B;
+  r.torque_per_density_B =
+      r.position_B.cross(r.force_per_density_B) + r.torque_per_density_signed * r.direction_B;
 }
 
 engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& context) {
@@ -154,10 +162,9 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
     const double offset = r.u - command;
     const double u_mean = command + offset * r.lag_mean;  // the lag's exact mean over the step
     r.u = command + offset * r.lag_decay;
-    const Vec3 force = (r.thrust_per_density * rho * u_mean) * r.direction_B;
-    wrench.force_B += force;
-    wrench.torque_B += r.position_B.cross(force) +
-                       (r.torque_per_density_signed * rho * u_mean) * r.direction_B;
+    const double scale = rho * u_mean;
+    wrench.force_B += scale * r.force_per_density_B;
+    wrench.torque_B += scale * r.torque_per_density_B;
   }
   return wrench;
 }

@@ -80,6 +80,9 @@ class Multirotor final : public engine::Vehicle {
  private:
   struct Rotor {
     engine::Vec3 position_B, direction_B;        // current (tilted) vertex
+    // Wrench per unit of (density x command) at the current tilt: force d C_T n^2 D^4, torque
+    // r x force + signed reaction; recomputed only when the vertex moves.
+    engine::Vec3 force_per_density_B, torque_per_density_B;
     engine::Vec3 base_position_B, base_direction_B, pivot_B, tilt_axis_B;
     double thrust_per_density;                   // C_T n^2 D^4
     double torque_per_density_signed;            // -(+1 CCW, -1 CW) C_pow n^2 D^5 / (2 pi)
@@ -92,6 +95,7 @@ class Multirotor final : public engine::Vehicle {
   };
   void CheckCommands(std::span<const double> commands) const;
   void ApplyTilt(Rotor& rotor, double tilt_rad);
+  static void UpdateUnitWrench(Rotor& rotor);
 
   /// Air density at which the controller's actuator effects are computed (sea level, standard atmosphere).
   static constexpr double kReferenceDensity_kg_m3 = 1.225;
