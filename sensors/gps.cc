@@ -138,8 +138,8 @@ void Gps::Sample(const engine::SensorContext& context) {
   history_[(history_head_ + history_size_) % history_.size()] = truth;
   ++history_size_;
 
-  const TimeNs position_time = std::max<TimeNs>(0, now - latency_ns_);
-  const Truth past = Lookup(position_time);
+  // Before the first fix is a latency old, the earliest recorded truth stands in (Lookup clamps).
+  const Truth past = Lookup(now - latency_ns_);
 
   // Position error: unit-variance slow Gauss-Markov part advanced over the time since the last fix,
   // plus white, scaled by the current accuracy estimates. Draw order is fixed for reproducibility.
@@ -160,7 +160,7 @@ void Gps::Sample(const engine::SensorContext& context) {
   const double ve = past.v_W.y() + config_.velocity_noise_m_s * StandardNormal(stream_);
 
   latest_.time_ns = now;
-  latest_.position_time_ns = position_time;
+  latest_.position_time_ns = past.t_ns;
   if (now < startup_ns_) {
     latest_.fix_type = GpsFixType::kNoFix;
   } else if (eph <= config_.fix_3d_max_eph_m) {

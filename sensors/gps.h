@@ -67,8 +67,9 @@ enum class GpsFixType { kNoFix = 1, k2D = 2, k3D = 3 };
 /// reliably).
 struct GpsSample {
   engine::TimeNs time_ns = -1;  ///< simulated time the fix is delivered
-  engine::TimeNs position_time_ns =
-      -1;  ///< simulated time the fix describes: time_ns - latency (>= 0)
+  /// Simulated time the fix describes: time_ns - latency, or the first fix's time while the run is
+  /// younger than the latency.
+  engine::TimeNs position_time_ns = -1;
   GpsFixType fix_type = GpsFixType::kNoFix;
   double latitude_rad = 0.0;                ///< WGS84 geodetic latitude
   double longitude_rad = 0.0;               ///< WGS84 longitude, east positive
