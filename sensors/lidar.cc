@@ -107,22 +107,40 @@ void Lidar::CopyLatestRow(std::span<double> out) const {
   out[2] = any ? nearest : 0.0;
 }
 
+double Lidar::column_time_offset_s(int column) const {
+  if (!config_.motion_distortion) return 0.0;
+  // The head sweeps horizontal_fov_deg of each full turn; the last column fires at the scan time.
+  const double sweep_s = config_.horizontal_fov_deg / 360.0 / config_.rotation_rate_hz;
+  return sweep_s * static_cast<double>(scan_.columns - 1 - column) / scan_.columns;
+}
+
 void Lidar::Sample(const engine::SensorContext& context) {
   AIRIS_DEMAND(context.state != nullptr);
   const engine::RigidBodyState& s = *context.state;
+  const engine::Vec3& p_BS = config_.mount.position_m;
+  const engine::Quat q_BS = config_.mount.q_BS();
   scan_.time_ns = context.now_ns;
-  scan_.p_WS = s.p_W + s.q_WB * config_.mount.position_m;
-  scan_.q_WS = s.q_WB * config_.mount.q_BS();
-  const engine::Mat3 R_WS = scan_.q_WS.toRotationMatrix();
+  scan_.p_WS = s.p_W + s.q_WB * p_BS;
+  scan_.q_WS = s.q_WB * q_BS;
+  const engine::Vec3 v_WS = s.v_W + s.q_WB * s.w_B.cross(p_BS);
   const auto min_range = static_cast<float>(config_.min_range_m);
   const auto max_range = static_cast<float>(config_.max_range_m);
 
-  for (std::size_t i = 0; i < rays_.size(); ++i) {
-    engine::Ray& ray = rays_[i];
-    ray.origin_W = scan_.p_WS;
-    ray.direction_W = R_WS * directions_S_[i].cast<double>();
-    ray.min_range_m = min_range;
-    ray.max_range_m = max_range;
+  // Each column is cast from the pose the sensor had when it fired, dt earlier: the body moved back
+  // at its current velocity and angular velocity (q_WB(t - dt) = q_WB(t) exp(-w_B dt)).
+  const auto channels = static_cast<std::size_t>(scan_.channels);
+  for (int c = 0; c < scan_.columns; ++c) {
+    const double dt_s = column_time_offset_s(c);
+    const engine::Vec3 p_WS = scan_.p_WS - dt_s * v_WS;
+    const engine::Mat3 R_WS =
+        (s.q_WB * engine::QuatExp(-dt_s * s.w_B) * q_BS).normalized().toRotationMatrix();
+    for (std::size_t i = c * channels; i < (c + 1) * channels; ++i) {
+      engine::Ray& ray = rays_[i];
+      ray.origin_W = p_WS;
+      ray.direction_W = R_WS * directions_S_[i].cast<double>();
+      ray.min_range_m = min_range;
+      ray.max_range_m = max_range;
+    }
   }
   if (context.rays != nullptr) {
     context.rays->Cast(rays_, hits_);

@@ -31,6 +31,9 @@ struct LidarConfig {
   double min_range_m = 0.5;                  ///< nearer surfaces are not seen
   double max_range_m = 100.0;                ///< farther surfaces are not seen
   double range_noise_m = 0.03;               ///< white noise on each range, 1 sigma
+  /// Cast each column from the pose the sensor had when it fired (a moving lidar's scan is skewed,
+  /// as a real one's); false: the whole scan from the pose at the scan time.
+  bool motion_distortion = true;
 
   template <class V>
   void Visit(V& v) {
@@ -47,6 +50,8 @@ struct LidarConfig {
     v.Field("min_range_m", min_range_m, "minimum range (m)");
     v.Field("max_range_m", max_range_m, "maximum range (m)");
     v.Field("range_noise_m", range_noise_m, "white noise on each range, 1 sigma (m)");
+    v.Field("motion_distortion", motion_distortion,
+            "cast each column from the pose at its firing time (true) or all from the scan pose");
   }
   /// Throws InvalidField naming the field.
   void Validate() const;
@@ -79,13 +84,15 @@ struct LidarScan {
   std::vector<LidarPoint> points;  ///< channels * columns entries
 };
 
-/// Spinning lidar: every rotation period it casts channels x columns rays from the sensor's pose
-/// through the world's RayCaster (Embree, in batches) and fills a LidarScan in place. Each point
-/// carries its range (true distance plus white noise, clamped to the range limits), a hit flag and
-/// the label of what it hit. Simplification: the whole rotation is cast from the pose at the scan
-/// time (no motion distortion within a rotation). Listeners read the scan through latest() by const
-/// reference: nothing large is copied, and the buffers are reused, so Sample does not allocate
-/// after construction.
+/// Spinning lidar: every rotation period it casts channels x columns rays through the world's
+/// RayCaster (Embree, in batches) and fills a LidarScan in place. Each point carries its range
+/// (true distance plus white noise, clamped to the range limits), a hit flag and the label of what
+/// it hit. With motion_distortion each column is cast from the pose the sensor had when that column
+/// fired (column_time_offset_s earlier), extrapolated back from the scan time at constant velocity
+/// and angular velocity (exact for steady motion; the truth between ticks is not stored), so a
+/// moving lidar's scan is skewed as a real one's is. Listeners read the scan through latest() by
+/// const reference: nothing large is copied, and the buffers are reused, so Sample does not
+/// allocate after construction.
 class Lidar final : public engine::Sensor {
  public:
   /// @param config validated here (throws InvalidField). @param stream this sensor's own random
@@ -102,6 +109,11 @@ class Lidar final : public engine::Sensor {
   Eigen::Vector3f CalcPoint_S(std::size_t i) const {
     return scan_.points[i].range_m * directions_S_[i];
   }
+  /// How long before the scan time column `column` fired (s): the last column fires at the scan
+  /// time, column c at sweep * (columns - 1 - c) / columns, sweep = horizontal_fov / 360 /
+  /// rotation_rate; 0 without motion_distortion. Its ray left from the scan pose moved back over
+  /// this time at the body's velocity and angular velocity at the scan time.
+  double column_time_offset_s(int column) const;
   /// Points per simulated second: channels * columns * rotation_rate_hz.
   double points_per_second() const;
 

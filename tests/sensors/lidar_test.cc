@@ -128,6 +128,43 @@ TEST(LidarTest, WallRangesMatchDistanceOverDirectionCosine) {
   EXPECT_GT(hits, 16u * 200u);
 }
 
+TEST(LidarTest, MovingLidarCastsEachColumnFromItsFiringPose) {
+  // GIVEN a wall whose near face is x = 20 m and a level lidar at the origin at the scan time,
+  // moving toward the wall at 10 m/s
+  BoxSpec wall;
+  wall.center_W = Vec3(21.0, 0, 0);
+  wall.size_m = Vec3(2.0, 400, 400);
+  const engine::EmbreeRayCaster caster(testing::MakeBoxScene({wall}));
+  const engine::Environment env = testing::MakeEnvironment();
+  Lidar lidar("lidar", NoiselessConfig(), engine::RandomStream(1));
+  Truth truth;
+  truth.state.v_W = Vec3(10.0, 0, 0);
+  lidar.Update(truth.At(0, env, &caster));
+  const LidarScan& scan = lidar.latest();
+  // THEN column c, fired dt_c = 0.1 s * (624 - c) / 625 earlier from x = -10 dt_c, reads
+  // (20 + 10 dt_c) / d_x: up to 1 m longer than a static scan at azimuth 0
+  EXPECT_NEAR(lidar.column_time_offset_s(0), 0.1 * 624.0 / 625.0, 1e-12);
+  EXPECT_EQ(lidar.column_time_offset_s(624), 0.0);
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < scan.points.size(); ++i) {
+    const Vec3 d_W = lidar.direction_S(i).cast<double>();
+    if (d_W.x() < 0.3) continue;
+    const double dt = lidar.column_time_offset_s(static_cast<int>(i / 16));
+    const double expected = (20.0 + 10.0 * dt) / d_W.x();
+    if (expected > 100.0) continue;
+    ASSERT_TRUE(scan.points[i].hit) << i;
+    EXPECT_NEAR(scan.points[i].range_m, expected, kRelativeTolerance * expected) << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 16u * 200u);
+  // AND without motion distortion the same motion gives the static ranges
+  LidarConfig c = NoiselessConfig();
+  c.motion_distortion = false;
+  Lidar still("lidar", c, engine::RandomStream(1));
+  still.Update(truth.At(0, env, &caster));
+  EXPECT_NEAR(still.latest().points[0].range_m, 20.0 / lidar.direction_S(0).x(), 1e-3);
+}
+
 TEST(LidarTest, ScanIsDeliveredByReferenceAndBuffersAreReused) {
   BoxSpec ground;
   ground.center_W = Vec3(0, 0, 1.0);
