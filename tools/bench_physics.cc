@@ -32,7 +32,8 @@ engine::TriangleMesh PrimitiveMesh(engine::Primitive primitive, const char* name
   }
   mesh.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
                   2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-  mesh.bounds = Eigen::AlignedBox3f(Eigen::Vector3f(-0.5f, -0.5f, -z), Eigen::Vector3f(0.5f, 0.5f, z));
+  mesh.bounds =
+      Eigen::AlignedBox3f(Eigen::Vector3f(-0.5f, -0.5f, -z), Eigen::Vector3f(0.5f, 0.5f, z));
   return mesh;
 }
 
@@ -44,7 +45,8 @@ engine::Environment BenchEnvironment() {
   return engine::Environment(engine::EnvironmentConfig{}, origin, engine::RandomStream(11));
 }
 
-// The quad's wrench at hover (lag settled) as the Bullet scenario applies it: rotors plus box drag, world axes.
+// The quad's wrench at hover (lag settled) as the Bullet scenario applies it: rotors plus box drag,
+// world axes.
 struct WorldWrench {
   Vec3 force_W;
   Vec3 torque_W;
@@ -134,7 +136,8 @@ struct PhysicsTickScenario::State {
 
 PhysicsTickScenario::PhysicsTickScenario(int box_count, double extent_m, std::uint64_t seed)
     : s_(std::make_unique<State>()) {
-  auto scene = std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(box_count, extent_m, seed));
+  auto scene =
+      std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(box_count, extent_m, seed));
   auto world = std::make_unique<engine::World>(scene, BenchEnvironment());
   auto quad = std::make_unique<vehicles::Multirotor>("quad", vehicles::QuadXConfig());
   s_->quad = quad.get();
@@ -197,7 +200,8 @@ struct BulletTickScenario::State {
     quad_body->setWorldTransform(btTransform(
         btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
         btVector3(btScalar(s.p_W.x()), btScalar(s.p_W.y()), btScalar(s.p_W.z()))));
-    quad_body->setLinearVelocity(btVector3(btScalar(s.v_W.x()), btScalar(s.v_W.y()), btScalar(s.v_W.z())));
+    quad_body->setLinearVelocity(
+        btVector3(btScalar(s.v_W.x()), btScalar(s.v_W.y()), btScalar(s.v_W.z())));
     quad_body->setAngularVelocity(btVector3(0, 0, 0));
     quad_body->clearForces();
     quad->ResetActuators(hover);
@@ -223,18 +227,23 @@ BulletTickScenario::BulletTickScenario(int box_count, double extent_m, std::uint
       centre.z() += 0.5;
     }
     const Quat q(R);
-    s.AddBody(new btBoxShape(btVector3(btScalar(half.x()), btScalar(half.y()), btScalar(half.z()))), 0.0,
-              btVector3(0, 0, 0),
-              btTransform(btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
-                          btVector3(btScalar(centre.x()), btScalar(centre.y()), btScalar(centre.z()))));
+    btRigidBody* box = s.AddBody(
+        new btBoxShape(btVector3(btScalar(half.x()), btScalar(half.y()), btScalar(half.z()))), 0.0,
+        btVector3(0, 0, 0),
+        btTransform(
+            btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
+            btVector3(btScalar(centre.x()), btScalar(centre.y()), btScalar(centre.z()))));
+    // Tuned: statics asleep, so Bullet neither updates their AABBs nor treats them as active.
+    if (static_aabbs_fixed) box->setActivationState(ISLAND_SLEEPING);
   }
   s.quad = std::make_unique<vehicles::Multirotor>("quad", vehicles::QuadXConfig());
   const engine::RigidBodyModel& body = s.quad->body();
   const Vec3 half = 0.5 * body.config().box_size_m;
   const Vec3 I = body.inertia_B().diagonal();
-  s.quad_body = s.AddBody(new btBoxShape(btVector3(btScalar(half.x()), btScalar(half.y()), btScalar(half.z()))),
-                          body.mass_kg(), btVector3(btScalar(I.x()), btScalar(I.y()), btScalar(I.z())),
-                          btTransform::getIdentity());
+  s.quad_body = s.AddBody(
+      new btBoxShape(btVector3(btScalar(half.x()), btScalar(half.y()), btScalar(half.z()))),
+      body.mass_kg(), btVector3(btScalar(I.x()), btScalar(I.y()), btScalar(I.z())),
+      btTransform::getIdentity());
   s.quad_body->setActivationState(DISABLE_DEACTIVATION);
   s.quad_body->setRestitution(btScalar(body.config().restitution));
   s.quad_body->setFriction(btScalar(body.config().friction));
@@ -263,13 +272,16 @@ void BulletTickScenario::Tick() {
   state.w_B = q.conjugate() * Vec3(bw.x(), bw.y(), bw.z());
   const engine::Wrench w =
       s.quad->UpdateActuators(engine::ActuatorContext{0, kDt, s.air_density, &state});
-  const Vec3 force_B =
-      w.force_B + engine::CalcLinearDrag_B(s.quad->body(), s.air_density, q.conjugate() * state.v_W);
-  const Vec3 torque_B = w.torque_B + engine::CalcAngularDrag_B(s.quad->body(), s.air_density, state.w_B);
+  const Vec3 force_B = w.force_B + engine::CalcLinearDrag_B(s.quad->body(), s.air_density,
+                                                            q.conjugate() * state.v_W);
+  const Vec3 torque_B =
+      w.torque_B + engine::CalcAngularDrag_B(s.quad->body(), s.air_density, state.w_B);
   const Vec3 force_W = q * force_B;
   const Vec3 torque_W = q * torque_B;
-  s.quad_body->applyCentralForce(btVector3(btScalar(force_W.x()), btScalar(force_W.y()), btScalar(force_W.z())));
-  s.quad_body->applyTorque(btVector3(btScalar(torque_W.x()), btScalar(torque_W.y()), btScalar(torque_W.z())));
+  s.quad_body->applyCentralForce(
+      btVector3(btScalar(force_W.x()), btScalar(force_W.y()), btScalar(force_W.z())));
+  s.quad_body->applyTorque(
+      btVector3(btScalar(torque_W.x()), btScalar(torque_W.y()), btScalar(torque_W.z())));
   s.world.stepSimulation(btScalar(kDt), 0);
 }
 

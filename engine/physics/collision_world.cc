@@ -17,7 +17,8 @@ namespace {
 constexpr double kPlaneSlabThickness_m = 1.0;
 // CollisionShape::kAuto uses a convex hull for meshes up to this many triangles, a BVH mesh above.
 constexpr std::size_t kAutoHullMaxTriangles = 128;
-// Bullet inflates convex hulls by their margin (0.04 m by default); 1 mm keeps GJK robust and contacts true.
+// Bullet inflates convex hulls by their margin (0.04 m by default); 1 mm keeps GJK robust and
+// contacts true.
 constexpr double kHullMargin_m = 0.001;
 
 btVector3 ToBt(const Vec3& v) {
@@ -31,9 +32,10 @@ btTransform ToBt(const Mat3& R, const Vec3& t) {
   return btTransform(m, ToBt(t));
 }
 
-// Collects the narrowphase's points as Contacts, normal from the collider toward the body. Bullet reports
-// (normal on B pointing to A, point on B, signed distance); an algorithm that swapped the pair internally
-// shows it by a manifold whose body 0 is not our body 0 (the convention of Bullet's own btManifoldResult).
+// Collects the narrowphase's points as Contacts, normal from the collider toward the body. Bullet
+// reports (normal on B pointing to A, point on B, signed distance); an algorithm that swapped the
+// pair internally shows it by a manifold whose body 0 is not our body 0 (the convention of Bullet's
+// own btManifoldResult).
 class ContactCollector : public btManifoldResult {
  public:
   ContactCollector(const btCollisionObjectWrapper* body, const btCollisionObjectWrapper* collider,
@@ -72,10 +74,11 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
   SweepCallback(const btVector3& from, const btVector3& to)
       : ClosestConvexResultCallback(from, to), direction((to - from).normalized()) {}
   btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool normal_in_world) override {
-    const btVector3 n = normal_in_world
-                            ? r.m_hitNormalLocal
-                            : r.m_hitCollisionObject->getWorldTransform().getBasis() * r.m_hitNormalLocal;
-    // The normal points from the collider toward the swept body; a hit counts when the motion goes into it.
+    const btVector3 n = normal_in_world ? r.m_hitNormalLocal
+                                        : r.m_hitCollisionObject->getWorldTransform().getBasis() *
+                                              r.m_hitNormalLocal;
+    // The normal points from the collider toward the swept body; a hit counts when the motion goes
+    // into it.
     if (n.dot(direction) > btScalar(-0.05)) return m_closestHitFraction;
     return ClosestConvexResultCallback::addSingleResult(r, normal_in_world);
   }
@@ -93,12 +96,14 @@ struct CollisionWorld::Bullet {
   std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays;
   std::vector<std::vector<int>> mesh_indices;
   std::vector<std::vector<btScalar>> mesh_vertices;
-  std::vector<btBvhTriangleMeshShape*> mesh_shapes;  // per scene mesh, built on first use (owned above)
+  std::vector<btBvhTriangleMeshShape*>
+      mesh_shapes;  // per scene mesh, built on first use (owned above)
   std::vector<std::unique_ptr<btCollisionObject>> statics;
   std::vector<std::unique_ptr<btCollisionObject>> bodies;
   std::vector<const btCollisionObject*> candidates;
-  // Oriented bounds of every static collider (its shape's local AABB placed in the world), indexed like
-  // colliders_: an exact, cheap sphere test that spares Bullet's narrowphase when AABBs merely overlap.
+  // Oriented bounds of every static collider (its shape's local AABB placed in the world), indexed
+  // like colliders_: an exact, cheap sphere test that spares Bullet's narrowphase when AABBs merely
+  // overlap.
   struct Bounds {
     Vec3 centre_W;
     Mat3 R_WL;
@@ -108,18 +113,19 @@ struct CollisionWorld::Bullet {
   std::vector<Vec3> body_half_m;
   std::vector<double> body_radius_m;
 
-  // Static query grid: a uniform grid over x-y (the scene's ground plan) listing the colliders whose bounds
-  // overlap each cell, plus a list of colliders too large for it (ground planes). Bullet's DBVT answers the
-  // same query, but for a small box in a 10,000-object city it costs ~10x more (and btDbvt's top-down
-  // optimisation degenerates with one huge leaf); statics never move, so a grid built once is exact.
+  // Static query grid: a uniform grid over x-y (the scene's ground plan) listing the colliders
+  // whose bounds overlap each cell, plus a list of colliders too large for it (ground planes).
+  // Bullet's DBVT answers the same query, but for a small box in a 10,000-object city it costs ~10x
+  // more (and btDbvt's top-down optimisation degenerates with one huge leaf); statics never move,
+  // so a grid built once is exact.
   struct Aabb {
     Vec3 lo, hi;
   };
-  std::vector<Aabb> aabbs;                 // per collider, world
-  std::vector<std::uint32_t> large;        // colliders not in the grid
-  std::vector<std::uint32_t> cell_start;   // CSR offsets into cell_items, one per cell plus one
+  std::vector<Aabb> aabbs;                // per collider, world
+  std::vector<std::uint32_t> large;       // colliders not in the grid
+  std::vector<std::uint32_t> cell_start;  // CSR offsets into cell_items, one per cell plus one
   std::vector<std::uint32_t> cell_items;
-  std::vector<std::uint32_t> stamp;        // per collider: last query that saw it (dedupe across cells)
+  std::vector<std::uint32_t> stamp;  // per collider: last query that saw it (dedupe across cells)
   std::uint32_t query = 0;
   double cell_m = 1.0;
   double inverse_cell_1_m = 1.0;
@@ -208,8 +214,8 @@ struct CollisionWorld::Bullet {
     const double r2 = radius * radius;
     auto consider = [&](std::uint32_t i) {
       const Aabb& box = aabbs[i];
-      if (lo.x() > box.hi.x() || lo.y() > box.hi.y() || lo.z() > box.hi.z() || hi.x() < box.lo.x() ||
-          hi.y() < box.lo.y() || hi.z() < box.lo.z()) {
+      if (lo.x() > box.hi.x() || lo.y() > box.hi.y() || lo.z() > box.hi.z() ||
+          hi.x() < box.lo.x() || hi.y() < box.lo.y() || hi.z() < box.lo.z()) {
         return;
       }
       const Bounds& b = bounds[i];
@@ -231,8 +237,8 @@ struct CollisionWorld::Bullet {
     }
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
-        const std::size_t c =
-            static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x);
+        const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) +
+                              static_cast<std::size_t>(x);
         for (std::uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
           const std::uint32_t i = cell_items[k];
           // A collider spanning several cells of the query is considered once.
@@ -264,7 +270,8 @@ struct CollisionWorld::Bullet {
     for (const auto& p : mesh.positions) vtx.insert(vtx.end(), {p.x(), p.y(), p.z()});
     mesh_arrays.push_back(std::make_unique<btTriangleIndexVertexArray>(
         static_cast<int>(mesh.triangle_count()), idx.data(), 3 * static_cast<int>(sizeof(int)),
-        static_cast<int>(mesh.positions.size()), vtx.data(), 3 * static_cast<int>(sizeof(btScalar))));
+        static_cast<int>(mesh.positions.size()), vtx.data(),
+        3 * static_cast<int>(sizeof(btScalar))));
     auto* shape = new btBvhTriangleMeshShape(mesh_arrays.back().get(), true);
     Own(shape);
     mesh_shapes[mesh_index] = shape;
@@ -305,13 +312,15 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       ++skipped_;
       continue;
     }
-    Require(object.model < scene.models.size(), field + ".model", "index outside the scene's models");
+    Require(object.model < scene.models.size(), field + ".model",
+            "index outside the scene's models");
     const Model& model = scene.models[object.model];
     auto make_collider = [&](std::uint32_t material_index) {
-      const std::uint32_t m =
-          object.material_override >= 0 ? static_cast<std::uint32_t>(object.material_override)
-                                         : material_index;
-      Require(m < scene.materials.size(), field + ".material", "index outside the scene's materials");
+      const std::uint32_t m = object.material_override >= 0
+                                  ? static_cast<std::uint32_t>(object.material_override)
+                                  : material_index;
+      Require(m < scene.materials.size(), field + ".material",
+              "index outside the scene's materials");
       Collider c;
       c.object_index = static_cast<std::uint32_t>(oi);
       c.name = object.name;
@@ -345,7 +354,7 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       btCollisionShape* shape = nullptr;
       CollisionShape kind = object.collision;
       if (kind == CollisionShape::kAuto) {
-        kind = mesh.primitive != Primitive::kNone           ? CollisionShape::kAuto
+        kind = mesh.primitive != Primitive::kNone               ? CollisionShape::kAuto
                : mesh.triangle_count() <= kAutoHullMaxTriangles ? CollisionShape::kConvexHull
                                                                 : CollisionShape::kTriangleMesh;
       }
@@ -379,8 +388,8 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
             }
             break;
           case Primitive::kPlane:
-            shape = new btBoxShape(ToBt(Vec3(0.5 * scale.x(), 0.5 * scale.y(),
-                                             0.5 * kPlaneSlabThickness_m)));
+            shape = new btBoxShape(
+                ToBt(Vec3(0.5 * scale.x(), 0.5 * scale.y(), 0.5 * kPlaneSlabThickness_m)));
             centre += R * Vec3(0.0, 0.0, 0.5 * kPlaneSlabThickness_m);
             break;
           case Primitive::kNone:
@@ -428,8 +437,9 @@ void CollisionWorld::FindContacts(int body, const Vec3& p_W, const Quat& q_WB, d
   Bullet& b = *bullet_;
   contacts.clear();
   const auto index = static_cast<std::size_t>(body);
-  // Broadphase: the body's world AABB (|R| half-extents) against both trees of the DBVT broadphase (statics
-  // never move, so they stay where they were inserted), then the exact bounding-sphere test.
+  // Broadphase: the body's world AABB (|R| half-extents) against both trees of the DBVT broadphase
+  // (statics never move, so they stay where they were inserted), then the exact bounding-sphere
+  // test.
   const Mat3 R_WB = q_WB.toRotationMatrix();
   const Vec3 reach = R_WB.cwiseAbs() * b.body_half_m[index] + Vec3::Constant(margin_m);
   b.Candidates(p_W - reach, p_W + reach, p_W, b.body_radius_m[index] + margin_m);

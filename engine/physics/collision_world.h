@@ -10,39 +10,42 @@
 
 namespace airis::engine {
 
-/// One static collision object: a part of a StaticObject (or the whole object for CollisionShape::kBox),
-/// with the labels and contact material the contact solver and collision events need.
+/// One static collision object: a part of a StaticObject (or the whole object for
+/// CollisionShape::kBox), with the labels and contact material the contact solver and collision
+/// events need.
 struct Collider {
   std::uint32_t object_index = 0;  ///< into StaticScene::objects
   std::string name;                ///< the object's name
   std::uint8_t class_id = kNoClass;
   std::uint32_t instance_id = kNoInstance;
-  double restitution = 0.3;        ///< of the part's material (or the object's override)
+  double restitution = 0.3;  ///< of the part's material (or the object's override)
   double friction = 0.6;
 };
 
 /// A contact point between a moving body and a static collider.
 struct Contact {
-  Vec3 point_W = Vec3::Zero();   ///< on the collider's surface, world NED (m)
-  Vec3 normal_W = Vec3::UnitZ(); ///< unit, from the collider toward the body
-  double depth_m = 0.0;          ///< penetration depth (m), > 0 when overlapping
-  std::uint32_t collider = 0;    ///< index into CollisionWorld::colliders()
+  Vec3 point_W = Vec3::Zero();    ///< on the collider's surface, world NED (m)
+  Vec3 normal_W = Vec3::UnitZ();  ///< unit, from the collider toward the body
+  double depth_m = 0.0;           ///< penetration depth (m), > 0 when overlapping
+  std::uint32_t collider = 0;     ///< index into CollisionWorld::colliders()
 };
 
-/// The collision world (Bullet's btCollisionWorld with a dynamic AABB tree broadphase; Bullet's dynamics are
-/// not used). Built once from a StaticScene; static colliders never move and cost nothing per query: Bullet
-/// never recomputes their bounds (performDiscreteCollisionDetection is never called). Moving bodies are boxes
-/// that are not inserted in the broadphase: each query takes the body's pose, looks its bounds up in a
-/// static uniform grid over the ground plan (built once; huge colliders such as ground planes are kept
-/// apart), keeps the colliders whose oriented bounds come within the body's bounding sphere, and runs
-/// Bullet's contact algorithms on those only. Sweeps use Bullet's convexSweepTest (through its broadphase),
-/// only when the grid finds something near the swept path.
+/// The collision world (Bullet's btCollisionWorld with a dynamic AABB tree broadphase; Bullet's
+/// dynamics are not used). Built once from a StaticScene; static colliders never move and cost
+/// nothing per query: Bullet never recomputes their bounds (performDiscreteCollisionDetection is
+/// never called). Moving bodies are boxes that are not inserted in the broadphase: each query takes
+/// the body's pose, looks its bounds up in a static uniform grid over the ground plan (built once;
+/// huge colliders such as ground planes are kept apart), keeps the colliders whose oriented bounds
+/// come within the body's bounding sphere, and runs Bullet's contact algorithms on those only.
+/// Sweeps use Bullet's convexSweepTest (through its broadphase), only when the grid finds something
+/// near the swept path.
 ///
-/// Shapes: primitives become Bullet primitives (box, sphere, cylinder, cone); a plane becomes a 1 m thick
-/// slab under its surface (on its local +z side, i.e. below it in NED) so nothing passes through it;
-/// other meshes become a convex hull or a BVH triangle mesh as CollisionShape says (kAuto: hull up to 128
-/// triangles); kBox is the object's oriented bounding box; kNone objects are skipped. Bullet computes in
-/// single precision: contact points are good to ~1e-4 m at 1 km from the origin.
+/// Shapes: primitives become Bullet primitives (box, sphere, cylinder, cone); a plane becomes a 1 m
+/// thick slab under its surface (on its local +z side, i.e. below it in NED) so nothing passes
+/// through it; other meshes become a convex hull or a BVH triangle mesh as CollisionShape says
+/// (kAuto: hull up to 128 triangles); kBox is the object's oriented bounding box; kNone objects are
+/// skipped. Bullet computes in single precision: contact points are good to ~1e-4 m at 1 km from
+/// the origin.
 class CollisionWorld {
  public:
   /// Builds the static colliders of `scene` (the scene may be destroyed afterwards).
@@ -52,18 +55,20 @@ class CollisionWorld {
   CollisionWorld(const CollisionWorld&) = delete;
   CollisionWorld& operator=(const CollisionWorld&) = delete;
 
-  /// Adds a moving box body with edges `box_size_m` (body axes) centred on its origin; returns its handle.
+  /// Adds a moving box body with edges `box_size_m` (body axes) centred on its origin; returns its
+  /// handle.
   int AddBody(const Vec3& box_size_m);
 
-  /// Replaces `contacts` with the contacts of body `body` at pose (p_W, q_WB) against the static world:
-  /// every point whose separation is at most `margin_m` (depth >= -margin_m). Allocation-free once
-  /// `contacts` has grown to the largest count seen.
+  /// Replaces `contacts` with the contacts of body `body` at pose (p_W, q_WB) against the static
+  /// world: every point whose separation is at most `margin_m` (depth >= -margin_m).
+  /// Allocation-free once `contacts` has grown to the largest count seen.
   void FindContacts(int body, const Vec3& p_W, const Quat& q_WB, double margin_m,
                     std::vector<Contact>& contacts);
 
-  /// Sweeps body `body` with fixed attitude q_WB from `from_W` to `to_W` and returns the fraction of the
-  /// way at which it first touches a collider it moves into (1 when nothing is in the way); fills `hit`
-  /// when < 1. Contacts it is already in and moves along (normal not opposing the motion) are ignored.
+  /// Sweeps body `body` with fixed attitude q_WB from `from_W` to `to_W` and returns the fraction
+  /// of the way at which it first touches a collider it moves into (1 when nothing is in the way);
+  /// fills `hit` when < 1. Contacts it is already in and moves along (normal not opposing the
+  /// motion) are ignored.
   double Sweep(int body, const Quat& q_WB, const Vec3& from_W, const Vec3& to_W, Contact* hit);
 
   const std::vector<Collider>& colliders() const { return colliders_; }

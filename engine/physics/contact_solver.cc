@@ -81,8 +81,8 @@ ContactResolution ContactSolver::Resolve(const RigidBodyModel& body,
   state.v_W = v;
   state.w_B = R_WB.transpose() * w_W;
 
-  // Push the body out of the colliders along the normals, leaving the slop (a few Gauss-Seidel sweeps so
-  // contacts with different normals, such as a floor and a wall, are all satisfied).
+  // Push the body out of the colliders along the normals, leaving the slop (a few Gauss-Seidel
+  // sweeps so contacts with different normals, such as a floor and a wall, are all satisfied).
   Vec3 shift = Vec3::Zero();
   for (int sweep = 0; sweep < 4; ++sweep) {
     bool moved = false;

@@ -18,8 +18,8 @@ void RigidBodyConfig::Validate() const {
           "inertia_B_kg_m2", "must be symmetric");
   const Vec3 eig = Eigen::SelfAdjointEigenSolver<Mat3>(inertia_B_kg_m2).eigenvalues();
   Require(eig.minCoeff() > 0.0, "inertia_B_kg_m2",
-          "must be positive definite (got smallest principal moment " + FormatNumber(eig.minCoeff()) +
-              ")");
+          "must be positive definite (got smallest principal moment " +
+              FormatNumber(eig.minCoeff()) + ")");
   // Principal moments of a real body obey the triangle inequality (I1 + I2 >= I3).
   Require(eig[0] + eig[1] >= eig[2] * (1.0 - 1e-9), "inertia_B_kg_m2",
           "principal moments violate the triangle inequality (not a physical body)");
@@ -39,12 +39,13 @@ RigidBodyModel::RigidBodyModel(const RigidBodyConfig& config) : config_(config) 
   const Vec3& s = config_.box_size_m;
   cross_section_m2_ = Vec3(s.y() * s.z(), s.x() * s.z(), s.x() * s.y());
   linear_drag_factor_m2_ = 0.5 * config_.linear_drag_coefficient * cross_section_m2_;
-  // Quadratic pressure drag on the faces of a box spinning about one axis, integrated over the faces that
-  // advance into the air (see drag.h): factor_z = C * sz * (sx^4 + sy^4) / 64, and cyclically.
+  // Quadratic pressure drag on the faces of a box spinning about one axis, integrated over the
+  // faces that advance into the air (see drag.h): factor_z = C * sz * (sx^4 + sy^4) / 64, and
+  // cyclically.
   const Vec3 s4 = s.array().pow(4.0);
-  angular_drag_factor_m5_ = config_.angular_drag_coefficient / 64.0 *
-                            Vec3(s.x() * (s4.y() + s4.z()), s.y() * (s4.x() + s4.z()),
-                                 s.z() * (s4.x() + s4.y()));
+  angular_drag_factor_m5_ =
+      config_.angular_drag_coefficient / 64.0 *
+      Vec3(s.x() * (s4.y() + s4.z()), s.y() * (s4.x() + s4.z()), s.z() * (s4.x() + s4.y()));
   bounding_radius_m_ = 0.5 * s.norm();
   min_half_extent_m_ = 0.5 * s.minCoeff();
 }

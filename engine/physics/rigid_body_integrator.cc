@@ -25,7 +25,8 @@ struct Stage {
 template <bool kPrincipalAxes>
 inline Derivative Evaluate(const RigidBodyModel& body, const StepForcing& f, double z0,
                            const Stage& s) {
-  const Quat q(s.q);  // not exactly unit inside the step; its rotation is used as is (RK4 consistency)
+  const Quat q(
+      s.q);  // not exactly unit inside the step; its rotation is used as is (RK4 consistency)
   const Mat3 R_WB = q.toRotationMatrix();
   Derivative d;
   d.dp = s.v;
@@ -46,7 +47,8 @@ inline Derivative Evaluate(const RigidBodyModel& body, const StepForcing& f, dou
                                qw * wz + qx * wy - qy * wx, -qx * wx - qy * wy - qz * wz);
   if constexpr (kPrincipalAxes) {
     const Vec3 I = body.inertia_B().diagonal();
-    d.dw = (torque_B - s.w.cross(I.cwiseProduct(s.w))).cwiseProduct(body.inverse_inertia_B().diagonal());
+    d.dw = (torque_B - s.w.cross(I.cwiseProduct(s.w)))
+               .cwiseProduct(body.inverse_inertia_B().diagonal());
   } else {
     d.dw = body.inverse_inertia_B() * (torque_B - s.w.cross(body.inertia_B() * s.w));
   }
@@ -58,8 +60,8 @@ inline Stage Advance(const Stage& s, const Derivative& d, double h) {
 }
 
 template <bool kPrincipalAxes>
-void Step(const RigidBodyModel& body, const StepForcing& forcing, double dt_s, RigidBodyState& state,
-          RigidBodyAccelerations& accelerations) {
+void Step(const RigidBodyModel& body, const StepForcing& forcing, double dt_s,
+          RigidBodyState& state, RigidBodyAccelerations& accelerations) {
   const Stage s0{state.p_W, state.v_W, state.q_WB.coeffs(), state.w_B};
   const double z0 = state.p_W.z();
   const Derivative k1 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0);
@@ -80,8 +82,7 @@ void Step(const RigidBodyModel& body, const StepForcing& forcing, double dt_s, R
   accelerations.a_W = dv * inv_dt;
   accelerations.alpha_B = dw * inv_dt;
   accelerations.gravity_W =
-      Vec3(0.0, 0.0,
-           forcing.gravity_m_s2 + forcing.gravity_gradient_1_s2 * (state.p_W.z() - z0));
+      Vec3(0.0, 0.0, forcing.gravity_m_s2 + forcing.gravity_gradient_1_s2 * (state.p_W.z() - z0));
 }
 
 }  // namespace
@@ -97,7 +98,8 @@ void StepRigidBody(const RigidBodyModel& body, const StepForcing& forcing, doubl
 
 bool IsFinite(const RigidBodyState& state) {
   // A sum is non-finite when any term is (NaN or inf propagate); one branch instead of 13.
-  const double sum = state.p_W.sum() + state.v_W.sum() + state.q_WB.coeffs().sum() + state.w_B.sum();
+  const double sum =
+      state.p_W.sum() + state.v_W.sum() + state.q_WB.coeffs().sum() + state.w_B.sum();
   return std::isfinite(sum);
 }
 

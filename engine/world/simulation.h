@@ -14,15 +14,19 @@ struct SimulationConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("physics_rate_hz", physics_rate_hz, "physics ticks per simulated second (100 to 10000)");
+    v.Field("physics_rate_hz", physics_rate_hz,
+            "physics ticks per simulated second (100 to 10000)");
   }
-  /// Throws InvalidField("physics_rate_hz") outside [100, 10000] Hz or when 1e9 / rate is not whole.
+  /// Throws InvalidField("physics_rate_hz") outside [100, 10000] Hz or when 1e9 / rate is not
+  /// whole.
   void Validate() const;
 };
 
-/// Steps a World in lockstep on one simulated clock (DESIGN principles 2 and 3). One tick, from t to t + dt:
+/// Steps a World in lockstep on one simulated clock (DESIGN principles 2 and 3). One tick, from t
+/// to t + dt:
 ///   1. the wind advances to t;
-///   2. every vehicle computes its actuator wrench, the integrator advances its body, collisions are found
+///   2. every vehicle computes its actuator wrench, the integrator advances its body, collisions
+///   are found
 ///      and resolved (World::StepPhysics);
 ///   3. the clock moves to t + dt and every sensor of every vehicle updates (sampling when due);
 ///   4. every vehicle's controller hook runs and sets the commands for the next tick.
@@ -31,7 +35,8 @@ class Simulation {
   /// Takes the world. Throws InvalidField on a bad config.
   explicit Simulation(std::unique_ptr<World> world, const SimulationConfig& config = {});
 
-  /// Runs one tick. Throws SimulationError when the world diverges (the clock stays at the failed tick).
+  /// Runs one tick. Throws SimulationError when the world diverges (the clock stays at the failed
+  /// tick).
   void Step();
   /// Runs ticks until the clock reaches at least `end_ns`.
   void RunUntil(TimeNs end_ns);

@@ -20,9 +20,9 @@ ContactSolverConfig SolverConfig(const PhysicsConfig& physics) {
   return c;
 }
 
-// The local environment model is refreshed when the body is this far from its reference altitude (m), and
-// its slopes are finite differences over the same height: with density scale heights of ~8 km and gravity's
-// of ~3000 km, the curvature left out is below 1e-8 relative.
+// The local environment model is refreshed when the body is this far from its reference altitude
+// (m), and its slopes are finite differences over the same height: with density scale heights of ~8
+// km and gravity's of ~3000 km, the curvature left out is below 1e-8 relative.
 constexpr double kEnvironmentRefresh_m = 1.0;
 
 }  // namespace
@@ -115,8 +115,8 @@ void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) cons
   std::ostringstream out;
   out.precision(9);
   out << "vehicle '" << slot.vehicle->name() << "' at t = " << ToSeconds(now_ns) << " s: " << cause
-      << " (p_W = [" << s.p_W.transpose() << "] m, v_W = [" << s.v_W.transpose()
-      << "] m/s, w_B = [" << s.w_B.transpose() << "] rad/s)";
+      << " (p_W = [" << s.p_W.transpose() << "] m, v_W = [" << s.v_W.transpose() << "] m/s, w_B = ["
+      << s.w_B.transpose() << "] rad/s)";
   throw SimulationError(out.str());
 }
 
@@ -128,7 +128,8 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   const Vec3 v0 = state.v_W;
   const Vec3 w0 = state.w_B;
 
-  // Environment at the start of the step (held over it; gravity is linearised in altitude within it).
+  // Environment at the start of the step (held over it; gravity is linearised in altitude within
+  // it).
   const double altitude_m = environment_.AltitudeOf(p0);
   LocalEnvironment& local = slot.local;
   if (!(std::abs(altitude_m - local.altitude_m) <= kEnvironmentRefresh_m)) {
@@ -159,8 +160,7 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   const Vec3 motion = state.p_W - p0;
   Contact swept_hit;
   bool swept = false;
-  if (motion.squaredNorm() >
-      std::pow(physics_.sweep_fraction * body.min_half_extent_m(), 2)) {
+  if (motion.squaredNorm() > std::pow(physics_.sweep_fraction * body.min_half_extent_m(), 2)) {
     const double fraction = collision_.Sweep(slot.body, state.q_WB, p0, state.p_W, &swept_hit);
     if (fraction < 1.0) {
       state.p_W = p0 + fraction * motion;
@@ -174,8 +174,8 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
     if (!slot.touching.empty()) slot.touching.clear();
     return;
   }
-  const ContactResolution resolution = solver_.Resolve(
-      body, slot.contacts, collision_.colliders(), forcing.gravity_m_s2, dt_s, state);
+  const ContactResolution resolution = solver_.Resolve(body, slot.contacts, collision_.colliders(),
+                                                       forcing.gravity_m_s2, dt_s, state);
   // Contact impulses are part of the step's acceleration (an accelerometer feels the landing).
   slot.accelerations.a_W = (state.v_W - v0) / dt_s;
   slot.accelerations.alpha_B = (state.w_B - w0) / dt_s;
@@ -216,7 +216,8 @@ void World::ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
       const Contact* best = nullptr;
       for (std::size_t k = 0; k < slot.contacts.size(); ++k) {
         if (slot.contacts[k].collider != collider) continue;
-        if (best == nullptr || static_cast<int>(k) == resolution.strongest) best = &slot.contacts[k];
+        if (best == nullptr || static_cast<int>(k) == resolution.strongest)
+          best = &slot.contacts[k];
       }
       const Collider& info = collision_.colliders()[collider];
       CollisionEvent event;

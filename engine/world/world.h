@@ -22,25 +22,25 @@ namespace airis::engine {
 
 /// A vehicle touching a static object it was not touching the tick before.
 struct CollisionEvent {
-  TimeNs time_ns = 0;                ///< end of the tick in which the contact began
-  std::size_t vehicle = 0;           ///< index in the world
+  TimeNs time_ns = 0;       ///< end of the tick in which the contact began
+  std::size_t vehicle = 0;  ///< index in the world
   std::string vehicle_name;
   std::string object_name;           ///< the static object's name
   std::uint8_t class_id = kNoClass;  ///< its semantic label
   std::uint32_t instance_id = kNoInstance;
-  Vec3 point_W = Vec3::Zero();       ///< contact point on the object, world NED (m)
-  Vec3 normal_W = Vec3::UnitZ();     ///< unit, from the object toward the vehicle
-  double impulse_Ns = 0.0;           ///< magnitude of the contact impulse applied in that tick
+  Vec3 point_W = Vec3::Zero();    ///< contact point on the object, world NED (m)
+  Vec3 normal_W = Vec3::UnitZ();  ///< unit, from the object toward the vehicle
+  double impulse_Ns = 0.0;        ///< magnitude of the contact impulse applied in that tick
 };
 
 /// Physics settings of a world.
 struct PhysicsConfig {
-  int contact_iterations = 12;        ///< sequential-impulse sweeps per tick
-  double penetration_slop_m = 1e-4;   ///< penetration left uncorrected (stable resting contact)
+  int contact_iterations = 12;       ///< sequential-impulse sweeps per tick
+  double penetration_slop_m = 1e-4;  ///< penetration left uncorrected (stable resting contact)
   /// A step that moves a body farther than this fraction of its smallest half-extent is swept first
   /// (continuous collision: nothing tunnels through thin walls).
   double sweep_fraction = 0.5;
-  double max_speed_m_s = 10000.0;     ///< a body faster than this stops the run (diverged)
+  double max_speed_m_s = 10000.0;  ///< a body faster than this stops the run (diverged)
 
   template <class V>
   void Visit(V& v) {
@@ -53,9 +53,9 @@ struct PhysicsConfig {
   void Validate() const;
 };
 
-/// Everything that exists in a run: the static scene (and its collision world), the environment, the
-/// vehicles with their sensors, and an optional ray caster. The World moves bodies (StepPhysics); the
-/// Simulation owns the clock and the tick order.
+/// Everything that exists in a run: the static scene (and its collision world), the environment,
+/// the vehicles with their sensors, and an optional ray caster. The World moves bodies
+/// (StepPhysics); the Simulation owns the clock and the tick order.
 class World {
  public:
   /// Builds the collision world from `scene`. Throws InvalidField on a bad config or scene indices.
@@ -67,9 +67,11 @@ class World {
 
   /// Adds a vehicle; returns its index. Throws InvalidField("vehicles") when the name is taken.
   std::size_t AddVehicle(std::unique_ptr<Vehicle> vehicle);
-  /// Mounts `sensor` on vehicle `vehicle`. Throws InvalidField("sensors") on a duplicate sensor name.
+  /// Mounts `sensor` on vehicle `vehicle`. Throws InvalidField("sensors") on a duplicate sensor
+  /// name.
   Sensor& AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor);
-  /// Same, by vehicle name; throws InvalidField("vehicle") on an unknown name (closest name suggested).
+  /// Same, by vehicle name; throws InvalidField("vehicle") on an unknown name (closest name
+  /// suggested).
   Sensor& AddSensor(std::string_view vehicle_name, std::unique_ptr<Sensor> sensor);
   /// Index of the vehicle named `name`, or -1.
   int FindVehicle(std::string_view name) const;
@@ -77,18 +79,24 @@ class World {
   std::size_t vehicle_count() const { return slots_.size(); }
   Vehicle& vehicle(std::size_t i) { return *slots_[i].vehicle; }
   const Vehicle& vehicle(std::size_t i) const { return *slots_[i].vehicle; }
-  /// Holds vehicle `i` kinematically where its state puts it (true) or simulates it again (false). A held
-  /// vehicle is not moved, pushed or collided by StepPhysics; its velocities are zeroed and its accelerations
-  /// read as at rest (gravity only). For placing cameras at chosen poses (mission step random_poses).
+  /// Holds vehicle `i` kinematically where its state puts it (true) or simulates it again (false).
+  /// A held vehicle is not moved, pushed or collided by StepPhysics; its velocities are zeroed and
+  /// its accelerations read as at rest (gravity only). For placing cameras at chosen poses (mission
+  /// step random_poses).
   void SetHeld(std::size_t i, bool held);
   bool held(std::size_t i) const { return slots_[i].held; }
   /// Accelerations of vehicle `i` over the last step (contacts included).
-  const RigidBodyAccelerations& accelerations(std::size_t i) const { return slots_[i].accelerations; }
+  const RigidBodyAccelerations& accelerations(std::size_t i) const {
+    return slots_[i].accelerations;
+  }
   /// Contacts of vehicle `i` found in the last step (after the sweep, before their resolution).
   std::span<const Contact> contacts(std::size_t i) const { return slots_[i].contacts; }
-  std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const { return slots_[i].sensors; }
+  std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const {
+    return slots_[i].sensors;
+  }
 
-  /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world; may be null).
+  /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world; may be
+  /// null).
   void set_ray_caster(std::unique_ptr<RayCaster> caster) { ray_caster_ = std::move(caster); }
   const RayCaster* ray_caster() const { return ray_caster_.get(); }
 
@@ -97,9 +105,10 @@ class World {
     collision_listeners_.push_back(std::move(listener));
   }
 
-  /// Moves every vehicle over one step [now_ns, now_ns + dt]: actuators -> integrator -> swept and discrete
-  /// collision detection -> contact response. Throws SimulationError naming the vehicle, the time and the
-  /// cause when a state becomes non-finite or absurd, or a body leaves the atmosphere model's range.
+  /// Moves every vehicle over one step [now_ns, now_ns + dt]: actuators -> integrator -> swept and
+  /// discrete collision detection -> contact response. Throws SimulationError naming the vehicle,
+  /// the time and the cause when a state becomes non-finite or absurd, or a body leaves the
+  /// atmosphere model's range.
   void StepPhysics(TimeNs now_ns, double dt_s);
 
   const StaticScene& scene() const { return *scene_; }
@@ -109,9 +118,10 @@ class World {
   const PhysicsConfig& physics_config() const { return physics_; }
 
  private:
-  // Air density and gravity about a reference altitude, as value and slope (first-order Taylor model),
-  // refreshed when the body moves more than kEnvironmentRefresh_m from it. Both vary on kilometre scales:
-  // the model is good to ~1e-8 relative and spares the atmosphere model on most ticks.
+  // Air density and gravity about a reference altitude, as value and slope (first-order Taylor
+  // model), refreshed when the body moves more than kEnvironmentRefresh_m from it. Both vary on
+  // kilometre scales: the model is good to ~1e-8 relative and spares the atmosphere model on most
+  // ticks.
   struct LocalEnvironment {
     double altitude_m = std::numeric_limits<double>::quiet_NaN();
     double density_kg_m3 = 0.0, density_slope_kg_m4 = 0.0;  // per metre of altitude

@@ -1,6 +1,7 @@
-// One physics tick of the reference quad (rotors with motor lag, drag, gravity and atmosphere at its
-// altitude, RK4 integrator, collision query and contact response), in an empty world and among 10,000 static
-// boxes, beside Bullet's btDiscreteDynamicsWorld stepping the same body and forces in the same box field.
+// One physics tick of the reference quad (rotors with motor lag, drag, gravity and atmosphere at
+// its altitude, RK4 integrator, collision query and contact response), in an empty world and among
+// 10,000 static boxes, beside Bullet's btDiscreteDynamicsWorld stepping the same body and forces in
+// the same box field.
 //   build/bench/bench_physics
 //   valgrind --tool=callgrind build/bench/bench_physics --benchmark_filter=BM_PhysicsTickEmpty
 //       --benchmark_min_time=0.01   (instructions per tick: Ir / iterations)

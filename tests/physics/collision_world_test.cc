@@ -19,7 +19,8 @@ TEST(CollisionWorldTest, BoxOnGroundHasFourFaceContacts) {
   std::vector<Contact> contacts;
   // GIVEN the box sunk 1 mm into the ground (its bottom face at z = +0.001)
   world.FindContacts(body, Vec3(3.0, -2.0, -0.019), Quat::Identity(), 0.0, contacts);
-  // THEN the four bottom corners touch, pushed up (-z) by 1 mm. Bullet works in single precision: 1e-5 m.
+  // THEN the four bottom corners touch, pushed up (-z) by 1 mm. Bullet works in single precision:
+  // 1e-5 m.
   ASSERT_EQ(contacts.size(), 4u);
   for (const Contact& c : contacts) {
     EXPECT_NEAR(c.normal_W.z(), -1.0, 1e-6);
@@ -53,7 +54,8 @@ TEST(CollisionWorldTest, LabelsAndMaterialsComeFromTheScene) {
 }
 
 TEST(CollisionWorldTest, SphereContactNormalPointsTowardTheBody) {
-  // Sphere-box is an algorithm Bullet runs with the pair swapped: the normal must still point to the body.
+  // Sphere-box is an algorithm Bullet runs with the pair swapped: the normal must still point to
+  // the body.
   SceneBuilder b;
   b.scene().meshes[0].primitive = Primitive::kSphere;  // the unit "box" mesh becomes a unit sphere
   b.AddBox("ball", Vec3::Zero(), Vec3::Ones());
@@ -95,7 +97,8 @@ TEST(CollisionWorldTest, SweepStopsAtAThinWall) {
   EXPECT_NEAR(hit.normal_W.x(), -1.0, 1e-3);
   EXPECT_EQ(world.colliders()[hit.collider].name, "wall");
   // Sliding along the ground it rests on (touching, moving parallel) is not a hit.
-  EXPECT_EQ(world.Sweep(body, Quat::Identity(), Vec3(0.0, 0.0, -0.02), Vec3(3.0, 0.0, -0.02), &hit), 1.0);
+  EXPECT_EQ(world.Sweep(body, Quat::Identity(), Vec3(0.0, 0.0, -0.02), Vec3(3.0, 0.0, -0.02), &hit),
+            1.0);
 }
 
 TEST(CollisionWorldTest, StaticTriangleMeshAndHullCollide) {

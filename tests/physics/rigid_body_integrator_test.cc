@@ -47,18 +47,19 @@ TEST(RigidBodyIntegratorTest, TorqueFreeBodyConservesMomentumAndEnergy) {
   RigidBodyAccelerations acc;
   // WHEN it is stepped for 100 s at 1 kHz
   for (int i = 0; i < 100000; ++i) StepRigidBody(body, StepForcing{}, 1e-3, s, acc);
-  // THEN angular momentum (world frame) and kinetic energy hold to 1e-6 relative (the requirement; RK4 at
-  // these rates keeps them to ~1e-9) and the quaternion stays unit.
+  // THEN angular momentum (world frame) and kinetic energy hold to 1e-6 relative (the requirement;
+  // RK4 at these rates keeps them to ~1e-9) and the quaternion stays unit.
   EXPECT_LT((AngularMomentum_W(body, s) - L0).norm() / L0.norm(), 1e-6);
   EXPECT_LT(std::abs(RotationalEnergy(body, s) - E0) / E0, 1e-6);
   EXPECT_NEAR(s.q_WB.norm(), 1.0, 1e-14);
 }
 
 TEST(RigidBodyIntegratorTest, IntermediateAxisFlipsWithTheEllipticPeriod) {
-  // GIVEN a spin about the intermediate axis (I1 < I2 < I3) with a small component about the major axis
-  // (Dzhanibekov effect). Landau & Lifshitz, Mechanics, sec. 37: for M^2 > 2 E I2,
+  // GIVEN a spin about the intermediate axis (I1 < I2 < I3) with a small component about the major
+  // axis (Dzhanibekov effect). Landau & Lifshitz, Mechanics, sec. 37: for M^2 > 2 E I2,
   //   w2 = sqrt((2 E I3 - M^2) / (I2 (I3 - I2))) sn(tau, k),
-  //   tau = t sqrt((I3 - I2)(M^2 - 2 E I1) / (I1 I2 I3)), k^2 = (I2 - I1)(2 E I3 - M^2) / ((I3 - I2)(M^2 - 2 E I1)),
+  //   tau = t sqrt((I3 - I2)(M^2 - 2 E I1) / (I1 I2 I3)), k^2 = (I2 - I1)(2 E I3 - M^2) / ((I3 -
+  //   I2)(M^2 - 2 E I1)),
   // so w2 changes sign every 2 K(k) / sqrt(...) seconds.
   const Vec3 I(1.0, 2.0, 3.0);
   const RigidBodyModel body = MakeBody(I * 0.01);
@@ -84,8 +85,8 @@ TEST(RigidBodyIntegratorTest, IntermediateAxisFlipsWithTheEllipticPeriod) {
     if ((prev > 0.0) != (now > 0.0)) crossings.push_back((i - 1 + prev / (prev - now)) * dt);
     prev = now;
   }
-  // THEN w2 reverses again and again, each reversal one elliptic half-period after the last. The linear
-  // interpolation of the crossing time is good to ~1e-6 s; 1e-4 relative leaves room for it.
+  // THEN w2 reverses again and again, each reversal one elliptic half-period after the last. The
+  // linear interpolation of the crossing time is good to ~1e-6 s; 1e-4 relative leaves room for it.
   ASSERT_GE(crossings.size(), 4u);
   for (std::size_t i = 1; i < crossings.size(); ++i) {
     EXPECT_NEAR(crossings[i] - crossings[i - 1], flip_interval_s, 1e-4 * flip_interval_s);
@@ -133,7 +134,8 @@ TEST(RigidBodyIntegratorTest, ConvergesAtFourthOrder) {
 }
 
 TEST(RigidBodyIntegratorTest, ConstantForceMatchesKinematics) {
-  // Constant world force (level body, no rotation, no drag): RK4 is exact for p = p0 + v0 t + a t^2 / 2.
+  // Constant world force (level body, no rotation, no drag): RK4 is exact for p = p0 + v0 t + a t^2
+  // / 2.
   const RigidBodyModel body = MakeBody(Vec3(0.01, 0.02, 0.03));
   StepForcing f;
   f.force_B = Vec3(2.0, 0.0, -4.0);

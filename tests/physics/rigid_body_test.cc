@@ -12,9 +12,9 @@ TEST(RigidBodyTest, ReferenceQuadInertiaFromBoxAndMotors) {
   // parameters.md: box of 0.78 kg (0.18 x 0.11 x 0.04 m) plus four 0.055 kg motors at
   // (+-0.160867, +-0.160867, 0.025) m gives diag(0.0067212, 0.0080407, 0.0142789) kg m^2.
   const double a = 0.160867, h = 0.025;
-  const Mat3 I = CalcBoxAndPointMassInertia(
-      0.78, Vec3(0.18, 0.11, 0.04), 0.055,
-      {Vec3(a, a, h), Vec3(-a, -a, h), Vec3(a, -a, h), Vec3(-a, a, h)});
+  const Mat3 I =
+      CalcBoxAndPointMassInertia(0.78, Vec3(0.18, 0.11, 0.04), 0.055,
+                                 {Vec3(a, a, h), Vec3(-a, -a, h), Vec3(a, -a, h), Vec3(-a, a, h)});
   // The published values carry 5 significant digits: half a unit in the last place.
   const double kTol = 5e-8;
   EXPECT_NEAR(I(0, 0), 0.0067212, kTol);
@@ -41,12 +41,14 @@ TEST(RigidBodyTest, CrossSectionsAndDragFactorsFollowTheBox) {
   EXPECT_EQ(f.x(), 0.0);
   // Spinning about z: tau = rho C sz (sx^4 + sy^4) / 64 w^2, opposing the spin.
   const Vec3 tau = CalcAngularDrag_B(body, 1.2, Vec3(0.0, 0.0, 2.0));
-  EXPECT_NEAR(tau.z(), -1.2 * 0.4 * 0.05 * (std::pow(0.2, 4) + std::pow(0.1, 4)) / 64.0 * 4.0, 1e-18);
+  EXPECT_NEAR(tau.z(), -1.2 * 0.4 * 0.05 * (std::pow(0.2, 4) + std::pow(0.1, 4)) / 64.0 * 4.0,
+              1e-18);
 }
 
 TEST(RigidBodyTest, RejectsUnphysicalInertia) {
   RigidBodyConfig c;
-  c.inertia_B_kg_m2 = Vec3(1.0, 1.0, 3.0).asDiagonal();  // 1 + 1 < 3: no real body has these moments
+  c.inertia_B_kg_m2 =
+      Vec3(1.0, 1.0, 3.0).asDiagonal();  // 1 + 1 < 3: no real body has these moments
   try {
     c.Validate();
     FAIL() << "expected InvalidField";

@@ -1,7 +1,7 @@
 #pragma once
 
-// Hand-built static scenes and environments for the physics, world and vehicle tests (the scene loader is
-// another module; these tests must not depend on it).
+// Hand-built static scenes and environments for the physics, world and vehicle tests (the scene
+// loader is another module; these tests must not depend on it).
 
 #include <memory>
 #include <string>
@@ -19,13 +19,15 @@ inline engine::TriangleMesh UnitBoxMesh() {
   mesh.name = "primitive:box";
   mesh.primitive = engine::Primitive::kBox;
   for (int i = 0; i < 8; ++i) {
-    mesh.positions.emplace_back((i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f);
+    mesh.positions.emplace_back((i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f,
+                                (i & 4) ? 0.5f : -0.5f);
     mesh.normals.push_back(mesh.positions.back().normalized());
   }
   // Two triangles per face (winding is irrelevant to collision).
   mesh.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
                   2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-  mesh.bounds = Eigen::AlignedBox3f(Eigen::Vector3f::Constant(-0.5f), Eigen::Vector3f::Constant(0.5f));
+  mesh.bounds =
+      Eigen::AlignedBox3f(Eigen::Vector3f::Constant(-0.5f), Eigen::Vector3f::Constant(0.5f));
   return mesh;
 }
 
@@ -34,22 +36,24 @@ inline engine::TriangleMesh UnitPlaneMesh() {
   engine::TriangleMesh mesh;
   mesh.name = "primitive:plane";
   mesh.primitive = engine::Primitive::kPlane;
-  mesh.positions = {{-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}};
+  mesh.positions = {
+      {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}};
   mesh.normals.assign(4, Eigen::Vector3f(0.0f, 0.0f, -1.0f));
   mesh.indices = {0, 1, 2, 1, 3, 2};
-  mesh.bounds = Eigen::AlignedBox3f(Eigen::Vector3f(-0.5f, -0.5f, 0.0f), Eigen::Vector3f(0.5f, 0.5f, 0.0f));
+  mesh.bounds =
+      Eigen::AlignedBox3f(Eigen::Vector3f(-0.5f, -0.5f, 0.0f), Eigen::Vector3f(0.5f, 0.5f, 0.0f));
   return mesh;
 }
 
-/// Builds a StaticScene of boxes and ground planes. Mesh 0 is the unit box, mesh 1 the unit plane; model 0
-/// is a box, model 1 a plane; objects scale them through T_WO.
+/// Builds a StaticScene of boxes and ground planes. Mesh 0 is the unit box, mesh 1 the unit plane;
+/// model 0 is a box, model 1 a plane; objects scale them through T_WO.
 class SceneBuilder {
  public:
   SceneBuilder() {
     scene_.meshes = {UnitBoxMesh(), UnitPlaneMesh()};
     scene_.materials.push_back(engine::Material{});
-    scene_.models.push_back(engine::Model{"box", {engine::ModelPart{0, 0, Eigen::Affine3f::Identity()}},
-                                          scene_.meshes[0].bounds});
+    scene_.models.push_back(engine::Model{
+        "box", {engine::ModelPart{0, 0, Eigen::Affine3f::Identity()}}, scene_.meshes[0].bounds});
     scene_.models.push_back(engine::Model{
         "plane", {engine::ModelPart{1, 0, Eigen::Affine3f::Identity()}}, scene_.meshes[1].bounds});
   }
@@ -65,8 +69,9 @@ class SceneBuilder {
   }
 
   /// A box of `size_m` centred at `centre_W`, rotated by `q_WO`.
-  SceneBuilder& AddBox(const std::string& name, const engine::Vec3& centre_W, const engine::Vec3& size_m,
-                       int material = -1, engine::CollisionShape shape = engine::CollisionShape::kAuto,
+  SceneBuilder& AddBox(const std::string& name, const engine::Vec3& centre_W,
+                       const engine::Vec3& size_m, int material = -1,
+                       engine::CollisionShape shape = engine::CollisionShape::kAuto,
                        const engine::Quat& q_WO = engine::Quat::Identity()) {
     engine::StaticObject o;
     o.model = 0;
@@ -102,8 +107,8 @@ class SceneBuilder {
   engine::StaticScene scene_;
 };
 
-/// The default environment (inverse-square gravity, standard atmosphere, no wind) about an origin at
-/// `origin_altitude_m` above the ellipsoid.
+/// The default environment (inverse-square gravity, standard atmosphere, no wind) about an origin
+/// at `origin_altitude_m` above the ellipsoid.
 inline engine::Environment MakeEnvironment(double origin_altitude_m = 0.0,
                                            const engine::EnvironmentConfig& config = {}) {
   engine::GeodeticPosition origin;

@@ -22,20 +22,22 @@ using testing::SceneBuilder;
 constexpr double kG0 = 9.80665;
 constexpr double kRhoSeaLevel = 1.225;
 
-// Runs `quad` alone in an empty world whose origin is `origin_altitude_m` above sea level; returns the
-// simulation (the quad stays reachable through `*quad_out`).
+// Runs `quad` alone in an empty world whose origin is `origin_altitude_m` above sea level; returns
+// the simulation (the quad stays reachable through `*quad_out`).
 std::unique_ptr<engine::Simulation> Fly(std::unique_ptr<Multirotor> quad, Multirotor** quad_out,
                                         double origin_altitude_m = 0.0) {
   *quad_out = quad.get();
-  auto world = std::make_unique<engine::World>(SceneBuilder().Build(), MakeEnvironment(origin_altitude_m));
+  auto world =
+      std::make_unique<engine::World>(SceneBuilder().Build(), MakeEnvironment(origin_altitude_m));
   world->AddVehicle(std::move(quad));
   return std::make_unique<engine::Simulation>(std::move(world));
 }
 
 TEST(MultirotorTest, ReferenceRotorMaxThrustAndTorque) {
   const Multirotor quad("quad", QuadXConfig());
-  // parameters.md: F_max = C_T rho n^2 D^4 = 4.179446 N, tau_max = C_pow rho n^2 D^5 / (2 pi) = 0.0555622 N m
-  // at rho = 1.225 with n = 6396.667 / 60 rev/s; published to 7 and 6 significant digits.
+  // parameters.md: F_max = C_T rho n^2 D^4 = 4.179446 N, tau_max = C_pow rho n^2 D^5 / (2 pi) =
+  // 0.0555622 N m at rho = 1.225 with n = 6396.667 / 60 rev/s; published to 7 and 6 significant
+  // digits.
   for (int i = 0; i < 4; ++i) {
     EXPECT_NEAR(quad.CalcMaxThrust_N(i, kRhoSeaLevel), 4.179446, 5e-7);
     EXPECT_NEAR(quad.CalcMaxTorque_Nm(i, kRhoSeaLevel), 0.0555622, 5e-8);
@@ -100,8 +102,8 @@ TEST(MultirotorTest, DifferentialTorqueSpinsUpYawAtTauOverIzz) {
   auto quad = std::make_unique<Multirotor>("quad", QuadXConfig());
   const double u = quad->CalcHoverCommand(kRhoSeaLevel, kG0);
   const double d = 0.1;
-  // CCW rotors (0, 1) up, CW rotors (2, 3) down: thrust unchanged, yaw torque 4 d tau_max (+z: the body turns
-  // clockwise seen from above, against the faster propellers).
+  // CCW rotors (0, 1) up, CW rotors (2, 3) down: thrust unchanged, yaw torque 4 d tau_max (+z: the
+  // body turns clockwise seen from above, against the faster propellers).
   quad->ResetActuators(std::vector<double>{u + d, u + d, u - d, u - d});
   Multirotor* q = nullptr;
   auto sim = Fly(std::move(quad), &q);
@@ -109,7 +111,8 @@ TEST(MultirotorTest, DifferentialTorqueSpinsUpYawAtTauOverIzz) {
   const double rho = sim->world().environment().CalcAir(Vec3::Zero()).density_kg_m3;
   const double tau = 4.0 * d * q->CalcMaxTorque_Nm(0, rho);
   const double alpha = tau / q->body().inertia_B()(2, 2);
-  // The box's spin drag (rho C sz (sx^4 + sy^4) / 64 w^2) costs ~2e-6 relative at 0.3 rad/s: 1e-5 bound.
+  // The box's spin drag (rho C sz (sx^4 + sy^4) / 64 w^2) costs ~2e-6 relative at 0.3 rad/s: 1e-5
+  // bound.
   EXPECT_NEAR(q->state().w_B.z() / (alpha * 0.2), 1.0, 1e-5);
   EXPECT_NEAR(sim->world().accelerations(0).alpha_B.z() / alpha, 1.0, 1e-5);
   EXPECT_LT(q->state().w_B.head<2>().norm(), 1e-9);
@@ -133,7 +136,8 @@ TEST(MultirotorTest, MotorLagReaches63PercentAtOneTimeConstant) {
 }
 
 TEST(MultirotorTest, WrenchUsesTheLagsMeanOverTheStep) {
-  // From rest, command 1 for one step of T: mean command = 1 - (T/dt)(1 - exp(-dt/T)) = 1 - (1 - e^-1) = e^-1.
+  // From rest, command 1 for one step of T: mean command = 1 - (T/dt)(1 - exp(-dt/T)) = 1 - (1 -
+  // e^-1) = e^-1.
   Multirotor quad("quad", QuadXConfig());
   quad.SetActuatorCommands(std::vector<double>(4, 1.0));
   const engine::RigidBodyState state;
@@ -153,7 +157,8 @@ TEST(MultirotorTest, CommandsAreClampedAndNanRejected) {
     quad.SetActuatorCommands(std::vector<double>{0.1, std::nan(""), 0.1, 0.1});
     FAIL() << "expected SimulationError";
   } catch (const engine::SimulationError& e) {
-    EXPECT_NE(std::string(e.what()).find("vehicle 'quad': actuator command 1 is NaN"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("vehicle 'quad': actuator command 1 is NaN"),
+              std::string::npos);
   }
   EXPECT_EQ(quad.actuator_commands()[2], 0.25);  // a rejected set changes nothing
   EXPECT_THROW(quad.SetActuatorCommands(std::vector<double>{0.1, 0.1}), std::invalid_argument);
@@ -168,7 +173,8 @@ TEST(MultirotorTest, TiltRotorFrontPairTiltsToForwardThrust) {
   vtol.ResetActuators(std::vector<double>{0.5, 0.5, 0.5, 0.5, 0.0, 0.0});
   vtol.SetActuatorCommands(commands);
   const double f = 0.5 * vtol.CalcMaxThrust_N(0, kRhoSeaLevel);  // one rotor at u = 0.5, sea level
-  // After 0.5 s at 90 deg/s the tilt is 45 deg: the front pair gives f sin 45 forward and f cos 45 up each.
+  // After 0.5 s at 90 deg/s the tilt is 45 deg: the front pair gives f sin 45 forward and f cos 45
+  // up each.
   engine::Wrench w;
   for (int i = 0; i < 500; ++i) {
     w = vtol.UpdateActuators(ActuatorContext{i * 1'000'000, 1e-3, kRhoSeaLevel, &state});
@@ -190,7 +196,8 @@ TEST(MultirotorTest, TiltRotorFrontPairTiltsToForwardThrust) {
 
 TEST(MultirotorTest, TiltAboutAPivotMovesTheVertex) {
   MultirotorConfig c = TiltRotorConfig();
-  c.rotors[0].tilt_pivot_m = c.rotors[0].position_m + Vec3(0.0, 0.0, -0.05);  // pivot 5 cm above the rotor
+  c.rotors[0].tilt_pivot_m =
+      c.rotors[0].position_m + Vec3(0.0, 0.0, -0.05);  // pivot 5 cm above the rotor
   Multirotor vtol("vtol", c);
   vtol.ResetActuators(std::vector<double>{0.0, 0.0, 0.0, 0.0, 1.0, 0.0});
   // Turning 90 deg about -y maps the offset (0, 0, +0.05) from the pivot to (-0.05, 0, 0).

@@ -1,5 +1,5 @@
-// Contact response of the World: restitution, friction, continuous collision, resting contact, take-off,
-// accelerations seen by an accelerometer, and collision events.
+// Contact response of the World: restitution, friction, continuous collision, resting contact,
+// take-off, accelerations seen by an accelerometer, and collision events.
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@ namespace airis::engine {
 namespace {
 
 using testing::MakeEnvironment;
+using testing::PassiveBody;
 using testing::QuadBody;
 using testing::SceneBuilder;
-using testing::PassiveBody;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box
@@ -62,7 +62,8 @@ TEST(ContactTest, BounceSpeedIsRestitutionTimesImpactSpeed) {
     rig->sim->Step();
   }
   // THEN it leaves at e times the speed it had when it hit (the tick's gravity included), level and
-  // without spin. The sequential-impulse solve on four corners converges to 1e-6 relative; 1e-4 is its bound.
+  // without spin. The sequential-impulse solve on four corners converges to 1e-6 relative; 1e-4 is
+  // its bound.
   const double impact = v_before + kG * 1e-3;
   EXPECT_NEAR(s.v_W.z() / impact, -0.5, 1e-4);
   EXPECT_NEAR(impact, std::sqrt(2.0 * kG * (1.0 - kHalfHeight_m)), 0.02);
@@ -85,8 +86,9 @@ TEST(ContactTest, SlidingDeceleratesAtFrictionTimesGravity) {
   s.v_W = Vec3(3.0, 0.0, 0.0);
   // WHEN it slides for 0.5 s
   rig->sim->RunFor(0.5);
-  // THEN v = 3 - mu g t (Coulomb friction with normal force m g); 0.5% allows for the tick where the
-  // contact is first established and the tilt torque of friction acting below the centre of mass.
+  // THEN v = 3 - mu g t (Coulomb friction with normal force m g); 0.5% allows for the tick where
+  // the contact is first established and the tilt torque of friction acting below the centre of
+  // mass.
   EXPECT_NEAR(s.v_W.x(), 3.0 - 0.4 * kG * 0.5, 0.005 * 3.0);
   EXPECT_NEAR(s.p_W.z(), -kHalfHeight_m, 1e-3);
   EXPECT_LT(std::abs(s.v_W.y()), 1e-6);
@@ -95,8 +97,8 @@ TEST(ContactTest, SlidingDeceleratesAtFrictionTimesGravity) {
   EXPECT_LT(s.v_W.norm(), 1e-3);
 }
 
-// Flies the quad box at 40 m/s into a 0.2 m thick wall and returns the farthest its front face got past the
-// wall's face (m), with the final velocity in `v_end`.
+// Flies the quad box at 40 m/s into a 0.2 m thick wall and returns the farthest its front face got
+// past the wall's face (m), with the final velocity in `v_end`.
 double CrashIntoWall(double rate_hz, Vec3* v_end) {
   SceneBuilder scene;
   scene.AddGround();
@@ -186,7 +188,8 @@ TEST(ContactTest, AccelerometerFeelsTheLanding) {
     if (rig->events.empty()) in_flight = std::max(in_flight, f);
     peak = std::max(peak, f);
   }
-  // In free fall it reads ~0 (drag only); the landing impulse over one 1 ms tick reads hundreds of g.
+  // In free fall it reads ~0 (drag only); the landing impulse over one 1 ms tick reads hundreds of
+  // g.
   EXPECT_LT(in_flight, 0.5);
   EXPECT_GT(peak, 100.0 * kG);
 }

@@ -8,8 +8,9 @@
 
 namespace airis::testing {
 
-/// A passive box vehicle for the world tests: no actuators; the wrench it applies is whatever `wrench` says
-/// (constant, or computed by `wrench_function` from the context when set). Counts controller calls.
+/// A passive box vehicle for the world tests: no actuators; the wrench it applies is whatever
+/// `wrench` says (constant, or computed by `wrench_function` from the context when set). Counts
+/// controller calls.
 class PassiveBody final : public engine::Vehicle {
  public:
   PassiveBody(std::string name, const engine::RigidBodyConfig& body)
@@ -32,7 +33,8 @@ class PassiveBody final : public engine::Vehicle {
   engine::TimeNs last_control_ns = -1;
 };
 
-/// The reference quad's rigid body (1 kg, box 0.18 x 0.11 x 0.04 m) with the given contact material.
+/// The reference quad's rigid body (1 kg, box 0.18 x 0.11 x 0.04 m) with the given contact
+/// material.
 inline engine::RigidBodyConfig QuadBody(double restitution = 0.55, double friction = 0.5) {
   engine::RigidBodyConfig c;
   c.restitution = restitution;

@@ -14,15 +14,15 @@ namespace airis::engine {
 namespace {
 
 using testing::MakeEnvironment;
+using testing::PassiveBody;
 using testing::QuadBody;
 using testing::SceneBuilder;
-using testing::PassiveBody;
 
 // A simulation of one PassiveBody in `scene`; returns the simulation and a pointer to the body.
 std::pair<std::unique_ptr<Simulation>, PassiveBody*> MakeSim(const SceneBuilder& scene,
-                                                          const RigidBodyConfig& body,
-                                                          double origin_altitude_m = 0.0,
-                                                          double rate_hz = 1000.0) {
+                                                             const RigidBodyConfig& body,
+                                                             double origin_altitude_m = 0.0,
+                                                             double rate_hz = 1000.0) {
   auto world = std::make_unique<World>(scene.Build(), MakeEnvironment(origin_altitude_m));
   auto vehicle = std::make_unique<PassiveBody>("body", body);
   PassiveBody* raw = vehicle.get();
@@ -44,8 +44,8 @@ TEST(WorldTest, FreeFallFromOneKilometreFollowsInverseSquareGravity) {
   const double g0 = 9.80665, Re = 6371000.0;
   const double r0 = Re + 1000.0, r = Re + 1000.0 - b->state().p_W.z();
   const double v_expected = std::sqrt(2.0 * g0 * Re * Re * (1.0 / r - 1.0 / r0));
-  // RK4 with gravity linearised within each 1 mm step: ~1e-12 relative; 1e-9 is far tighter than the
-  // 7e-5 by which the constant-gravity answer (checked below) differs.
+  // RK4 with gravity linearised within each 1 mm step: ~1e-12 relative; 1e-9 is far tighter than
+  // the 7e-5 by which the constant-gravity answer (checked below) differs.
   EXPECT_NEAR(b->state().v_W.z() / v_expected, 1.0, 1e-9);
   const double g1000 = g0 * Re * Re / (r0 * r0);
   const double v_constant_g = std::sqrt(2.0 * g1000 * b->state().p_W.z());
@@ -56,8 +56,8 @@ TEST(WorldTest, FreeFallFromOneKilometreFollowsInverseSquareGravity) {
 }
 
 TEST(WorldTest, FallingPlateReachesTerminalVelocity) {
-  // GIVEN a 1 kg plate 1 m x 1 m falling flat (A_z = 1 m^2, C_lin = 0.325): v_t = sqrt(2 m g / (rho C A)) is
-  // about 7 m/s, reached within ~1 s, so the density change over the fall stays small.
+  // GIVEN a 1 kg plate 1 m x 1 m falling flat (A_z = 1 m^2, C_lin = 0.325): v_t = sqrt(2 m g / (rho
+  // C A)) is about 7 m/s, reached within ~1 s, so the density change over the fall stays small.
   RigidBodyConfig body;
   body.mass_kg = 1.0;
   body.box_size_m = Vec3(1.0, 1.0, 0.04);
@@ -113,8 +113,8 @@ TEST(WorldTest, SeveralVehiclesMoveIndependently) {
   EXPECT_EQ(world->FindVehicle("zz"), -1);
   Simulation sim(std::move(world));
   sim.RunFor(1.0);
-  // `a` falls (drag at up to 10 m/s takes ~1% off g t^2 / 2); `c` holds within the 1.5e-5 m it rises
-  // because g at 10 m is 3e-6 relative below the g0 its thrust balances.
+  // `a` falls (drag at up to 10 m/s takes ~1% off g t^2 / 2); `c` holds within the 1.5e-5 m it
+  // rises because g at 10 m is 3e-6 relative below the g0 its thrust balances.
   const double fall = pa->state().p_W.z() + 10.0;
   EXPECT_GT(fall, 0.98 * 0.5 * 9.80665);
   EXPECT_LT(fall, 0.5 * 9.80665);
@@ -161,10 +161,12 @@ TEST(WorldTest, SensorsSampleAtTheirRateAfterPhysics) {
   } catch (const InvalidField& e) {
     EXPECT_NE(std::string(e.what()).find("did you mean 'two'"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(world->AddSensor(1, std::make_unique<CountingSensor>("count", 1.0, nullptr)), InvalidField);
+  EXPECT_THROW(world->AddSensor(1, std::make_unique<CountingSensor>("count", 1.0, nullptr)),
+               InvalidField);
   Simulation sim(std::move(world));
   sim.RunFor(1.0);
-  // Samples are due at 0, 10, ..., 1000 ms; the one due at 0 is taken after the first tick: 101 in all.
+  // Samples are due at 0, 10, ..., 1000 ms; the one due at 0 is taken after the first tick: 101 in
+  // all.
   EXPECT_EQ(raw->samples, 101);
   EXPECT_TRUE(raw->saw_own_state);
   EXPECT_TRUE(raw->had_environment);

@@ -7,11 +7,11 @@
 namespace airis::vehicles {
 namespace {
 
-constexpr double kArm_m = 0.2275;        // reference arm length (parameters.md)
-constexpr double kRotorDrop_m = 0.025;   // rotor plane below the centre of mass
+constexpr double kArm_m = 0.2275;       // reference arm length (parameters.md)
+constexpr double kRotorDrop_m = 0.025;  // rotor plane below the centre of mass
 
-// `count` rotors on a ring, the first at `first_deg` clockwise from the nose (seen from above), spins
-// alternating from CCW.
+// `count` rotors on a ring, the first at `first_deg` clockwise from the nose (seen from above),
+// spins alternating from CCW.
 std::vector<RotorConfig> Ring(int count, double first_deg) {
   std::vector<RotorConfig> rotors(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) {

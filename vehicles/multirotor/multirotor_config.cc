@@ -32,8 +32,9 @@ void MultirotorConfig::Validate() const {
   }
   if (!inertia_kg_m2) {
     engine::Require(motor_mass_kg * static_cast<double>(rotors.size()) < mass_kg, "motor_mass_kg",
-                    "motors weigh as much as the whole vehicle (got " + engine::FormatNumber(motor_mass_kg) +
-                        " x " + std::to_string(rotors.size()) + " >= mass_kg " +
+                    "motors weigh as much as the whole vehicle (got " +
+                        engine::FormatNumber(motor_mass_kg) + " x " +
+                        std::to_string(rotors.size()) + " >= mass_kg " +
                         engine::FormatNumber(mass_kg) + ")");
   }
   engine::RequireNonNegative("linear_drag_coefficient", linear_drag_coefficient);

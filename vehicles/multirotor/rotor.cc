@@ -7,14 +7,15 @@
 namespace airis::vehicles {
 
 std::span<const engine::EnumName<Spin>> EnumNames(Spin) {
-  static constexpr std::array<engine::EnumName<Spin>, 2> kNames{{{Spin::kCcw, "ccw"}, {Spin::kCw, "cw"}}};
+  static constexpr std::array<engine::EnumName<Spin>, 2> kNames{
+      {{Spin::kCcw, "ccw"}, {Spin::kCw, "cw"}}};
   return kNames;
 }
 
 void RotorConfig::Validate() const {
   for (int i = 0; i < 3; ++i) engine::RequireFinite("position_m", position_m[i]);
-  engine::Require(thrust_direction.allFinite() && thrust_direction.norm() > 1e-9, "thrust_direction",
-                  "must be a non-zero finite vector");
+  engine::Require(thrust_direction.allFinite() && thrust_direction.norm() > 1e-9,
+                  "thrust_direction", "must be a non-zero finite vector");
   engine::RequirePositive("thrust_coefficient", thrust_coefficient);
   engine::RequireNonNegative("power_coefficient", power_coefficient);
   engine::RequirePositive("diameter_m", diameter_m);
