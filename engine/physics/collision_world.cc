@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/core/error.h"
 
@@ -125,6 +126,7 @@ struct CollisionWorld::Bullet {
   std::vector<std::uint32_t> large;       // colliders not in the grid
   std::vector<std::uint32_t> cell_start;  // CSR offsets into cell_items, one per cell plus one
   std::vector<std::uint32_t> cell_items;
+  std::vector<double> cell_top_z;          // per cell: the highest point (least z) of its colliders
   std::vector<std::uint32_t> stamp;  // per collider: last query that saw it (dedupe across cells)
   std::uint32_t query = 0;
   double cell_m = 1.0;
@@ -169,6 +171,7 @@ struct CollisionWorld::Bullet {
     nx = static_cast<int>(size.x() / cell_m) + 1;
     ny = static_cast<int>(size.y() / cell_m) + 1;
     cell_start.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) + 1, 0);
+    cell_top_z.assign(cell_start.size() - 1, std::numeric_limits<double>::infinity());
     // Two passes: count per cell, then fill (CSR).
     for (int pass = 0; pass < 2; ++pass) {
       std::vector<std::uint32_t> fill;
@@ -186,6 +189,7 @@ struct CollisionWorld::Bullet {
                                   static_cast<std::size_t>(x);
             if (pass == 0) {
               ++cell_start[c + 1];
+              cell_top_z[c] = std::min(cell_top_z[c], aabbs[i].lo.z());
             } else {
               cell_items[fill[c]++] = i;
             }
@@ -239,6 +243,7 @@ struct CollisionWorld::Bullet {
       for (int x = x0; x <= x1; ++x) {
         const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) +
                               static_cast<std::size_t>(x);
+        if (hi.z() < cell_top_z[c]) continue;  // flying above everything in the cell
         for (std::uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
           const std::uint32_t i = cell_items[k];
           // A collider spanning several cells of the query is considered once.
