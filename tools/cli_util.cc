@@ -1,6 +1,8 @@
 #include "tools/cli_util.h"
 
+#include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <stdexcept>
 
@@ -38,6 +40,49 @@ double ParseFiniteNumber(const std::string& name, const std::string& text) {
     throw engine::ConfigError({}, "--" + name, "must be a finite number (got '" + text + "')");
   }
   return value;
+}
+
+std::uint64_t ParseSeed(const std::string& name, const std::string& text) {
+  std::uint64_t value = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) {
+    throw engine::ConfigError({}, "--" + name, "must be a whole number from 0 to 2^64 - 1 (got '" + text + "')");
+  }
+  return value;
+}
+
+void PrepareEmptyOutputFolder(const std::string& path, const std::string& option) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    if (!fs::is_directory(path, ec)) {
+      throw engine::ConfigError({}, option, "'" + path + "' exists and is not a folder");
+    }
+    if (!fs::is_empty(path, ec)) {
+      throw engine::ConfigError({}, option, "'" + path + "' is not empty; nothing is overwritten (choose "
+                                            "another folder or remove it)");
+    }
+    return;
+  }
+  fs::create_directories(path, ec);
+  if (ec) throw engine::ConfigError({}, option, "cannot create '" + path + "': " + ec.message());
+}
+
+std::size_t FindMissionVehicle(const engine::World& world, const engine::Mission& mission) {
+  std::string names;
+  for (std::size_t i = 0; i < world.vehicle_count(); ++i) {
+    names += (names.empty() ? "" : ", ") + world.vehicle(i).name();
+  }
+  if (world.vehicle_count() == 0) {
+    throw engine::ConfigError({mission.file, 0, 0}, "vehicle", "the scene has no vehicle to fly the mission");
+  }
+  if (mission.vehicle.empty()) return 0;
+  const int index = world.FindVehicle(mission.vehicle);
+  if (index < 0) {
+    throw engine::ConfigError({mission.file, 0, 0}, "vehicle",
+                              "no vehicle '" + mission.vehicle + "' in the scene (it has " + names + ")");
+  }
+  return static_cast<std::size_t>(index);
 }
 
 }  // namespace airis::tools

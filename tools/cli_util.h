@@ -1,7 +1,11 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
+
+#include "engine/mission/mission.h"
+#include "engine/world/world.h"
 
 namespace airis::tools {
 
@@ -12,5 +16,16 @@ int RunReportingErrors(const std::function<int()>& body);
 
 /// Parses `text` as a finite double for option `--name`, or throws ConfigError naming the option.
 double ParseFiniteNumber(const std::string& name, const std::string& text);
+
+/// Parses `text` as an unsigned 64-bit seed for option `--name`, or throws ConfigError naming the option.
+std::uint64_t ParseSeed(const std::string& name, const std::string& text);
+
+/// Creates `path` if needed; throws ConfigError naming `option` when it exists and is not an empty folder
+/// (nothing is ever overwritten) or cannot be created.
+void PrepareEmptyOutputFolder(const std::string& path, const std::string& option);
+
+/// Index of the vehicle that flies `mission` in `world`: the one it names, or the first. Throws ConfigError
+/// naming the mission file when there is no such vehicle (listing the scene's vehicles).
+std::size_t FindMissionVehicle(const engine::World& world, const engine::Mission& mission);
 
 }  // namespace airis::tools

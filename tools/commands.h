@@ -8,5 +8,7 @@ namespace airis::tools {
 // One function per <name>_command.cc.
 void AddEnvCommand(CLI::App& app, int& exit_code);
 void AddSceneCommand(CLI::App& app, int& exit_code);
+void AddRunCommand(CLI::App& app, int& exit_code);
+void AddBenchCommand(CLI::App& app, int& exit_code);
 
 }  // namespace airis::tools

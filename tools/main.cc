@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   airis::tools::AddEnvCommand(app, exit_code);
   airis::tools::AddSceneCommand(app, exit_code);
+  airis::tools::AddRunCommand(app, exit_code);
+  airis::tools::AddBenchCommand(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }

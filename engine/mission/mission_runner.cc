@@ -66,8 +66,12 @@ void MissionRunner::Fail(TimeNs now_ns, const std::string& why) {
                      "failed: " + why});
 }
 
-void MissionRunner::ReportCollision(TimeNs time_ns, const std::string& what) {
+void MissionRunner::ReportCollision(TimeNs time_ns, const std::string& what, bool from_below) {
   if (state_ != State::kRunning || step_index_ >= static_cast<int>(mission_.steps.size())) return;
+  const MissionStepSpec& spec = mission_.steps[static_cast<std::size_t>(step_index_)].spec;
+  const bool on_ground_step =
+      std::holds_alternative<TakeoffStep>(spec) || std::holds_alternative<LandStep>(spec);
+  if (from_below && on_ground_step) return;  // standing on or touching down onto a surface
   if (mission_.abort_on_collision) {
     Fail(time_ns, "collided with " + what + Format(" at t = %.3f s", ToSeconds(time_ns)));
   }
@@ -173,6 +177,7 @@ void MissionRunner::StartStep(const MissionInput& input) {
     const Vec3 r = s.p_W - o->center_ned_m;
     orbit_phase_rad_ = r.head<2>().norm() > 1e-6 ? std::atan2(r.y(), r.x()) : 0.0;
     orbit_travelled_rad_ = 0.0;
+    path_ref_speed_m_s_ = 0.0;
     nominal_s = 2.0 * kPi * o->radius_m * o->turns / o->speed_m_s;
     timeout_s = o->timeout_s;
   } else if (const auto* h = std::get_if<HoverStep>(&step.spec)) {
@@ -206,8 +211,12 @@ bool MissionRunner::FollowPath(const MissionInput& input, double dt_s, VehicleCo
   const double previous_speed = path_ref_speed_m_s_;
   if (advancing) {
     // Speed profile: ramp at kPathAccel, slow for corners ahead and for the end (CalcSpeedLimit).
-    const double limit = path_->CalcSpeedLimit(path_s_m_, path_speed_m_s_, kPathLateralAccel_m_s2,
-                                               kPathAccel_m_s2);
+    double limit = path_->CalcSpeedLimit(path_s_m_, path_speed_m_s_, kPathLateralAccel_m_s2,
+                                         kPathAccel_m_s2);
+    // Climbing and descending legs: keep the vertical part of the speed within the vehicle's reach.
+    const double vertical = path_->TangentAt(path_s_m_).z();  // + down
+    if (vertical > 1e-6) limit = std::min(limit, kPathMaxDescent_m_s / vertical);
+    if (vertical < -1e-6) limit = std::min(limit, kPathMaxClimb_m_s / -vertical);
     path_ref_speed_m_s_ = std::min(path_ref_speed_m_s_ + kPathAccel_m_s2 * dt_s, limit);
     // Near the end the limit can reach 0 before s does: keep a crawl so the reference arrives.
     path_s_m_ = std::min(path_->length_m(), path_s_m_ + std::max(path_ref_speed_m_s_, 0.05) * dt_s);
@@ -264,15 +273,22 @@ bool MissionRunner::RunStep(const MissionInput& input, VehicleCommand* command) 
     if (orbit_travelled_rad_ > 0.0) max_tracking_error_m_ = std::max(max_tracking_error_m_, error);
     const bool advancing = error < MaxLead(o->speed_m_s) && orbit_travelled_rad_ < total_rad;
     if (advancing) {
-      orbit_travelled_rad_ = std::min(total_rad, orbit_travelled_rad_ + o->speed_m_s / o->radius_m * dt_s);
+      // The reference speeds up at kPathAccel_m_s2 (a vehicle at rest cannot start at full speed).
+      path_ref_speed_m_s_ = std::min(o->speed_m_s, path_ref_speed_m_s_ + kPathAccel_m_s2 * dt_s);
+      orbit_travelled_rad_ =
+          std::min(total_rad, orbit_travelled_rad_ + path_ref_speed_m_s_ / o->radius_m * dt_s);
+    } else {
+      path_ref_speed_m_s_ = 0.0;
     }
     const double phi = orbit_phase_rad_ + direction * orbit_travelled_rad_;
     const Vec3 tangent(-direction * std::sin(phi), direction * std::cos(phi), 0.0);
     VehicleCommand c = HoldAt(reference(orbit_travelled_rad_), 0.0);
-    c.velocity_W = advancing ? Vec3(tangent * o->speed_m_s) : Vec3::Zero();
+    const double v = path_ref_speed_m_s_;
+    c.velocity_W = advancing ? Vec3(tangent * v) : Vec3::Zero();
     if (advancing) {
-      // Centripetal feed-forward v^2 / r toward the centre.
-      c.acceleration_W = -(o->speed_m_s * o->speed_m_s / o->radius_m) * Vec3(std::cos(phi), std::sin(phi), 0.0);
+      // Feed-forward: the ramp along the circle and the centripetal v^2 / r toward the centre.
+      c.acceleration_W = tangent * (v < o->speed_m_s ? kPathAccel_m_s2 : 0.0) -
+                         (v * v / o->radius_m) * Vec3(std::cos(phi), std::sin(phi), 0.0);
     }
     c.speed_limit_m_s = 1.5 * o->speed_m_s;
     const Vec3 to_center = o->center_ned_m - s.p_W;

@@ -62,6 +62,8 @@ class MissionRunner {
   static constexpr double kPathAccel_m_s2 = 2.0;         ///< along-path acceleration of the reference
   static constexpr double kPathLateralAccel_m_s2 = 3.0;  ///< centripetal acceleration allowed in corners
   static constexpr double kPathEndTolerance_m = 0.3;     ///< a path is done within this of its end
+  static constexpr double kPathMaxClimb_m_s = 3.0;       ///< vertical speed limits of the path reference,
+  static constexpr double kPathMaxDescent_m_s = 2.0;     ///< below the default controller's 4 and 2.5 m/s
 
   /// @param frame the world's geodetic frame (for geodetic goto). @param host may be null when the mission
   /// has no capture, set_wind or random_poses step (AIRIS_DEMAND otherwise).
@@ -70,8 +72,10 @@ class MissionRunner {
   /// Advances the mission to `input.now_ns` and writes the command the vehicle should follow from now on.
   State Update(const MissionInput& input, VehicleCommand* command);
 
-  /// Tells the runner of a collision; with abort_on_collision the mission fails naming the step.
-  void ReportCollision(TimeNs time_ns, const std::string& what);
+  /// Tells the runner of a collision; with abort_on_collision the mission fails naming the step. A contact
+  /// from below (`from_below`: the surface faces up, like the ground or a roof) during takeoff or land is the
+  /// vehicle standing or touching down, not a collision.
+  void ReportCollision(TimeNs time_ns, const std::string& what, bool from_below = false);
 
   State state() const { return state_; }
   /// Why the mission failed: "missions/x.yaml:12: step 3 (goto): timed out after 40 s, 12.3 m from target".

@@ -185,6 +185,26 @@ TEST(MissionRunnerTest, CollisionFailsWhenAbortOnCollision) {
       << runner.failure();
 }
 
+TEST(MissionRunnerTest, TouchingDownDuringLandIsNotACollision) {
+  Mission m;
+  m.steps = {Step(HoverStep{1.0}, 3), Step(LandStep{}, 4)};
+  MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
+  PointVehicle v;
+  VehicleCommand c;
+  runner.Update({0, v.state, false}, &c);
+  // During hover, even a contact from below (a roof) is a collision...
+  runner.ReportCollision(0, "roof", /*from_below=*/true);
+  EXPECT_EQ(runner.state(), MissionRunner::State::kFailed);
+  // ...but during land it is the touchdown, while a side hit still fails.
+  MissionRunner landing(m, Frame(), RandomStream(1), nullptr);
+  TimeNs t = 0;
+  while (landing.current_step() == 0) landing.Update({t += kTickNs, v.state, false}, &c);
+  landing.ReportCollision(t, "ground 'ground'", /*from_below=*/true);
+  EXPECT_EQ(landing.state(), MissionRunner::State::kRunning);
+  landing.ReportCollision(t, "tree 'oak_12'", /*from_below=*/false);
+  EXPECT_EQ(landing.state(), MissionRunner::State::kFailed);
+}
+
 TEST(MissionRunnerTest, CollisionIsToleratedWithoutAbortOnCollision) {
   Mission m;
   m.abort_on_collision = false;
@@ -252,8 +272,10 @@ TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
     t += kTickNs;
   }
   ASSERT_EQ(runner.state(), MissionRunner::State::kSucceeded) << runner.failure();
-  // One turn of 2 pi 10 m at 5 m/s = 12.57 s.
-  EXPECT_NEAR(ToSeconds(t - orbit_start), 2 * M_PI * 10 / 5, 0.05);
+  // One turn of 2 pi 10 m at 5 m/s = 12.57 s, plus the start-up ramp at kPathAccel: reaching v at a loses
+  // v / (2 a) = 1.25 s against full speed from the start.
+  const double ramp_loss_s = 5.0 / (2.0 * MissionRunner::kPathAccel_m_s2);
+  EXPECT_NEAR(ToSeconds(t - orbit_start), 2 * M_PI * 10 / 5 + ramp_loss_s, 0.01);
 }
 
 TEST(MissionRunnerTest, HostStepsReachTheHostAndRandomPosesAreSeeded) {

@@ -1,0 +1,91 @@
+#include "engine/dataset/telemetry_recorder.h"
+
+#include "engine/core/frames.h"
+
+namespace airis::engine {
+namespace {
+
+std::vector<std::string> TimeColumns(std::vector<std::string> rest) {
+  rest.insert(rest.begin(), {"time_ns", "time_s"});
+  return rest;
+}
+
+}  // namespace
+
+TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& dir,
+                                     double truth_rate_hz)
+    : world_(world), truth_schedule_(truth_rate_hz) {
+  truth_ = std::make_unique<CsvWriter>(
+      dir / "truth.csv",
+      TimeColumns({"vehicle", "p_n_m", "p_e_m", "p_d_m", "v_n_m_s", "v_e_m_s", "v_d_m_s", "q_w", "q_x",
+                   "q_y", "q_z", "roll_deg", "pitch_deg", "yaw_deg", "w_x_rad_s", "w_y_rad_s",
+                   "w_z_rad_s", "a_n_m_s2", "a_e_m_s2", "a_d_m_s2", "latitude_deg", "longitude_deg",
+                   "altitude_m"}));
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    for (const auto& sensor : world.sensors(v)) {
+      std::vector<std::string> cols(sensor->columns().begin(), sensor->columns().end());
+      sensors_.push_back(std::make_unique<CsvWriter>(
+          dir / (world.vehicle(v).name() + "." + sensor->name() + ".csv"), TimeColumns(cols)));
+      CsvWriter* csv = sensors_.back().get();
+      sensor->AddListener([this, csv](const Sensor& s) {
+        row_.resize(s.columns().size());
+        s.CopyLatestRow(row_);
+        csv->Add(static_cast<std::int64_t>(s.last_sample_ns())).Add(ToSeconds(s.last_sample_ns()));
+        for (double x : row_) csv->Add(x);
+        csv->EndRow();
+      });
+    }
+  }
+  collisions_ = std::make_unique<CsvWriter>(
+      dir / "collisions.csv",
+      TimeColumns({"vehicle", "object", "class_id", "instance_id", "point_n_m", "point_e_m", "point_d_m",
+                   "normal_n", "normal_e", "normal_d", "impulse_n_s"}));
+  world.AddCollisionListener([this](const CollisionEvent& e) {
+    collisions_->Add(static_cast<std::int64_t>(e.time_ns)).Add(ToSeconds(e.time_ns));
+    collisions_->Add(e.vehicle_name).Add(e.object_name);
+    collisions_->Add(static_cast<std::int64_t>(e.class_id)).Add(static_cast<std::int64_t>(e.instance_id));
+    for (int i = 0; i < 3; ++i) collisions_->Add(e.point_W[i]);
+    for (int i = 0; i < 3; ++i) collisions_->Add(e.normal_W[i]);
+    collisions_->Add(e.impulse_Ns);
+    collisions_->EndRow();
+  });
+  events_ = std::make_unique<CsvWriter>(dir / "mission_events.csv",
+                                        TimeColumns({"step", "kind", "event"}));
+}
+
+void TelemetryRecorder::OnTick(TimeNs now_ns) {
+  if (truth_schedule_.ConsumeDue(now_ns) == 0) return;
+  const LocalNedFrame& frame = world_.environment().frame();
+  for (std::size_t v = 0; v < world_.vehicle_count(); ++v) {
+    const RigidBodyState& s = world_.vehicle(v).state();
+    const RigidBodyAccelerations& a = world_.accelerations(v);
+    const EulerAngles e = EulerFromQuat(s.q_WB);
+    const GeodeticPosition g = frame.ToGeodetic(s.p_W);
+    CsvWriter& out = *truth_;
+    out.Add(static_cast<std::int64_t>(now_ns)).Add(ToSeconds(now_ns)).Add(world_.vehicle(v).name());
+    for (int i = 0; i < 3; ++i) out.Add(s.p_W[i]);
+    for (int i = 0; i < 3; ++i) out.Add(s.v_W[i]);
+    out.Add(s.q_WB.w()).Add(s.q_WB.x()).Add(s.q_WB.y()).Add(s.q_WB.z());
+    out.Add(RadToDeg(e.roll_rad)).Add(RadToDeg(e.pitch_rad)).Add(RadToDeg(e.yaw_rad));
+    for (int i = 0; i < 3; ++i) out.Add(s.w_B[i]);
+    for (int i = 0; i < 3; ++i) out.Add(a.a_W[i]);
+    out.Add(RadToDeg(g.latitude_rad)).Add(RadToDeg(g.longitude_rad)).Add(g.altitude_m);
+    out.EndRow();
+  }
+}
+
+void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index, const std::string& step_kind,
+                                           const std::string& what) {
+  events_->Add(static_cast<std::int64_t>(time_ns)).Add(ToSeconds(time_ns));
+  events_->Add(static_cast<std::int64_t>(step_index + 1)).Add(step_kind).Add(what);
+  events_->EndRow();
+}
+
+void TelemetryRecorder::Close() {
+  truth_->Close();
+  for (auto& s : sensors_) s->Close();
+  collisions_->Close();
+  events_->Close();
+}
+
+}  // namespace airis::engine
