@@ -7,75 +7,64 @@
 namespace airis::engine {
 namespace {
 
-// Time derivative of the state (quaternion derivative as its 4 coefficients x, y, z, w).
-struct Derivative {
-  Vec3 dp;
-  Vec3 dv;
-  Eigen::Vector4d dq;
-  Vec3 dw;
-};
-
-struct Stage {
-  Vec3 p;
-  Vec3 v;
-  Eigen::Vector4d q;  // x, y, z, w (Eigen's coefficient order)
-  Vec3 w;
-};
+// The state as one flat vector, so the Runge-Kutta combinations are plain (vectorised) vector
+// arithmetic: [p_W (3), v_W (3), q_WB coefficients x, y, z, w (4), w_B (3)], and its time
+// derivative in the same layout.
+using Flat = Eigen::Matrix<double, 13, 1>;
 
 template <bool kPrincipalAxes>
-inline Derivative Evaluate(const RigidBodyModel& body, const StepForcing& f, double z0,
-                           const Stage& s) {
-  const Quat q(
-      s.q);  // not exactly unit inside the step; its rotation is used as is (RK4 consistency)
+inline Flat Evaluate(const RigidBodyModel& body, const StepForcing& f, double z0, const Flat& s) {
+  const Vec3 v = s.segment<3>(3);
+  const Vec3 w = s.segment<3>(10);
+  // Not exactly unit inside the step; its rotation is used as is (RK4 consistency).
+  const Quat q(s[9], s[6], s[7], s[8]);
   const Mat3 R_WB = q.toRotationMatrix();
-  Derivative d;
-  d.dp = s.v;
-  const double g = f.gravity_m_s2 + f.gravity_gradient_1_s2 * (s.p.z() - z0);
   Vec3 force_B = f.force_B;
   Vec3 torque_B = f.torque_B;
   if (f.air_density_kg_m3 > 0.0) {
-    const Vec3 v_rel_B = R_WB.transpose() * (s.v - f.wind_W);
+    const Vec3 v_rel_B = R_WB.transpose() * (v - f.wind_W);
     force_B += CalcLinearDrag_B(body, f.air_density_kg_m3, v_rel_B);
-    torque_B += CalcAngularDrag_B(body, f.air_density_kg_m3, s.w);
+    torque_B += CalcAngularDrag_B(body, f.air_density_kg_m3, w);
   }
-  d.dv = body.inverse_mass_1_kg() * (R_WB * force_B);
-  d.dv.z() += g;
+  Flat d;
+  d.segment<3>(0) = v;
+  Vec3 a = body.inverse_mass_1_kg() * (R_WB * force_B);
+  a.z() += f.gravity_m_s2 + f.gravity_gradient_1_s2 * (s[2] - z0);
+  d.segment<3>(3) = a;
   // q' = 1/2 q (x) (0, w): Hamilton product with a pure quaternion, written out.
-  const double qx = s.q[0], qy = s.q[1], qz = s.q[2], qw = s.q[3];
-  const double wx = s.w.x(), wy = s.w.y(), wz = s.w.z();
-  d.dq = 0.5 * Eigen::Vector4d(qw * wx + qy * wz - qz * wy, qw * wy + qz * wx - qx * wz,
-                               qw * wz + qx * wy - qy * wx, -qx * wx - qy * wy - qz * wz);
+  const double qx = s[6], qy = s[7], qz = s[8], qw = s[9];
+  const double wx = w.x(), wy = w.y(), wz = w.z();
+  d[6] = 0.5 * (qw * wx + qy * wz - qz * wy);
+  d[7] = 0.5 * (qw * wy + qz * wx - qx * wz);
+  d[8] = 0.5 * (qw * wz + qx * wy - qy * wx);
+  d[9] = -0.5 * (qx * wx + qy * wy + qz * wz);
   if constexpr (kPrincipalAxes) {
     const Vec3 I = body.inertia_B().diagonal();
-    d.dw = (torque_B - s.w.cross(I.cwiseProduct(s.w)))
-               .cwiseProduct(body.inverse_inertia_B().diagonal());
+    d.segment<3>(10) =
+        (torque_B - w.cross(I.cwiseProduct(w))).cwiseProduct(body.inverse_inertia_B().diagonal());
   } else {
-    d.dw = body.inverse_inertia_B() * (torque_B - s.w.cross(body.inertia_B() * s.w));
+    d.segment<3>(10) = body.inverse_inertia_B() * (torque_B - w.cross(body.inertia_B() * w));
   }
   return d;
-}
-
-inline Stage Advance(const Stage& s, const Derivative& d, double h) {
-  return Stage{s.p + h * d.dp, s.v + h * d.dv, s.q + h * d.dq, s.w + h * d.dw};
 }
 
 template <bool kPrincipalAxes>
 void Step(const RigidBodyModel& body, const StepForcing& forcing, double dt_s,
           RigidBodyState& state, RigidBodyAccelerations& accelerations) {
-  const Stage s0{state.p_W, state.v_W, state.q_WB.coeffs(), state.w_B};
+  Flat s0;
+  s0 << state.p_W, state.v_W, state.q_WB.coeffs(), state.w_B;
   const double z0 = state.p_W.z();
-  const Derivative k1 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0);
-  const Derivative k2 = Evaluate<kPrincipalAxes>(body, forcing, z0, Advance(s0, k1, 0.5 * dt_s));
-  const Derivative k3 = Evaluate<kPrincipalAxes>(body, forcing, z0, Advance(s0, k2, 0.5 * dt_s));
-  const Derivative k4 = Evaluate<kPrincipalAxes>(body, forcing, z0, Advance(s0, k3, dt_s));
-  const double h6 = dt_s / 6.0;
-  state.p_W += h6 * (k1.dp + 2.0 * (k2.dp + k3.dp) + k4.dp);
-  const Vec3 dv = h6 * (k1.dv + 2.0 * (k2.dv + k3.dv) + k4.dv);
+  const Flat k1 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0);
+  const Flat k2 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0 + (0.5 * dt_s) * k1);
+  const Flat k3 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0 + (0.5 * dt_s) * k2);
+  const Flat k4 = Evaluate<kPrincipalAxes>(body, forcing, z0, s0 + dt_s * k3);
+  const Flat delta = (dt_s / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+  state.p_W += delta.segment<3>(0);
+  const Vec3 dv = delta.segment<3>(3);
   state.v_W += dv;
-  Eigen::Vector4d q = s0.q + h6 * (k1.dq + 2.0 * (k2.dq + k3.dq) + k4.dq);
-  q /= q.norm();
-  state.q_WB.coeffs() = q;
-  const Vec3 dw = h6 * (k1.dw + 2.0 * (k2.dw + k3.dw) + k4.dw);
+  const Eigen::Vector4d q = s0.segment<4>(6) + delta.segment<4>(6);
+  state.q_WB.coeffs() = q / q.norm();
+  const Vec3 dw = delta.segment<3>(10);
   state.w_B += dw;
 
   const double inv_dt = 1.0 / dt_s;
