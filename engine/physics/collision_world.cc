@@ -126,7 +126,8 @@ struct CollisionWorld::Bullet {
   std::vector<std::uint32_t> large;       // colliders not in the grid
   std::vector<std::uint32_t> cell_start;  // CSR offsets into cell_items, one per cell plus one
   std::vector<std::uint32_t> cell_items;
-  std::vector<double> cell_top_z;          // per cell: the highest point (least z) of its colliders
+  std::vector<double> cell_top_z;  // per cell: the highest point (least z) of its colliders
+  double grid_top_z = std::numeric_limits<double>::infinity();  // the same over the whole grid
   std::vector<std::uint32_t> stamp;  // per collider: last query that saw it (dedupe across cells)
   std::uint32_t query = 0;
   double cell_m = 1.0;
@@ -190,6 +191,7 @@ struct CollisionWorld::Bullet {
             if (pass == 0) {
               ++cell_start[c + 1];
               cell_top_z[c] = std::min(cell_top_z[c], aabbs[i].lo.z());
+              grid_top_z = std::min(grid_top_z, aabbs[i].lo.z());
             } else {
               cell_items[fill[c]++] = i;
             }
@@ -228,8 +230,8 @@ struct CollisionWorld::Bullet {
       if (outside.squaredNorm() <= r2) candidates.push_back(statics[i].get());
     };
     for (std::uint32_t i : large) consider(i);
-    if (nx == 0 || hi.x() < origin_x || hi.y() < origin_y || lo.x() > origin_x + nx * cell_m ||
-        lo.y() > origin_y + ny * cell_m) {
+    if (nx == 0 || hi.z() < grid_top_z || hi.x() < origin_x || hi.y() < origin_y ||
+        lo.x() > origin_x + nx * cell_m || lo.y() > origin_y + ny * cell_m) {
       return;
     }
     int x0, x1, y0, y1;
