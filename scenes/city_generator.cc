@@ -1,4 +1,5 @@
-// The `city` generator (scene_config.h CityConfig): a street grid with blocks, lots and street furniture.
+// The `city` generator (scene_config.h CityConfig): a street grid with blocks, lots and street
+// furniture.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -8,17 +9,17 @@
 
 namespace airis::scenes {
 
-using engine::CollisionShape;
-using engine::Primitive;
 using Eigen::Affine3f;
 using Eigen::Vector3d;
 using Eigen::Vector3f;
+using engine::CollisionShape;
+using engine::Primitive;
 
 namespace {
 
 constexpr double kRoadThickness_m = 0.04;  // above the ground plane so the two never z-fight
 constexpr double kKerbHeight_m = 0.15;
-constexpr double kGableRoofRatio = 0.35;   // roof height / wall height
+constexpr double kGableRoofRatio = 0.35;  // roof height / wall height
 constexpr double kPyramidRoofRatio = 0.3;
 constexpr double kLampHeight_m = 6.0;
 constexpr double kCarLength_m = 4.4;
@@ -41,8 +42,8 @@ double Lerp(const Eigen::Vector2d& range, double u) { return range[0] + (range[1
 
 class CityBuilder {
  public:
-  CityBuilder(const CityConfig& c, const CityResources& r, const std::string& name, engine::RandomStream& rng,
-              SceneBuilder& b)
+  CityBuilder(const CityConfig& c, const CityResources& r, const std::string& name,
+              engine::RandomStream& rng, SceneBuilder& b)
       : c_(c), r_(r), name_(name), rng_(rng), b_(b) {}
 
   GeneratorReport Build() {
@@ -51,19 +52,22 @@ class CityBuilder {
     const Eigen::Vector2d size = c_.area.size_m;
     const int nx = std::max(1, static_cast<int>((size.x() - c_.street_width_m) / pitch.x()));
     const int ny = std::max(1, static_cast<int>((size.y() - c_.street_width_m) / pitch.y()));
-    const Eigen::Vector2d used(nx * pitch.x() + c_.street_width_m, ny * pitch.y() + c_.street_width_m);
+    const Eigen::Vector2d used(nx * pitch.x() + c_.street_width_m,
+                               ny * pitch.y() + c_.street_width_m);
     origin_ = c_.area.center_m - 0.5 * used;  // south-west corner of the first street
     b_.ReserveObjects(static_cast<std::size_t>(nx * ny) * 40 + nx + ny + 2);
 
     // Streets: one long slab per street line.
     for (int i = 0; i <= nx && ok_; ++i) {
       const double n = origin_.x() + i * pitch.x() + 0.5 * c_.street_width_m;
-      Place(box_, Slab(n, origin_.y() + 0.5 * used.y(), c_.street_width_m, used.y(), kRoadThickness_m),
+      Place(box_,
+            Slab(n, origin_.y() + 0.5 * used.y(), c_.street_width_m, used.y(), kRoadThickness_m),
             r_.road_class, "street_n" + std::to_string(i), asphalt_);
     }
     for (int j = 0; j <= ny && ok_; ++j) {
       const double e = origin_.y() + j * pitch.y() + 0.5 * c_.street_width_m;
-      Place(box_, Slab(origin_.x() + 0.5 * used.x(), e, used.x(), c_.street_width_m, kRoadThickness_m),
+      Place(box_,
+            Slab(origin_.x() + 0.5 * used.x(), e, used.x(), c_.street_width_m, kRoadThickness_m),
             r_.road_class, "street_e" + std::to_string(j), asphalt_);
     }
     for (int i = 0; i < nx && ok_; ++i) {
@@ -89,14 +93,17 @@ class CityBuilder {
     for (const RoofShape roof : {RoofShape::kFlat, RoofShape::kGabled, RoofShape::kPyramid}) {
       for (std::size_t k = 0; k < c_.building_colors.size(); ++k) {
         engine::Model m;
-        m.name = name_ + "/building_" + std::string(engine::ToString(roof)) + "_" + std::to_string(k);
+        m.name =
+            name_ + "/building_" + std::string(engine::ToString(roof)) + "_" + std::to_string(k);
         const std::uint32_t wall = b_.Material(Colored(c_.building_colors[k], "wall"));
         // Walls span z in [-1, 0] so the object's z scale is the wall height; the roof sits on top.
         m.parts.push_back({body_mesh, wall, PartPose({0, 0, -0.5f}, {1, 1, 1})});
         if (roof == RoofShape::kGabled) {
-          m.parts.push_back({gable, roof_material, PartPose({0, 0, -1}, {1, 1, float(kGableRoofRatio)})});
+          m.parts.push_back(
+              {gable, roof_material, PartPose({0, 0, -1}, {1, 1, float(kGableRoofRatio)})});
         } else if (roof == RoofShape::kPyramid) {
-          m.parts.push_back({pyramid, roof_material, PartPose({0, 0, -1}, {1, 1, float(kPyramidRoofRatio)})});
+          m.parts.push_back(
+              {pyramid, roof_material, PartPose({0, 0, -1}, {1, 1, float(kPyramidRoofRatio)})});
         }
         building_models_[static_cast<int>(roof)].push_back(b_.AddModel(std::move(m)));
       }
@@ -105,8 +112,9 @@ class CityBuilder {
     lamp.name = name_ + "/lamp_post";
     const std::uint32_t steel = b_.Material(Colored({0.3, 0.3, 0.32}, "steel"));
     const std::uint32_t glass = b_.Material(Colored({1.0, 0.95, 0.8}, "lamp"));
-    lamp.parts.push_back({b_.PrimitiveMesh(Primitive::kCylinder), steel,
-                          PartPose({0, 0, float(-0.5 * kLampHeight_m)}, {0.15f, 0.15f, float(kLampHeight_m)})});
+    lamp.parts.push_back(
+        {b_.PrimitiveMesh(Primitive::kCylinder), steel,
+         PartPose({0, 0, float(-0.5 * kLampHeight_m)}, {0.15f, 0.15f, float(kLampHeight_m)})});
     lamp.parts.push_back({b_.PrimitiveMesh(Primitive::kSphere), glass,
                           PartPose({0, 0, float(-kLampHeight_m - 0.1)}, {0.5f, 0.5f, 0.4f})});
     lamp_model_ = b_.AddModel(std::move(lamp));
@@ -116,12 +124,14 @@ class CityBuilder {
       engine::Model car;
       car.name = name_ + "/car";
       const std::uint32_t box_mesh = b_.PrimitiveMesh(Primitive::kBox);
-      car.parts.push_back({box_mesh, 0, PartPose({0, 0, -0.65f}, {float(kCarLength_m), 1.8f, 0.9f})});
+      car.parts.push_back(
+          {box_mesh, 0, PartPose({0, 0, -0.65f}, {float(kCarLength_m), 1.8f, 0.9f})});
       car.parts.push_back({box_mesh, 0, PartPose({-0.2f, 0, -1.4f}, {2.3f, 1.6f, 0.6f})});
       car_model_ = b_.AddModel(std::move(car));
-      const Eigen::Vector3d palette[] = {{0.8, 0.1, 0.1}, {0.1, 0.2, 0.6}, {0.85, 0.85, 0.85},
-                                         {0.1, 0.1, 0.1}, {0.5, 0.5, 0.52}};
-      for (const auto& rgb : palette) car_colors_.push_back(static_cast<std::int32_t>(b_.Material(Colored(rgb, "car"))));
+      const Eigen::Vector3d palette[] = {
+          {0.8, 0.1, 0.1}, {0.1, 0.2, 0.6}, {0.85, 0.85, 0.85}, {0.1, 0.1, 0.1}, {0.5, 0.5, 0.52}};
+      for (const auto& rgb : palette)
+        car_colors_.push_back(static_cast<std::int32_t>(b_.Material(Colored(rgb, "car"))));
     }
   }
 
@@ -130,8 +140,8 @@ class CityBuilder {
     return MakePose(Vector3d(n, e, -0.5 * thickness), 0, 0, 0, Vector3d(size_n, size_e, thickness));
   }
 
-  void Place(std::uint32_t model, const Eigen::Affine3d& T, std::uint8_t cls, const std::string& what,
-             std::int32_t material = -1) {
+  void Place(std::uint32_t model, const Eigen::Affine3d& T, std::uint8_t cls,
+             const std::string& what, std::int32_t material = -1) {
     if (!ok_) return;
     ok_ = b_.AddObject(model, T, cls, CollisionShape::kAuto, name_ + "/" + what, material);
     if (ok_) ++report_.objects;
@@ -142,13 +152,15 @@ class CityBuilder {
     const Eigen::Vector2d size = hi - lo;
     // Sidewalks: four kerb-high strips around the block.
     if (w > 0.0) {
-      Place(box_, Slab(lo.x() + 0.5 * w, lo.y() + 0.5 * size.y(), w, size.y(), kKerbHeight_m), r_.sidewalk_class,
-            id + "/sidewalk_s", concrete_);
-      Place(box_, Slab(hi.x() - 0.5 * w, lo.y() + 0.5 * size.y(), w, size.y(), kKerbHeight_m), r_.sidewalk_class,
-            id + "/sidewalk_n", concrete_);
-      Place(box_, Slab(lo.x() + 0.5 * size.x(), lo.y() + 0.5 * w, size.x() - 2 * w, w, kKerbHeight_m),
+      Place(box_, Slab(lo.x() + 0.5 * w, lo.y() + 0.5 * size.y(), w, size.y(), kKerbHeight_m),
+            r_.sidewalk_class, id + "/sidewalk_s", concrete_);
+      Place(box_, Slab(hi.x() - 0.5 * w, lo.y() + 0.5 * size.y(), w, size.y(), kKerbHeight_m),
+            r_.sidewalk_class, id + "/sidewalk_n", concrete_);
+      Place(box_,
+            Slab(lo.x() + 0.5 * size.x(), lo.y() + 0.5 * w, size.x() - 2 * w, w, kKerbHeight_m),
             r_.sidewalk_class, id + "/sidewalk_w", concrete_);
-      Place(box_, Slab(lo.x() + 0.5 * size.x(), hi.y() - 0.5 * w, size.x() - 2 * w, w, kKerbHeight_m),
+      Place(box_,
+            Slab(lo.x() + 0.5 * size.x(), hi.y() - 0.5 * w, size.x() - 2 * w, w, kKerbHeight_m),
             r_.sidewalk_class, id + "/sidewalk_e", concrete_);
     }
     Buildings(lo + Eigen::Vector2d::Constant(w), hi - Eigen::Vector2d::Constant(w), id);
@@ -164,14 +176,16 @@ class CityBuilder {
     const Eigen::Vector2d lot(inner.x() / lx, inner.y() / ly);
     for (int i = 0; i < lx; ++i) {
       for (int j = 0; j < ly; ++j) {
-        // Draw every number for every lot, used or not, so one lot's choices never shift the next's.
+        // Draw every number for every lot, used or not, so one lot's choices never shift the
+        // next's.
         const double present = rng_.Uniform01();
         const double fill_n = Lerp(c_.footprint_fill, rng_.Uniform01());
         const double fill_e = Lerp(c_.footprint_fill, rng_.Uniform01());
         const double slide_n = rng_.Uniform01(), slide_e = rng_.Uniform01();
         const double low = Lerp(c_.low_height_m, rng_.Uniform01());
         const double tall = Lerp(c_.tall_height_m, rng_.Uniform01());
-        const std::int64_t roof_pick = rng_.UniformInt(0, static_cast<std::int64_t>(c_.roof_shapes.size()) - 1);
+        const std::int64_t roof_pick =
+            rng_.UniformInt(0, static_cast<std::int64_t>(c_.roof_shapes.size()) - 1);
         const std::int64_t color_pick =
             rng_.UniformInt(0, static_cast<std::int64_t>(c_.building_colors.size()) - 1);
         if (present >= c_.building_probability) continue;
@@ -184,10 +198,12 @@ class CityBuilder {
         const double d = (centre - c_.downtown_center_m).norm() / c_.downtown_radius_m;
         const double weight = std::exp(-d * d);
         const double height = (1.0 - weight) * low + weight * tall;
-        const RoofShape roof = height > c_.flat_roof_above_m ? RoofShape::kFlat : c_.roof_shapes[roof_pick];
+        const RoofShape roof =
+            height > c_.flat_roof_above_m ? RoofShape::kFlat : c_.roof_shapes[roof_pick];
         const std::uint32_t model = building_models_[static_cast<int>(roof)][color_pick];
-        Place(model, MakePose(Vector3d(centre.x(), centre.y(), 0.0), 0, 0, 0,
-                              Vector3d(footprint.x(), footprint.y(), height)),
+        Place(model,
+              MakePose(Vector3d(centre.x(), centre.y(), 0.0), 0, 0, 0,
+                       Vector3d(footprint.x(), footprint.y(), height)),
               r_.building_class, id + "/building" + std::to_string(i) + "_" + std::to_string(j));
         if (ok_) ++report_.buildings;
       }
@@ -204,7 +220,8 @@ class CityBuilder {
       const int count = static_cast<int>(length / c_.lamp_spacing_m);
       for (int s = 0; s < count; ++s) {
         const Eigen::Vector2d p = from + (to - from) * ((s + 0.5) / count);
-        Place(lamp_model_, MakePose(Vector3d(p.x(), p.y(), -kKerbHeight_m), 0, 0, 0, Vector3d::Ones()),
+        Place(lamp_model_,
+              MakePose(Vector3d(p.x(), p.y(), -kKerbHeight_m), 0, 0, 0, Vector3d::Ones()),
               r_.lamp_class, id + "/lamp" + std::to_string(k++));
       }
     };
@@ -218,7 +235,8 @@ class CityBuilder {
     const double lane = 1.2;  // car centre from the kerb
     int k = 0;
     // Each side of the block: kerb line from `from` to `to`, cars parked along it in the street.
-    auto side = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& out) {
+    auto side = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                    const Eigen::Vector2d& out) {
       const double length = (to - from).norm();
       const int slots = static_cast<int>(length / (kCarLength_m + 1.5));
       const double p_car = std::min(1.0, c_.cars_per_100m * length / 100.0 / std::max(slots, 1));
@@ -227,11 +245,15 @@ class CityBuilder {
       for (int s = 0; s < slots; ++s) {
         const double u = rng_.Uniform01();
         const double flip = rng_.Uniform01();
-        const std::int64_t color = car_colors_.empty() ? 0 : rng_.UniformInt(0, car_colors_.size() - 1);
+        const std::int64_t color =
+            car_colors_.empty() ? 0 : rng_.UniformInt(0, car_colors_.size() - 1);
         if (u >= p_car) continue;
         const Eigen::Vector2d p = from + dir * ((s + 0.5) * length / slots) + out * lane;
-        Place(car_model_, MakePose(Vector3d(p.x(), p.y(), 0.0), yaw + (flip < 0.5 ? 0.0 : std::numbers::pi), 0, 0, Vector3d::Ones()),
-              r_.car_class, id + "/car" + std::to_string(k++), car_colors_.empty() ? -1 : car_colors_[color]);
+        Place(car_model_,
+              MakePose(Vector3d(p.x(), p.y(), 0.0), yaw + (flip < 0.5 ? 0.0 : std::numbers::pi), 0,
+                       0, Vector3d::Ones()),
+              r_.car_class, id + "/car" + std::to_string(k++),
+              car_colors_.empty() ? -1 : car_colors_[color]);
       }
     };
     side({lo.x(), lo.y()}, {hi.x(), lo.y()}, {0, -1});
@@ -256,8 +278,9 @@ class CityBuilder {
 
 }  // namespace
 
-GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources, const std::string& name,
-                             engine::RandomStream& stream, SceneBuilder& builder) {
+GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources,
+                             const std::string& name, engine::RandomStream& stream,
+                             SceneBuilder& builder) {
   return CityBuilder(config, resources, name, stream, builder).Build();
 }
 

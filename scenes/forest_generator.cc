@@ -7,10 +7,10 @@
 
 namespace airis::scenes {
 
-using engine::CollisionShape;
-using engine::Primitive;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using engine::CollisionShape;
+using engine::Primitive;
 
 namespace {
 
@@ -83,8 +83,8 @@ double AreaOf(const AreaConfig& area) {
 
 std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, double radius_m,
                                         engine::RandomStream& stream) {
-  // Bridson (SIGGRAPH 2007 sketch): background grid of cell r/sqrt(2) holds at most one sample; each
-  // active sample tries k annulus points in [r, 2r] and retires when all fail.
+  // Bridson (SIGGRAPH 2007 sketch): background grid of cell r/sqrt(2) holds at most one sample;
+  // each active sample tries k annulus points in [r, 2r] and retires when all fail.
   constexpr int kTries = 30;
   const double cell = radius_m / std::sqrt(2.0);
   const Vector2d size = hi - lo;
@@ -123,7 +123,8 @@ std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, 
     bool placed = false;
     for (int t = 0; t < kTries; ++t) {
       const double angle = stream.Uniform(0.0, 2.0 * std::numbers::pi);
-      const double r = radius_m * std::sqrt(stream.Uniform(1.0, 4.0));  // uniform by area in the annulus
+      const double r =
+          radius_m * std::sqrt(stream.Uniform(1.0, 4.0));  // uniform by area in the annulus
       const Vector2d p = centre + r * Vector2d(std::cos(angle), std::sin(angle));
       if (p.x() < lo.x() || p.y() < lo.y() || p.x() >= hi.x() || p.y() >= hi.y()) continue;
       if (!far_enough(p)) continue;
@@ -139,11 +140,13 @@ std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, 
   return points;
 }
 
-GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r, const std::string& name,
-                               engine::RandomStream& rng, SceneBuilder& b) {
+GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
+                               const std::string& name, engine::RandomStream& rng,
+                               SceneBuilder& b) {
   GeneratorReport report;
-  // Models: `variants_per_species` unit-height trees per species, proportions drawn once; each tree is
-  // one of them scaled to its height, so thousands of trees share a handful of models and three meshes.
+  // Models: `variants_per_species` unit-height trees per species, proportions drawn once; each tree
+  // is one of them scaled to its height, so thousands of trees share a handful of models and three
+  // meshes.
   std::vector<std::vector<std::uint32_t>> variants(c.species.size());
   const std::uint32_t trunk_mesh = b.PrimitiveMesh(Primitive::kCylinder);
   for (std::size_t s = 0; s < c.species.size(); ++s) {
@@ -160,9 +163,11 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r, 
       const float trunk_d = static_cast<float>(sp.trunk_diameter_fraction);
       engine::Model m;
       m.name = name + "/" + sp.name + "_" + std::to_string(v);
-      m.parts.push_back({trunk_mesh, bark, PartPose({0, 0, -0.5f * trunk_height}, {trunk_d, trunk_d, trunk_height})});
-      m.parts.push_back({crown_mesh, leaves,
-                         PartPose({0, 0, -(bare + 0.5f * crown_height)}, {width, width, crown_height})});
+      m.parts.push_back({trunk_mesh, bark,
+                         PartPose({0, 0, -0.5f * trunk_height}, {trunk_d, trunk_d, trunk_height})});
+      m.parts.push_back(
+          {crown_mesh, leaves,
+           PartPose({0, 0, -(bare + 0.5f * crown_height)}, {width, width, crown_height})});
       variants[s].push_back(b.AddModel(std::move(m)));
     }
   }
@@ -191,7 +196,8 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r, 
       acc += c.species[++s].weight;
     }
     const double height = Lerp(c.species[s].height_m, u_height);
-    if (!b.AddObject(variants[s][variant], MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+    if (!b.AddObject(variants[s][variant],
+                     MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
                      r.tree_class, CollisionShape::kAuto,
                      name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
       report.out_of_instance_ids = true;
@@ -214,8 +220,10 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r, 
       const double height = Lerp(g.height_m, rng.Uniform01());
       const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
       if (!AreaContains(c.area, p) || InClearing(c, p)) continue;
-      if (!b.AddObject(bush_model, MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
-                       r.bush_class, CollisionShape::kAuto, name + "/bush" + std::to_string(report.bushes))) {
+      if (!b.AddObject(bush_model,
+                       MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+                       r.bush_class, CollisionShape::kAuto,
+                       name + "/bush" + std::to_string(report.bushes))) {
         report.out_of_instance_ids = true;
         return report;
       }

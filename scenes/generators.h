@@ -1,7 +1,8 @@
 #pragma once
 
-// Procedural content expanded at load: cities and forests. Deterministic: the same config and random
-// stream (generators/<name> of the scene seed) give the same objects, in the same order, on every machine.
+// Procedural content expanded at load: cities and forests. Deterministic: the same config and
+// random stream (generators/<name> of the scene seed) give the same objects, in the same order, on
+// every machine.
 
 #include <cstdint>
 #include <optional>
@@ -13,7 +14,8 @@
 
 namespace airis::scenes {
 
-/// Class ids and shared models a city needs, resolved by the loader (which knows where errors point).
+/// Class ids and shared models a city needs, resolved by the loader (which knows where errors
+/// point).
 struct CityResources {
   std::uint8_t building_class = 0;
   std::uint8_t road_class = 0;
@@ -32,10 +34,11 @@ struct GeneratorReport {
   bool out_of_instance_ids = false;  ///< stopped early: the scene reached 65535 objects
 };
 
-/// Expands a city into `builder`: streets, sidewalks, buildings with roofs, lamp posts and parked cars.
-/// Object names start with `name`/.
-GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources, const std::string& name,
-                             engine::RandomStream& stream, SceneBuilder& builder);
+/// Expands a city into `builder`: streets, sidewalks, buildings with roofs, lamp posts and parked
+/// cars. Object names start with `name`/.
+GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources,
+                             const std::string& name, engine::RandomStream& stream,
+                             SceneBuilder& builder);
 
 /// Class ids a forest needs.
 struct ForestResources {
@@ -43,12 +46,14 @@ struct ForestResources {
   std::uint8_t bush_class = 0;
 };
 
-/// Expands a forest into `builder`: Poisson-disc trees (Bridson 2007, "Fast Poisson disk sampling in
-/// arbitrary dimensions") thinned to the density, species models shared, bushes scattered.
+/// Expands a forest into `builder`: Poisson-disc trees (Bridson 2007, "Fast Poisson disk sampling
+/// in arbitrary dimensions") thinned to the density, species models shared, bushes scattered.
 GeneratorReport GenerateForest(const ForestConfig& config, const ForestResources& resources,
-                               const std::string& name, engine::RandomStream& stream, SceneBuilder& builder);
+                               const std::string& name, engine::RandomStream& stream,
+                               SceneBuilder& builder);
 
-/// Poisson-disc points with minimum distance `radius_m` over [lo, hi] (Bridson's algorithm, k = 30 tries).
+/// Poisson-disc points with minimum distance `radius_m` over [lo, hi] (Bridson's algorithm, k = 30
+/// tries).
 std::vector<Eigen::Vector2d> PoissonDiscSample(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
                                                double radius_m, engine::RandomStream& stream);
 

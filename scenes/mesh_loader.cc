@@ -51,8 +51,8 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
     if (!t.empty() && t[0] != '*') {
       const fs::path resolved = (fs::path(mesh_path).parent_path() / t).lexically_normal();
       if (!fs::is_regular_file(resolved)) {
-        throw MeshLoadError("texture file not found: " + resolved.string() + " (named by material '" +
-                            out.name + "' of " + mesh_path + ")");
+        throw MeshLoadError("texture file not found: " + resolved.string() +
+                            " (named by material '" + out.name + "' of " + mesh_path + ")");
       }
       out.texture_path = fs::absolute(resolved).string();
     }
@@ -67,11 +67,12 @@ std::span<const engine::EnumName<MeshAxes>> EnumNames(MeshAxes) { return kMeshAx
 MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
   Assimp::Importer importer;
   // Keep only triangles: points and lines have no surface to collide with or draw.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
-                aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure |
-                aiProcess_FindInvalidData);
+                aiProcess_PreTransformVertices | aiProcess_SortByPType |
+                aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
   if (scene == nullptr) throw MeshLoadError(importer.GetErrorString());
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
     throw MeshLoadError("the file contains no triangle meshes");
@@ -106,7 +107,8 @@ MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
       const aiFace& face = in.mFaces[f];
       if (face.mNumIndices != 3) continue;
-      mesh.indices.insert(mesh.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+      mesh.indices.insert(mesh.indices.end(),
+                          {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
     }
     triangles += mesh.triangle_count();
     UpdateBounds(mesh);

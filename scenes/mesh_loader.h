@@ -9,7 +9,8 @@
 
 namespace airis::scenes {
 
-/// Axes a mesh file is authored in, turned into the model frame (NED-like: x north, y east, z down).
+/// Axes a mesh file is authored in, turned into the model frame (NED-like: x north, y east, z
+/// down).
 enum class MeshAxes {
   kYUp,  ///< x east, y up, z south (glTF's and most OBJ exporters' convention); the default
   kZUp,  ///< x north, y west, z up (ROS / Blender-Z-up style)
@@ -17,8 +18,8 @@ enum class MeshAxes {
 };
 std::span<const engine::EnumName<MeshAxes>> EnumNames(MeshAxes);
 
-/// A mesh file read through assimp: one TriangleMesh per material group, its materials and how each part
-/// sits in the model frame.
+/// A mesh file read through assimp: one TriangleMesh per material group, its materials and how each
+/// part sits in the model frame.
 struct MeshFile {
   struct Part {
     std::size_t mesh = 0;      ///< index into meshes
@@ -29,16 +30,17 @@ struct MeshFile {
   std::vector<Part> parts;
 };
 
-/// Why a mesh file could not be used (unreadable, empty, a texture missing); the message is assimp's
-/// reason or names the resolved texture path. Callers add the scene file's location.
+/// Why a mesh file could not be used (unreadable, empty, a texture missing); the message is
+/// assimp's reason or names the resolved texture path. Callers add the scene file's location.
 class MeshLoadError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-/// Loads `path` (OBJ, glTF/GLB, FBX, PLY, STL, DAE, anything assimp reads): triangulated, node transforms
-/// applied, smooth normals generated where missing, axes converted from `axes` to the model frame.
-/// Texture paths are resolved against the mesh file and must exist. Throws MeshLoadError.
+/// Loads `path` (OBJ, glTF/GLB, FBX, PLY, STL, DAE, anything assimp reads): triangulated, node
+/// transforms applied, smooth normals generated where missing, axes converted from `axes` to the
+/// model frame. Texture paths are resolved against the mesh file and must exist. Throws
+/// MeshLoadError.
 MeshFile LoadMeshFile(const std::string& path, MeshAxes axes);
 
 }  // namespace airis::scenes

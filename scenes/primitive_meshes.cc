@@ -7,10 +7,10 @@
 
 namespace airis::scenes {
 
-using engine::Primitive;
-using engine::TriangleMesh;
 using Eigen::Vector2f;
 using Eigen::Vector3f;
+using engine::Primitive;
+using engine::TriangleMesh;
 
 namespace {
 
@@ -22,8 +22,9 @@ std::uint32_t AddVertex(TriangleMesh& m, const Vector3f& p, const Vector3f& n, c
   return static_cast<std::uint32_t>(m.positions.size() - 1);
 }
 
-/// Appends triangle (a, b, c), flipped if needed so that it winds counter-clockwise seen from the side
-/// `outward` points to. Orienting by construction check keeps every generator free of winding slips.
+/// Appends triangle (a, b, c), flipped if needed so that it winds counter-clockwise seen from the
+/// side `outward` points to. Orienting by construction check keeps every generator free of winding
+/// slips.
 void AddTriangle(TriangleMesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c,
                  const Vector3f& outward) {
   const Vector3f n = (m.positions[b] - m.positions[a]).cross(m.positions[c] - m.positions[a]);
@@ -82,10 +83,12 @@ TriangleMesh MakeSphere() {
   const int segments = kRoundSegments;
   const int rings = kRoundSegments / 2;
   for (int r = 0; r <= rings; ++r) {
-    const float theta = std::numbers::pi_v<float> * static_cast<float>(r) / rings;  // from -z (up) down
+    const float theta =
+        std::numbers::pi_v<float> * static_cast<float>(r) / rings;  // from -z (up) down
     for (int s = 0; s <= segments; ++s) {
       const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(s) / segments;
-      const Vector3f n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta));
+      const Vector3f n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                       -std::cos(theta));
       AddVertex(m, 0.5f * n, n,
                 Vector2f(static_cast<float>(s) / segments, static_cast<float>(r) / rings));
     }
@@ -189,10 +192,10 @@ TriangleMesh MakeGableRoofMesh() {
   const float h = 0.5f;
   const Vector3f a(-h, -h, 0), b(h, -h, 0), c(h, h, 0), d(-h, h, 0);
   const Vector3f r0(-h, 0, -1), r1(h, 0, -1);
-  AddFace(m, {a, b, c, d}, Vector3f(0, 0, 1));                          // base (facing down)
-  AddFace(m, {a, b, r1, r0}, Vector3f(0, -1, -0.5f).normalized());    // west slope
-  AddFace(m, {d, c, r1, r0}, Vector3f(0, 1, -0.5f).normalized());     // east slope
-  AddFace(m, {a, d, r0}, Vector3f(-1, 0, 0));                          // gable ends
+  AddFace(m, {a, b, c, d}, Vector3f(0, 0, 1));                      // base (facing down)
+  AddFace(m, {a, b, r1, r0}, Vector3f(0, -1, -0.5f).normalized());  // west slope
+  AddFace(m, {d, c, r1, r0}, Vector3f(0, 1, -0.5f).normalized());   // east slope
+  AddFace(m, {a, d, r0}, Vector3f(-1, 0, 0));                       // gable ends
   AddFace(m, {b, c, r1}, Vector3f(1, 0, 0));
   m.name = "generated:gable_roof";
   UpdateBounds(m);

@@ -20,15 +20,15 @@ namespace airis::scenes {
 
 using engine::Vec3;
 
-/// A vehicle as the scene describes it: the preset's airframe with the scene's overrides applied, its start
-/// pose and its sensors (configs read through their owners' Visit).
+/// A vehicle as the scene describes it: the preset's airframe with the scene's overrides applied,
+/// its start pose and its sensors (configs read through their owners' Visit).
 struct VehicleDescription {
   std::string name;
   std::string preset;
-  Vec3 p_W = Vec3::Zero();          ///< start position of the centre of mass, world NED (m)
-  double yaw_rad = 0.0;             ///< start heading, clockwise from north (rad)
-  engine::SourceLocation where;     ///< the entry in its scene file
-  std::string key_path;             ///< e.g. `vehicles[0]`
+  Vec3 p_W = Vec3::Zero();              ///< start position of the centre of mass, world NED (m)
+  double yaw_rad = 0.0;                 ///< start heading, clockwise from north (rad)
+  engine::SourceLocation where;         ///< the entry in its scene file
+  std::string key_path;                 ///< e.g. `vehicles[0]`
   vehicles::MultirotorConfig airframe;  ///< preset + overrides, validated
   std::vector<SensorDescription> sensors;
 };
@@ -43,35 +43,36 @@ struct GeneratedSummary {
   std::size_t bushes = 0;
 };
 
-/// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and the
-/// vehicles to create. A scene that loads has finite poses, positive scales, unique instance ids in
-/// 1..65535, and no vehicle starting inside an object.
+/// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and
+/// the vehicles to create. A scene that loads has finite poses, positive scales, unique instance
+/// ids in 1..65535, and no vehicle starting inside an object.
 struct Scene {
   std::string name;
-  std::string path;                      ///< the scene file as given
-  std::vector<std::string> files;        ///< every file read: the scene, its includes
+  std::string path;                ///< the scene file as given
+  std::vector<std::string> files;  ///< every file read: the scene, its includes
   std::uint64_t seed = 1;
-  engine::GeodeticPosition origin;       ///< of the world NED frame
+  engine::GeodeticPosition origin;  ///< of the world NED frame
   engine::EnvironmentConfig environment;
   engine::StaticScene static_scene;
   std::vector<VehicleDescription> vehicles;
   std::vector<GeneratedSummary> generated;
 };
 
-/// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and key
-/// path for every mistake: unknown keys, wrong types, bad values, missing or unreadable mesh or texture
-/// files, include cycles, unknown classes, a vehicle starting inside an object.
+/// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and
+/// key path for every mistake: unknown keys, wrong types, bad values, missing or unreadable mesh or
+/// texture files, include cycles, unknown classes, a vehicle starting inside an object.
 Scene LoadScene(const std::string& path);
 
 /// As LoadScene, from text (tests); `path` names it in messages and anchors relative paths.
 Scene LoadSceneFromString(const std::string& text, const std::string& path);
 
-/// Sun direction (unit vector along which sunlight travels, world NED; points down when the sun is up)
-/// from azimuth (clockwise from north) and elevation, radians.
+/// Sun direction (unit vector along which sunlight travels, world NED; points down when the sun is
+/// up) from azimuth (clockwise from north) and elevation, radians.
 Vec3 SunDirectionFromAngles(double azimuth_rad, double elevation_rad);
 
 /// Sun azimuth and elevation (rad) at local solar time `hours` on `decimal_year` at `latitude_rad`:
-/// declination by Cooper (1969), delta = 23.45 deg sin(2 pi (284 + n) / 365); hour angle 15 deg/h from noon.
+/// declination by Cooper (1969), delta = 23.45 deg sin(2 pi (284 + n) / 365); hour angle 15 deg/h
+/// from noon.
 void SolarAngles(double latitude_rad, double decimal_year, double hours, double* azimuth_rad,
                  double* elevation_rad);
 

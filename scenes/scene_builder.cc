@@ -11,7 +11,8 @@ namespace airis::scenes {
 using engine::Primitive;
 
 std::vector<engine::SemanticClass> BuiltInClasses() {
-  // Label colours: a qualitative palette in the spirit of Cityscapes' (road purple, vegetation green...).
+  // Label colours: a qualitative palette in the spirit of Cityscapes' (road purple, vegetation
+  // green...).
   return {
       {1, "ground", Eigen::Vector3f(0.32f, 0.29f, 0.20f)},
       {2, "road", Eigen::Vector3f(0.50f, 0.25f, 0.50f)},
@@ -38,7 +39,8 @@ SceneBuilder::SceneBuilder() {
 
 std::uint32_t SceneBuilder::PrimitiveMesh(Primitive primitive) {
   const int k = static_cast<int>(primitive);
-  if (primitive_mesh_[k] < 0) primitive_mesh_[k] = static_cast<std::int32_t>(AddMesh(MakePrimitiveMesh(primitive)));
+  if (primitive_mesh_[k] < 0)
+    primitive_mesh_[k] = static_cast<std::int32_t>(AddMesh(MakePrimitiveMesh(primitive)));
   return static_cast<std::uint32_t>(primitive_mesh_[k]);
 }
 
@@ -141,9 +143,9 @@ std::vector<std::string> SceneBuilder::ClassNames() const {
   return names;
 }
 
-bool SceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
-                             engine::CollisionShape collision, std::string name,
-                             std::int32_t material_override) {
+bool SceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO,
+                             std::uint8_t class_id, engine::CollisionShape collision,
+                             std::string name, std::int32_t material_override) {
   if (scene_.objects.size() >= engine::kMaxInstances) return false;
   engine::StaticObject o;
   o.model = model;
@@ -157,8 +159,8 @@ bool SceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, s
   return true;
 }
 
-Eigen::Affine3d MakePose(const Eigen::Vector3d& p_W, double yaw_rad, double pitch_rad, double roll_rad,
-                         const Eigen::Vector3d& scale) {
+Eigen::Affine3d MakePose(const Eigen::Vector3d& p_W, double yaw_rad, double pitch_rad,
+                         double roll_rad, const Eigen::Vector3d& scale) {
   Eigen::Affine3d T = Eigen::Affine3d::Identity();
   T.translate(p_W);
   T.rotate(engine::QuatFromEuler({roll_rad, pitch_rad, yaw_rad}));

@@ -14,8 +14,9 @@ namespace airis::scenes {
 /// The built-in semantic classes (id, name, label colour). Scenes add more with `classes:`.
 std::vector<engine::SemanticClass> BuiltInClasses();
 
-/// Assembles a StaticScene: each mesh stored once, identical materials merged, models shared by every
-/// object that uses them, instance ids assigned in insertion order (so stable for a given scene and seed).
+/// Assembles a StaticScene: each mesh stored once, identical materials merged, models shared by
+/// every object that uses them, instance ids assigned in insertion order (so stable for a given
+/// scene and seed).
 class SceneBuilder {
  public:
   SceneBuilder();
@@ -24,7 +25,8 @@ class SceneBuilder {
   std::uint32_t PrimitiveMesh(engine::Primitive primitive);
   /// Stores `mesh` (bounds computed here) and returns its index.
   std::uint32_t AddMesh(engine::TriangleMesh mesh);
-  /// Index of a material equal to `material` (colour, texture, restitution, friction), added if new.
+  /// Index of a material equal to `material` (colour, texture, restitution, friction), added if
+  /// new.
   std::uint32_t Material(const engine::Material& material);
   /// Stores `model` (bounds computed from its parts) and returns its index.
   std::uint32_t AddModel(engine::Model model);
@@ -39,9 +41,11 @@ class SceneBuilder {
   /// The class names, for "expected one of" messages.
   std::vector<std::string> ClassNames() const;
 
-  /// Places an object; assigns the next instance id. Returns false when the 65535 instance ids are used up.
+  /// Places an object; assigns the next instance id. Returns false when the 65535 instance ids are
+  /// used up.
   bool AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
-                 engine::CollisionShape collision, std::string name, std::int32_t material_override = -1);
+                 engine::CollisionShape collision, std::string name,
+                 std::int32_t material_override = -1);
 
   /// Reserves room for `n` more objects (generators call this before a batch).
   void ReserveObjects(std::size_t n) { scene_.objects.reserve(scene_.objects.size() + n); }
@@ -55,14 +59,16 @@ class SceneBuilder {
   engine::StaticScene scene_;
   std::int32_t primitive_mesh_[6] = {-1, -1, -1, -1, -1, -1};
   std::int32_t primitive_model_[6] = {-1, -1, -1, -1, -1, -1};
-  std::map<std::tuple<float, float, float, std::string, float, float>, std::uint32_t> material_index_;
+  std::map<std::tuple<float, float, float, std::string, float, float>, std::uint32_t>
+      material_index_;
 };
 
 /// Bounds of `model`'s parts in the model frame.
-Eigen::AlignedBox3f CalcModelBounds(const engine::Model& model, const std::vector<engine::TriangleMesh>& meshes);
+Eigen::AlignedBox3f CalcModelBounds(const engine::Model& model,
+                                    const std::vector<engine::TriangleMesh>& meshes);
 
 /// T_WO from a position (m, NED), yaw/pitch/roll (rad, z-y-x) and per-axis scale.
-Eigen::Affine3d MakePose(const Eigen::Vector3d& p_W, double yaw_rad, double pitch_rad, double roll_rad,
-                         const Eigen::Vector3d& scale);
+Eigen::Affine3d MakePose(const Eigen::Vector3d& p_W, double yaw_rad, double pitch_rad,
+                         double roll_rad, const Eigen::Vector3d& scale);
 
 }  // namespace airis::scenes

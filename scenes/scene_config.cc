@@ -16,7 +16,9 @@ constexpr engine::EnumName<RoofShape> kRoofNames[] = {
 constexpr engine::EnumName<CrownShape> kCrownNames[] = {{CrownShape::kCone, "cone"},
                                                         {CrownShape::kSphere, "sphere"}};
 
-std::string Index(const std::string& list, std::size_t i) { return list + "[" + std::to_string(i) + "]"; }
+std::string Index(const std::string& list, std::size_t i) {
+  return list + "[" + std::to_string(i) + "]";
+}
 
 /// Runs a nested Validate() and prefixes the field it names with `prefix`.
 template <class Config>
@@ -38,7 +40,8 @@ std::span<const engine::EnumName<RoofShape>> EnumNames(RoofShape) { return kRoof
 std::span<const engine::EnumName<CrownShape>> EnumNames(CrownShape) { return kCrownNames; }
 
 void RequireColor(const std::string& field, const Eigen::Vector3d& rgb) {
-  for (int i = 0; i < 3; ++i) RequireInRange(field + "[" + std::to_string(i) + "]", rgb[i], 0.0, 1.0);
+  for (int i = 0; i < 3; ++i)
+    RequireInRange(field + "[" + std::to_string(i) + "]", rgb[i], 0.0, 1.0);
 }
 
 void RequireRange(const std::string& field, const Eigen::Vector2d& range, bool non_negative) {
@@ -131,14 +134,15 @@ void AreaConfig::Validate() const {
 
 void CityConfig::Validate() const {
   ValidateNested(area, "area");
-  Require(area.polygon_m.empty(), "area.polygon_m", "a city covers a rectangle; polygons are for forests");
+  Require(area.polygon_m.empty(), "area.polygon_m",
+          "a city covers a rectangle; polygons are for forests");
   RequirePositive("block_size_m[0]", block_size_m[0]);
   RequirePositive("block_size_m[1]", block_size_m[1]);
   RequirePositive("street_width_m", street_width_m);
   RequireNonNegative("sidewalk_width_m", sidewalk_width_m);
   Require(2.0 * sidewalk_width_m < block_size_m.minCoeff(), "sidewalk_width_m",
-          "sidewalks on both sides must leave room in the block (got " + engine::FormatNumber(sidewalk_width_m) +
-              " m)");
+          "sidewalks on both sides must leave room in the block (got " +
+              engine::FormatNumber(sidewalk_width_m) + " m)");
   RequirePositive("lot_size_m[0]", lot_size_m[0]);
   RequirePositive("lot_size_m[1]", lot_size_m[1]);
   RequireInRange("building_probability", building_probability, 0.0, 1.0);
@@ -154,7 +158,8 @@ void CityConfig::Validate() const {
   RequireNonNegative("flat_roof_above_m", flat_roof_above_m);
   Require(!roof_shapes.empty(), "roof_shapes", "give at least one roof shape");
   Require(!building_colors.empty(), "building_colors", "give at least one colour");
-  for (std::size_t i = 0; i < building_colors.size(); ++i) RequireColor(Index("building_colors", i), building_colors[i]);
+  for (std::size_t i = 0; i < building_colors.size(); ++i)
+    RequireColor(Index("building_colors", i), building_colors[i]);
   RequireColor("roof_color", roof_color);
   RequireNonNegative("lamp_spacing_m", lamp_spacing_m);
   RequireNonNegative("cars_per_100m", cars_per_100m);
@@ -168,7 +173,8 @@ void SpeciesConfig::Validate() const {
   RequireRange("crown_width_fraction", crown_width_fraction);
   RequirePositive("crown_width_fraction[0]", crown_width_fraction[0]);
   RequireRange("trunk_fraction", trunk_fraction);
-  Require(trunk_fraction[1] < 1.0, "trunk_fraction", "the bare trunk must be shorter than the tree (max < 1)");
+  Require(trunk_fraction[1] < 1.0, "trunk_fraction",
+          "the bare trunk must be shorter than the tree (max < 1)");
   RequirePositive("trunk_diameter_fraction", trunk_diameter_fraction);
   RequireColor("crown_color", crown_color);
   RequireColor("trunk_color", trunk_color);
@@ -193,7 +199,8 @@ void ForestConfig::Validate() const {
   RequirePositive("min_spacing_m", min_spacing_m);
   Require(!species.empty(), "species", "give at least one species");
   for (std::size_t i = 0; i < species.size(); ++i) ValidateNested(species[i], Index("species", i));
-  for (std::size_t i = 0; i < clearings.size(); ++i) ValidateNested(clearings[i], Index("clearings", i));
+  for (std::size_t i = 0; i < clearings.size(); ++i)
+    ValidateNested(clearings[i], Index("clearings", i));
   ValidateNested(ground_cover, "ground_cover");
   RequireInRange("variants_per_species", variants_per_species, 1, 64);
   Require(!tree_class.empty(), "tree_class", "must not be empty");

@@ -1,7 +1,8 @@
 #pragma once
 
-// The scene file format (docs/scene-format.md): one config struct per block, each listing its keys through
-// Visit so the reader, the docs and the messages share one list. Units are in key names where not SI.
+// The scene file format (docs/scene-format.md): one config struct per block, each listing its keys
+// through Visit so the reader, the docs and the messages share one list. Units are in key names
+// where not SI.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -18,7 +19,8 @@ namespace airis::scenes {
 
 /// Linear RGB colour in [0, 1]; throws InvalidField naming `field` otherwise.
 void RequireColor(const std::string& field, const Eigen::Vector3d& rgb);
-/// [lo, hi] with lo <= hi, both finite (and >= 0 when `non_negative`); throws InvalidField naming `field`.
+/// [lo, hi] with lo <= hi, both finite (and >= 0 when `non_negative`); throws InvalidField naming
+/// `field`.
 void RequireRange(const std::string& field, const Eigen::Vector2d& range, bool non_negative = true);
 
 /// Geodetic origin of the world frame (the NED origin).
@@ -29,15 +31,17 @@ struct OriginConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("latitude_deg", latitude_deg, "WGS84 latitude of the world origin (deg, north positive)");
-    v.Field("longitude_deg", longitude_deg, "WGS84 longitude of the world origin (deg, east positive)");
+    v.Field("latitude_deg", latitude_deg,
+            "WGS84 latitude of the world origin (deg, north positive)");
+    v.Field("longitude_deg", longitude_deg,
+            "WGS84 longitude of the world origin (deg, east positive)");
     v.Field("altitude_m", altitude_m, "height of the world origin above the WGS84 ellipsoid (m)");
   }
   void Validate() const;
 };
 
-/// Sun and sky for rendering. The sun comes from `time_of_day_h` (with the origin's latitude and the
-/// environment's date) when given, else from azimuth and elevation.
+/// Sun and sky for rendering. The sun comes from `time_of_day_h` (with the origin's latitude and
+/// the environment's date) when given, else from azimuth and elevation.
 struct LightingConfig {
   std::optional<double> time_of_day_h;  ///< local solar time (h), [0, 24)
   double sun_azimuth_deg = 135.0;       ///< direction toward the sun, clockwise from north (deg)
@@ -45,15 +49,17 @@ struct LightingConfig {
   Eigen::Vector3d sun_color = Eigen::Vector3d(1.0, 0.96, 0.9);
   Eigen::Vector3d sky_zenith_color = Eigen::Vector3d(0.25, 0.45, 0.85);
   Eigen::Vector3d sky_horizon_color = Eigen::Vector3d(0.75, 0.85, 0.95);
-  double ambient = 0.35;       ///< sky light fraction [0, 1]
+  double ambient = 0.35;        ///< sky light fraction [0, 1]
   double fog_distance_m = 0.0;  ///< distance at which fog reaches 63% (m), 0 = no fog
 
   template <class V>
   void Visit(V& v) {
     v.Field("time_of_day_h", time_of_day_h,
             "local solar time (h, 0 to 24); sets the sun from latitude and date when given");
-    v.Field("sun_azimuth_deg", sun_azimuth_deg, "direction toward the sun, clockwise from north (deg)");
-    v.Field("sun_elevation_deg", sun_elevation_deg, "sun elevation above the horizon (deg, -90 to 90)");
+    v.Field("sun_azimuth_deg", sun_azimuth_deg,
+            "direction toward the sun, clockwise from north (deg)");
+    v.Field("sun_elevation_deg", sun_elevation_deg,
+            "sun elevation above the horizon (deg, -90 to 90)");
     v.Field("sun_color", sun_color, "sun light colour, linear RGB 0..1");
     v.Field("sky_zenith_color", sky_zenith_color, "sky colour overhead, linear RGB 0..1");
     v.Field("sky_horizon_color", sky_horizon_color, "sky colour at the horizon, linear RGB 0..1");
@@ -118,7 +124,8 @@ struct GroundConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("enabled", enabled, "false = no ground plane");
-    v.Field("size_m", size_m, "extent [north, east] of the ground plane (m), centred on the origin");
+    v.Field("size_m", size_m,
+            "extent [north, east] of the ground plane (m), centred on the origin");
     v.Field("material", material, "ground appearance and contact");
     v.Field("class", class_name, "semantic class of the ground");
   }
@@ -176,18 +183,24 @@ struct ObjectConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("name", name, "instance name (copies get suffixes _I or _ROW_I); default: mesh file stem or primitive");
-    v.Field("mesh", mesh, "mesh file (OBJ, glTF/GLB, FBX, PLY, STL, DAE), relative to the scene file");
-    v.Field("primitive", primitive, "unit primitive instead of a mesh (box 1x1x1, diameter-1 sphere, ...)");
+    v.Field(
+        "name", name,
+        "instance name (copies get suffixes _I or _ROW_I); default: mesh file stem or primitive");
+    v.Field("mesh", mesh,
+            "mesh file (OBJ, glTF/GLB, FBX, PLY, STL, DAE), relative to the scene file");
+    v.Field("primitive", primitive,
+            "unit primitive instead of a mesh (box 1x1x1, diameter-1 sphere, ...)");
     v.Field("mesh_axes", mesh_axes, "axes the mesh file is authored in: y_up (glTF), z_up or ned");
     v.Field("position_m", position_m, "position of the object's origin, world NED (m)");
     v.Field("yaw_deg", yaw_deg, "rotation about down, applied first (deg)");
     v.Field("pitch_deg", pitch_deg, "rotation about the rotated y axis (deg)");
     v.Field("roll_deg", roll_deg, "rotation about the rotated x axis, applied last (deg)");
-    v.Field("scale", scale, "scale along the object's x, y, z (> 0); a unit primitive's size in metres");
+    v.Field("scale", scale,
+            "scale along the object's x, y, z (> 0); a unit primitive's size in metres");
     v.Field("material", material, "replaces the mesh's own materials when given");
     v.Field("class", class_name, "semantic class (building, tree, road, car, person, sign, ...)");
-    v.Field("collision", collision, "auto fits the object: primitive, else convex hull or triangles");
+    v.Field("collision", collision,
+            "auto fits the object: primitive, else convex hull or triangles");
     v.Field("repeat", repeat, "rows of identical copies");
   }
   void Validate() const;
@@ -203,7 +216,8 @@ struct AreaConfig {
   void Visit(V& v) {
     v.Field("center_m", center_m, "centre of the rectangle [north, east] (m)");
     v.Field("size_m", size_m, "extent of the rectangle [north, east] (m)");
-    v.Field("polygon_m", polygon_m, "corners [north, east] (m) of a polygon used instead of the rectangle");
+    v.Field("polygon_m", polygon_m,
+            "corners [north, east] (m) of a polygon used instead of the rectangle");
   }
   void Validate() const;
 };
@@ -249,15 +263,20 @@ struct CityConfig {
     v.Field("block_size_m", block_size_m, "block size between streets [north, east] (m)");
     v.Field("street_width_m", street_width_m, "street width kerb to kerb (m)");
     v.Field("sidewalk_width_m", sidewalk_width_m, "sidewalk width around each block (m)");
-    v.Field("lot_size_m", lot_size_m, "nominal lot size [north, east] (m); a block holds whole lots");
+    v.Field("lot_size_m", lot_size_m,
+            "nominal lot size [north, east] (m); a block holds whole lots");
     v.Field("building_probability", building_probability, "chance a lot has a building, 0..1");
-    v.Field("footprint_fill", footprint_fill, "[min, max] fraction of the lot side the building covers");
+    v.Field("footprint_fill", footprint_fill,
+            "[min, max] fraction of the lot side the building covers");
     v.Field("low_height_m", low_height_m, "[min, max] height of buildings far from downtown (m)");
-    v.Field("tall_height_m", tall_height_m, "[min, max] height of towers at the downtown centre (m)");
-    v.Field("downtown_center_m", downtown_center_m, "centre of the tall district [north, east] (m)");
+    v.Field("tall_height_m", tall_height_m,
+            "[min, max] height of towers at the downtown centre (m)");
+    v.Field("downtown_center_m", downtown_center_m,
+            "centre of the tall district [north, east] (m)");
     v.Field("downtown_radius_m", downtown_radius_m,
             "tall-to-low fade radius (m): weight of tall heights exp(-(d/r)^2)");
-    v.Field("flat_roof_above_m", flat_roof_above_m, "buildings taller than this get flat roofs (m)");
+    v.Field("flat_roof_above_m", flat_roof_above_m,
+            "buildings taller than this get flat roofs (m)");
     v.Field("roof_shapes", roof_shapes, "roof shapes drawn uniformly for lower buildings");
     v.Field("building_colors", building_colors, "wall colours drawn uniformly, linear RGB 0..1");
     v.Field("roof_color", roof_color, "colour of gabled and pyramid roofs, linear RGB 0..1");
@@ -294,9 +313,11 @@ struct SpeciesConfig {
   void Visit(V& v) {
     v.Field("name", name, "species name (used in tree names)");
     v.Field("weight", weight, "relative share of the trees (> 0)");
-    v.Field("crown", crown, "crown shape: cone (conifer) or sphere (broadleaf, an ellipsoid when scaled)");
+    v.Field("crown", crown,
+            "crown shape: cone (conifer) or sphere (broadleaf, an ellipsoid when scaled)");
     v.Field("height_m", height_m, "[min, max] total tree height (m)");
-    v.Field("crown_width_fraction", crown_width_fraction, "[min, max] crown diameter / tree height");
+    v.Field("crown_width_fraction", crown_width_fraction,
+            "[min, max] crown diameter / tree height");
     v.Field("trunk_fraction", trunk_fraction, "[min, max] bare trunk height / tree height");
     v.Field("trunk_diameter_fraction", trunk_diameter_fraction, "trunk diameter / tree height");
     v.Field("crown_color", crown_color, "crown colour, linear RGB 0..1");

@@ -26,8 +26,8 @@ void AppendEntries(const std::vector<T>& configs, const std::shared_ptr<const So
                    const char* key, std::vector<Sourced<T>>* out) {
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const YAML::Node node = EntryNode(file->root, key, i);
-    out->push_back(Sourced<T>{configs[i], file, std::string(key) + "[" + std::to_string(i) + "]", node,
-                              node.Mark(), static_cast<int>(i)});
+    out->push_back(Sourced<T>{configs[i], file, std::string(key) + "[" + std::to_string(i) + "]",
+                              node, node.Mark(), static_cast<int>(i)});
   }
 }
 
@@ -64,11 +64,11 @@ class DocumentReader {
 
     // Settings: the including file (read after its includes) overrides what they set.
     if (config.scene) {
-      doc_->scene = Sourced<SceneSettingsConfig>{*config.scene, file, "scene", root["scene"],
-                                                 KeyMark(root, "scene"), 0};
+      doc_->scene = Sourced<SceneSettingsConfig>{
+          *config.scene, file, "scene", root["scene"], KeyMark(root, "scene"), 0};
     }
     if (config.ground) {
-      doc_->ground = Sourced<GroundConfig>{*config.ground, file, "ground", root["ground"],
+      doc_->ground = Sourced<GroundConfig>{*config.ground,          file, "ground", root["ground"],
                                            KeyMark(root, "ground"), 0};
     }
     AppendEntries(config.classes, file, "classes", &doc_->classes);
@@ -106,7 +106,7 @@ void VehicleEntryConfig::Validate() const {
   engine::Require(!name.empty(), "name", "every vehicle needs a name");
   engine::Require(!preset.empty(), "preset", "every vehicle needs a preset");
   engine::Require(!overrides.IsDefined() || overrides.IsNull() || overrides.IsMap(), "overrides",
-          "expected a map of preset keys");
+                  "expected a map of preset keys");
 }
 
 SceneDocument ReadSceneDocument(const std::string& path) {

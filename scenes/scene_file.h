@@ -1,7 +1,8 @@
 #pragma once
 
-// Reading scene files: the top-level keys, `include` composition and where every entry came from, so
-// errors found later (a missing mesh, a vehicle inside a building) still name file:line:col and key path.
+// Reading scene files: the top-level keys, `include` composition and where every entry came from,
+// so errors found later (a missing mesh, a vehicle inside a building) still name file:line:col and
+// key path.
 
 #include <yaml-cpp/yaml.h>
 
@@ -18,8 +19,8 @@
 
 namespace airis::scenes {
 
-/// An entry of `vehicles`. `overrides` stays raw YAML until the preset is known: it is then read over the
-/// preset's MultirotorConfig (so only the keys given change).
+/// An entry of `vehicles`. `overrides` stays raw YAML until the preset is known: it is then read
+/// over the preset's MultirotorConfig (so only the keys given change).
 struct VehicleEntryConfig {
   std::string name;
   std::string preset;
@@ -33,7 +34,8 @@ struct VehicleEntryConfig {
     v.Field("preset", preset, "airframe preset: quad_x, quad_plus, hexa_x, octo_x or tilt_rotor");
     v.Field("start", start, "start pose");
     v.Field("overrides", overrides,
-            "airframe keys to change (MultirotorConfig, as in vehicles/presets/PRESET.yaml); a list replaces");
+            "airframe keys to change (MultirotorConfig, as in vehicles/presets/PRESET.yaml); a "
+            "list replaces");
     v.Field("sensors", sensors, "sensors with their configs and mounts");
   }
   void Validate() const;
@@ -52,7 +54,8 @@ struct SceneFileConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("include", include, "scene files composed into this one, relative to this file");
-    v.Field("scene", scene, "name, seed, origin, environment, lighting (this file's wins over includes)");
+    v.Field("scene", scene,
+            "name, seed, origin, environment, lighting (this file's wins over includes)");
     v.Field("ground", ground, "ground plane (this file's wins over includes)");
     v.Field("classes", classes, "semantic classes added to the built-in table");
     v.Field("objects", objects, "placed meshes and primitives");
@@ -63,7 +66,8 @@ struct SceneFileConfig {
 
 /// One file read while loading a scene.
 struct SourceFile {
-  std::string path;  ///< as used in messages (the user's path, or an include resolved against its parent)
+  std::string
+      path;  ///< as used in messages (the user's path, or an include resolved against its parent)
   YAML::Node root;
 };
 
@@ -72,13 +76,13 @@ template <class T>
 struct Sourced {
   T config;
   std::shared_ptr<const SourceFile> file;
-  std::string key_path;  ///< e.g. `objects[3]`
-  YAML::Node node;       ///< the entry's node in its file
-  YAML::Mark mark;       ///< the entry's position (its key, or the list element)
-  int index_in_file = 0; ///< position among the file's entries of that kind
+  std::string key_path;   ///< e.g. `objects[3]`
+  YAML::Node node;        ///< the entry's node in its file
+  YAML::Mark mark;        ///< the entry's position (its key, or the list element)
+  int index_in_file = 0;  ///< position among the file's entries of that kind
 
-  /// Location of `key` (a path below the entry such as `material.texture` or `sensors[1].name`): the
-  /// deepest part of it that is present, or the entry itself when `key` is empty or absent.
+  /// Location of `key` (a path below the entry such as `material.texture` or `sensors[1].name`):
+  /// the deepest part of it that is present, or the entry itself when `key` is empty or absent.
   engine::SourceLocation Where(const std::string& key = "") const {
     YAML::Mark at = mark;
     YAML::Node current;
@@ -146,15 +150,15 @@ struct SceneDocument {
   std::vector<Sourced<VehicleEntryConfig>> vehicles;
 };
 
-/// Reads `path` and its includes. Throws ConfigError for any mistake, an unreadable file or an include
-/// cycle (naming the chain).
+/// Reads `path` and its includes. Throws ConfigError for any mistake, an unreadable file or an
+/// include cycle (naming the chain).
 SceneDocument ReadSceneDocument(const std::string& path);
 
 /// Reads scene text (tests); `path` names it in messages and anchors relative paths.
 SceneDocument ReadSceneDocumentFromString(const std::string& text, const std::string& path);
 
-/// `relative` resolved against the directory of `base_file` (absolute paths unchanged), lexically normal.
+/// `relative` resolved against the directory of `base_file` (absolute paths unchanged), lexically
+/// normal.
 std::string ResolveRelative(const std::string& base_file, const std::string& relative);
 
 }  // namespace airis::scenes
-

@@ -1,5 +1,5 @@
-// LoadScene: a SceneDocument (scene_file.h) turned into a Scene (scene.h): classes, ground, objects,
-// meshes through assimp, generators, vehicles, then the whole-scene checks.
+// LoadScene: a SceneDocument (scene_file.h) turned into a Scene (scene.h): classes, ground,
+// objects, meshes through assimp, generators, vehicles, then the whole-scene checks.
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -60,7 +60,8 @@ class SceneAssembler {
     const engine::RandomStreams streams(s.seed);
     for (const auto& g : doc_.generators) s.generated.push_back(Generate(g, streams));
     CheckObjects();
-    for (const auto& v : doc_.vehicles) s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
+    for (const auto& v : doc_.vehicles)
+      s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
     s.static_scene = builder_.Finish();
     return s;
   }
@@ -72,19 +73,22 @@ class SceneAssembler {
     if (builder_.DefineClass(c.config.name, c.config.id, c.config.color ? &color : nullptr)) return;
     for (const auto& known : builder_.scene().classes) {
       if (known.id == c.config.id) {
-        c.Fail("id", "id " + std::to_string(c.config.id) + " is already class '" + known.name + "'");
+        c.Fail("id",
+               "id " + std::to_string(c.config.id) + " is already class '" + known.name + "'");
       }
     }
     c.Fail("name", "no free class id left (255 classes at most)");
   }
 
-  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings, double latitude_rad) const {
+  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings,
+                                     double latitude_rad) const {
     const LightingConfig& c = settings.lighting;
     engine::SceneLighting out;
     double azimuth = DegToRad(c.sun_azimuth_deg);
     double elevation = DegToRad(c.sun_elevation_deg);
     if (c.time_of_day_h) {
-      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h, &azimuth, &elevation);
+      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h, &azimuth,
+                  &elevation);
     }
     out.sun_direction_W = SunDirectionFromAngles(azimuth, elevation);
     out.sun_color_rgb = c.sun_color.cast<float>();
@@ -97,19 +101,22 @@ class SceneAssembler {
 
   /// Id of class `name` named by `key` of `entry`, or a ConfigError listing the known classes.
   template <class T>
-  std::uint8_t ClassOf(const Sourced<T>& entry, const std::string& key, const std::string& name) const {
+  std::uint8_t ClassOf(const Sourced<T>& entry, const std::string& key,
+                       const std::string& name) const {
     const std::uint8_t id = builder_.ClassId(name);
     if (id != engine::kNoClass) return id;
     const std::vector<std::string> names = builder_.ClassNames();
     std::string problem = "unknown class '" + name + "'";
-    if (const auto close = engine::ClosestMatch(name, names)) problem += " (did you mean '" + *close + "'?)";
+    if (const auto close = engine::ClosestMatch(name, names))
+      problem += " (did you mean '" + *close + "'?)";
     problem += "; known classes: " + JoinNames(names) + "; add new ones under `classes:`";
     entry.Fail(key, problem);
   }
 
   /// Absolute path of a texture named by `key`, or a ConfigError with the resolved path.
   template <class T>
-  std::string TexturePath(const Sourced<T>& entry, const std::string& key, const std::string& texture) const {
+  std::string TexturePath(const Sourced<T>& entry, const std::string& key,
+                          const std::string& texture) const {
     if (texture.empty()) return "";
     const std::string resolved = ResolveRelative(entry.file->path, texture);
     if (!fs::is_regular_file(resolved)) entry.Fail(key, "texture file not found: " + resolved);
@@ -135,8 +142,8 @@ class SceneAssembler {
     std::vector<std::uint32_t> materials;
     for (const auto& m : file.materials) materials.push_back(builder_.Material(m));
     for (auto& part : file.parts) {
-      model.parts.push_back({builder_.AddMesh(std::move(file.meshes[part.mesh])), materials[part.material],
-                             Eigen::Affine3f::Identity()});
+      model.parts.push_back({builder_.AddMesh(std::move(file.meshes[part.mesh])),
+                             materials[part.material], Eigen::Affine3f::Identity()});
     }
     const std::uint32_t index = builder_.AddModel(std::move(model));
     mesh_models_.emplace(cache_key, index);
@@ -146,9 +153,12 @@ class SceneAssembler {
   void AddGround(const GroundConfig& g) {
     static const Sourced<GroundConfig> kDefault;
     const Sourced<GroundConfig>& entry = doc_.ground ? *doc_.ground : kDefault;
-    const std::uint8_t cls = doc_.ground ? ClassOf(entry, "class", g.class_name) : builder_.ClassId(g.class_name);
-    const std::string texture = doc_.ground ? TexturePath(entry, "material.texture", g.material.texture) : "";
-    const auto material = static_cast<std::int32_t>(builder_.Material(ToMaterial(g.material, texture)));
+    const std::uint8_t cls =
+        doc_.ground ? ClassOf(entry, "class", g.class_name) : builder_.ClassId(g.class_name);
+    const std::string texture =
+        doc_.ground ? TexturePath(entry, "material.texture", g.material.texture) : "";
+    const auto material =
+        static_cast<std::int32_t>(builder_.Material(ToMaterial(g.material, texture)));
     builder_.AddObject(builder_.PrimitiveModel(engine::Primitive::kPlane),
                        MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
                        engine::CollisionShape::kAuto, "ground", material);
@@ -169,8 +179,8 @@ class SceneAssembler {
     }
     std::int32_t material = -1;
     if (c.material) {
-      material = static_cast<std::int32_t>(
-          builder_.Material(ToMaterial(*c.material, TexturePath(entry, "material.texture", c.material->texture))));
+      material = static_cast<std::int32_t>(builder_.Material(
+          ToMaterial(*c.material, TexturePath(entry, "material.texture", c.material->texture))));
     }
     const RepeatConfig& r = c.repeat;
     builder_.ReserveObjects(static_cast<std::size_t>(r.count) * r.rows);
@@ -180,7 +190,8 @@ class SceneAssembler {
         std::string name = base;
         if (r.rows > 1) name += "_" + std::to_string(row);
         if (r.count > 1 || r.rows > 1) name += "_" + std::to_string(i);
-        const Eigen::Affine3d T = MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg), DegToRad(c.roll_deg), c.scale);
+        const Eigen::Affine3d T =
+            MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg), DegToRad(c.roll_deg), c.scale);
         if (!builder_.AddObject(model, T, cls, c.collision, std::move(name), material)) {
           entry.Fail("repeat", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
                                    " objects (instance ids are 16-bit)");
@@ -189,14 +200,15 @@ class SceneAssembler {
     }
   }
 
-  GeneratedSummary Generate(const Sourced<GeneratorConfig>& entry, const engine::RandomStreams& streams) {
+  GeneratedSummary Generate(const Sourced<GeneratorConfig>& entry,
+                            const engine::RandomStreams& streams) {
     const GeneratorConfig& g = entry.config;
     GeneratedSummary summary;
     summary.kind = g.city ? "city" : "forest";
     const std::string& given = g.city ? g.city->name : g.forest->name;
     summary.name = !given.empty() ? given
-                                  : fs::path(entry.file->path).stem().string() + "/" + summary.kind +
-                                        std::to_string(entry.index_in_file);
+                                  : fs::path(entry.file->path).stem().string() + "/" +
+                                        summary.kind + std::to_string(entry.index_in_file);
     engine::RandomStream stream = streams.Stream("generators/" + summary.name);
     GeneratorReport report;
     if (g.city) {
@@ -207,7 +219,8 @@ class SceneAssembler {
       r.sidewalk_class = ClassOf(entry, "city.sidewalk_class", c.sidewalk_class);
       r.lamp_class = ClassOf(entry, "city.lamp_class", c.lamp_class);
       r.car_class = ClassOf(entry, "city.car_class", c.car_class);
-      if (!c.car_mesh.empty()) r.car_model = MeshModel(entry, "city.car_mesh", c.car_mesh, c.car_mesh_axes);
+      if (!c.car_mesh.empty())
+        r.car_model = MeshModel(entry, "city.car_mesh", c.car_mesh, c.car_mesh_axes);
       report = GenerateCity(c, r, summary.name, stream, builder_);
     } else {
       const ForestConfig& f = *g.forest;
@@ -227,8 +240,8 @@ class SceneAssembler {
     return summary;
   }
 
-  /// Every object's pose must be finite with a non-degenerate scale (inputs are checked, but products of
-  /// large values can still overflow).
+  /// Every object's pose must be finite with a non-degenerate scale (inputs are checked, but
+  /// products of large values can still overflow).
   void CheckObjects() const {
     const auto& objects = builder_.scene().objects;
     for (const auto& o : objects) {
@@ -241,12 +254,14 @@ class SceneAssembler {
   }
 
   VehicleDescription AddVehicle(const Sourced<VehicleEntryConfig>& entry,
-                                const std::vector<VehicleDescription>& earlier, bool has_ground) const {
+                                const std::vector<VehicleDescription>& earlier,
+                                bool has_ground) const {
     const VehicleEntryConfig& c = entry.config;
     for (const auto& other : earlier) {
       if (other.name == c.name) {
-        entry.Fail("name", "duplicate vehicle name '" + c.name + "' (also " + other.key_path + " at " +
-                               other.where.file + ":" + std::to_string(other.where.line) + ")");
+        entry.Fail("name", "duplicate vehicle name '" + c.name + "' (also " + other.key_path +
+                               " at " + other.where.file + ":" + std::to_string(other.where.line) +
+                               ")");
       }
     }
     VehicleDescription v;
@@ -261,26 +276,29 @@ class SceneAssembler {
       SensorDescription sensor = DescribeSensor(c.sensors[i]);
       for (const auto& other : v.sensors) {
         if (other.name == sensor.name) {
-          entry.Fail("sensors[" + std::to_string(i) + "]",
-                     "duplicate sensor name '" + sensor.name + "' on vehicle '" + c.name + "' (name one with `name:`)");
+          entry.Fail("sensors[" + std::to_string(i) + "]", "duplicate sensor name '" + sensor.name +
+                                                               "' on vehicle '" + c.name +
+                                                               "' (name one with `name:`)");
         }
       }
       v.sensors.push_back(std::move(sensor));
     }
     if (has_ground && v.p_W.z() > 0.0) {
       entry.Fail("start.position_m", "vehicle '" + c.name + "' starts below the ground (z = " +
-                                         engine::FormatNumber(v.p_W.z()) + " m; NED z is down, so heights are negative)");
+                                         engine::FormatNumber(v.p_W.z()) +
+                                         " m; NED z is down, so heights are negative)");
     }
     const engine::StaticScene& scene = builder_.scene();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       const engine::StaticObject& o = scene.objects[i];
-      if (o.collision == engine::CollisionShape::kNone || o.instance_id == ground_instance_) continue;
+      if (o.collision == engine::CollisionShape::kNone || o.instance_id == ground_instance_)
+        continue;
       const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.p_W).cast<float>();
       if (!scene.models[o.model].bounds.contains(p_O)) continue;
       const engine::SemanticClass* cls = scene.FindClass(o.class_id);
-      entry.Fail("start.position_m", "vehicle '" + c.name + "' starts inside object '" + o.name + "' (class " +
-                                         (cls ? cls->name : "?") + ", instance " + std::to_string(o.instance_id) +
-                                         ")");
+      entry.Fail("start.position_m", "vehicle '" + c.name + "' starts inside object '" + o.name +
+                                         "' (class " + (cls ? cls->name : "?") + ", instance " +
+                                         std::to_string(o.instance_id) + ")");
     }
     return v;
   }
@@ -293,12 +311,14 @@ class SceneAssembler {
       std::vector<std::string> names;
       for (const auto& n : EnumNames(vehicles::AirframePreset{})) names.emplace_back(n.name);
       std::string problem = "unknown preset '" + c.preset + "'";
-      if (const auto close = engine::ClosestMatch(c.preset, names)) problem += " (did you mean '" + *close + "'?)";
+      if (const auto close = engine::ClosestMatch(c.preset, names))
+        problem += " (did you mean '" + *close + "'?)";
       entry.Fail("preset", problem + "; presets: " + JoinNames(names));
     }
     vehicles::MultirotorConfig airframe = vehicles::MakeAirframe(*preset);
     if (c.overrides.IsDefined() && !c.overrides.IsNull()) {
-      YamlReader(entry.file->path).ReadStruct(c.overrides, entry.MarkOf("overrides"), entry.PathOf("overrides"), airframe);
+      YamlReader(entry.file->path)
+          .ReadStruct(c.overrides, entry.MarkOf("overrides"), entry.PathOf("overrides"), airframe);
     }
     return airframe;
   }
@@ -320,7 +340,8 @@ Vec3 SunDirectionFromAngles(double azimuth_rad, double elevation_rad) {
 void SolarAngles(double latitude_rad, double decimal_year, double hours, double* azimuth_rad,
                  double* elevation_rad) {
   const double day = 1.0 + (decimal_year - std::floor(decimal_year)) * 365.0;
-  const double declination = DegToRad(23.45) * std::sin(2.0 * std::numbers::pi * (284.0 + day) / 365.0);
+  const double declination =
+      DegToRad(23.45) * std::sin(2.0 * std::numbers::pi * (284.0 + day) / 365.0);
   const double hour_angle = DegToRad(15.0 * (hours - 12.0));
   // Unit vector toward the sun in local north, east, up.
   const double north = std::sin(declination) * std::cos(latitude_rad) -
@@ -332,7 +353,9 @@ void SolarAngles(double latitude_rad, double decimal_year, double hours, double*
   *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
 }
 
-Scene LoadScene(const std::string& path) { return SceneAssembler(ReadSceneDocument(path)).Assemble(); }
+Scene LoadScene(const std::string& path) {
+  return SceneAssembler(ReadSceneDocument(path)).Assemble();
+}
 
 Scene LoadSceneFromString(const std::string& text, const std::string& path) {
   return SceneAssembler(ReadSceneDocumentFromString(text, path)).Assemble();

@@ -22,8 +22,8 @@ std::size_t EstimateMemoryBytes(const engine::StaticScene& s) {
   std::size_t bytes = VectorBytes(s.meshes) + VectorBytes(s.materials) + VectorBytes(s.models) +
                       VectorBytes(s.objects) + VectorBytes(s.classes);
   for (const auto& m : s.meshes) {
-    bytes += VectorBytes(m.positions) + VectorBytes(m.normals) + VectorBytes(m.uvs) + VectorBytes(m.indices) +
-             StringBytes(m.name);
+    bytes += VectorBytes(m.positions) + VectorBytes(m.normals) + VectorBytes(m.uvs) +
+             VectorBytes(m.indices) + StringBytes(m.name);
   }
   for (const auto& m : s.materials) bytes += StringBytes(m.name) + StringBytes(m.texture_path);
   for (const auto& m : s.models) bytes += VectorBytes(m.parts) + StringBytes(m.name);

@@ -24,8 +24,8 @@ std::string FieldTableMarkdown(std::span<const FieldDoc> fields, const std::stri
   std::string out = "| key | type | default | meaning |\n|---|---|---|---|\n";
   for (const FieldDoc& f : fields) {
     out += "| `" + Cell(prefix + f.key) + "` | " + Cell(f.type) + " | " +
-           (f.default_value.empty() ? "" : "`" + Cell(f.default_value) + "`") + " | " + Cell(f.doc) +
-           " |\n";
+           (f.default_value.empty() ? "" : "`" + Cell(f.default_value) + "`") + " | " +
+           Cell(f.doc) + " |\n";
   }
   return out;
 }

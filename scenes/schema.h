@@ -1,7 +1,8 @@
 #pragma once
 
-// Documentation of config structs generated from their Visit (engine/core/config.h): every key with its
-// type, default and doc string. docs/scene-format.md's tables are this output, checked by a test.
+// Documentation of config structs generated from their Visit (engine/core/config.h): every key with
+// its type, default and doc string. docs/scene-format.md's tables are this output, checked by a
+// test.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -17,8 +18,9 @@ namespace airis::scenes {
 
 /// One documented key of a config struct.
 struct FieldDoc {
-  std::string key;            ///< dotted path below the struct, lists as `objects[].name`
-  std::string type;           ///< "number", "integer", "bool", "string", "one of a, b or c", "[x, y, z]", ...
+  std::string key;  ///< dotted path below the struct, lists as `objects[].name`
+  std::string
+      type;  ///< "number", "integer", "bool", "string", "one of a, b or c", "[x, y, z]", ...
   std::string default_value;  ///< the struct's default, as it would be written in YAML
   std::string doc;            ///< the doc string given to Field(), with its unit
 };
@@ -43,7 +45,9 @@ struct Probe {
   void Field(const char*, T&, const char*) {}
 };
 template <class T>
-concept HasVisit = requires(T& t, Probe& p) { t.Visit(p); };
+concept HasVisit = requires(T& t, Probe& p) {
+  t.Visit(p);
+};
 
 }  // namespace schema_detail
 
@@ -101,7 +105,8 @@ std::string SchemaDefault(const T& value) {
       return "(" + std::to_string(value.size()) + " entries)";
     } else {
       std::string out = "[";
-      for (std::size_t i = 0; i < value.size(); ++i) out += (i > 0 ? ", " : "") + SchemaDefault(value[i]);
+      for (std::size_t i = 0; i < value.size(); ++i)
+        out += (i > 0 ? ", " : "") + SchemaDefault(value[i]);
       return out + "]";
     }
   } else if constexpr (IsOptional<T>::value) {

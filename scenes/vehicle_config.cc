@@ -4,16 +4,18 @@ namespace airis::scenes {
 
 namespace {
 
-const char* const kKindNames[] = {"imu", "barometer", "magnetometer", "gps", "rangefinder", "lidar"};
+const char* const kKindNames[] = {"imu", "barometer",   "magnetometer",
+                                  "gps", "rangefinder", "lidar"};
 
 }  // namespace
 
 void SensorEntryConfig::Validate() const {
-  const int kinds = imu.has_value() + barometer.has_value() + magnetometer.has_value() + gps.has_value() +
-                    rangefinder.has_value() + lidar.has_value();
-  engine::Require(kinds == 1, kinds == 0 ? "imu" : "name",
-                  kinds == 0 ? "expected one sensor: imu, barometer, magnetometer, gps, rangefinder or lidar"
-                             : "give one sensor per entry");
+  const int kinds = imu.has_value() + barometer.has_value() + magnetometer.has_value() +
+                    gps.has_value() + rangefinder.has_value() + lidar.has_value();
+  engine::Require(
+      kinds == 1, kinds == 0 ? "imu" : "name",
+      kinds == 0 ? "expected one sensor: imu, barometer, magnetometer, gps, rangefinder or lidar"
+                 : "give one sensor per entry");
 }
 
 std::string SensorKindName(const SensorConfig& config) { return kKindNames[config.index()]; }

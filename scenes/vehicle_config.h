@@ -1,8 +1,8 @@
 #pragma once
 
 // The `vehicles` block's entries: an airframe preset with overrides, a start pose and sensors. The
-// airframe and sensor keys are the owners' config structs (vehicles/multirotor, sensors/), read through
-// their Visit.
+// airframe and sensor keys are the owners' config structs (vehicles/multirotor, sensors/), read
+// through their Visit.
 
 #include <optional>
 #include <string>
@@ -19,8 +19,8 @@
 
 namespace airis::scenes {
 
-/// An entry of a vehicle's `sensors`: exactly one sensor kind with its config, and a name unique on the
-/// vehicle (default: the kind).
+/// An entry of a vehicle's `sensors`: exactly one sensor kind with its config, and a name unique on
+/// the vehicle (default: the kind).
 struct SensorEntryConfig {
   std::string name;
   std::optional<sensors::ImuConfig> imu;
@@ -45,8 +45,9 @@ struct SensorEntryConfig {
 };
 
 /// A sensor's config, by kind.
-using SensorConfig = std::variant<sensors::ImuConfig, sensors::BarometerConfig, sensors::MagnetometerConfig,
-                                  sensors::GpsConfig, sensors::RangefinderConfig, sensors::LidarConfig>;
+using SensorConfig =
+    std::variant<sensors::ImuConfig, sensors::BarometerConfig, sensors::MagnetometerConfig,
+                 sensors::GpsConfig, sensors::RangefinderConfig, sensors::LidarConfig>;
 
 /// The file spelling of the kind held by `config` ("imu", "barometer", ...).
 std::string SensorKindName(const SensorConfig& config);

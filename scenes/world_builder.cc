@@ -15,7 +15,8 @@ namespace airis::scenes {
 namespace {
 
 /// The engine Sensor for `description`, with its own random stream.
-std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d, engine::RandomStream stream) {
+std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d,
+                                           engine::RandomStream stream) {
   return std::visit(
       [&](const auto& config) -> std::unique_ptr<engine::Sensor> {
         using T = std::decay_t<decltype(config)>;
@@ -38,10 +39,12 @@ std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d, engine::R
 
 }  // namespace
 
-std::unique_ptr<engine::World> BuildWorld(const Scene& scene, const engine::PhysicsConfig& physics) {
+std::unique_ptr<engine::World> BuildWorld(const Scene& scene,
+                                          const engine::PhysicsConfig& physics) {
   const engine::RandomStreams streams(scene.seed);
   auto static_scene = std::make_shared<const engine::StaticScene>(scene.static_scene);
-  engine::Environment environment(scene.environment, scene.origin, streams.Stream("environment/wind"));
+  engine::Environment environment(scene.environment, scene.origin,
+                                  streams.Stream("environment/wind"));
   auto world = std::make_unique<engine::World>(static_scene, std::move(environment), physics);
   world->set_ray_caster(std::make_unique<engine::EmbreeRayCaster>(*static_scene));
   for (const VehicleDescription& v : scene.vehicles) {

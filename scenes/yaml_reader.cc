@@ -45,7 +45,8 @@ const std::string& YamlReader::RequireScalar(const YAML::Node& node, const YAML:
 
 void YamlReader::RequireSequence(const YAML::Node& node, const YAML::Mark& mark,
                                  const std::string& key_path, const std::string& what) const {
-  if (!node.IsSequence()) Fail(mark, key_path, "expected " + what + " (got " + Describe(node) + ")");
+  if (!node.IsSequence())
+    Fail(mark, key_path, "expected " + what + " (got " + Describe(node) + ")");
 }
 
 double YamlReader::ParseDouble(const YAML::Node& node, const YAML::Mark& mark,
@@ -77,8 +78,8 @@ std::int64_t YamlReader::ParseInteger(const YAML::Node& node, const YAML::Mark& 
   if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
   std::int64_t value = 0;
   const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  const std::string range = " (got " + text + "; expected " + std::to_string(lo) + " to " +
-                            std::to_string(hi) + ")";
+  const std::string range =
+      " (got " + text + "; expected " + std::to_string(lo) + " to " + std::to_string(hi) + ")";
   if (result.ec == std::errc::result_out_of_range) Fail(mark, key_path, "out of range" + range);
   if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
     Fail(mark, key_path, "expected an integer (got '" + text + "')");
@@ -111,15 +112,16 @@ bool YamlReader::ParseBool(const YAML::Node& node, const YAML::Mark& mark,
   Fail(mark, key_path, "expected true or false (got '" + text + "')");
 }
 
-void YamlReader::FailEnum(const YAML::Mark& mark, const std::string& key_path, const std::string& text,
-                          const std::vector<std::string>& choices) const {
+void YamlReader::FailEnum(const YAML::Mark& mark, const std::string& key_path,
+                          const std::string& text, const std::vector<std::string>& choices) const {
   std::string list;
   for (std::size_t i = 0; i < choices.size(); ++i) {
     if (i > 0) list += (i + 1 == choices.size()) ? " or " : ", ";
     list += choices[i];
   }
   std::string problem = "unknown value '" + text + "' (expected " + list;
-  if (const auto close = engine::ClosestMatch(text, choices)) problem += "; did you mean '" + *close + "'?";
+  if (const auto close = engine::ClosestMatch(text, choices))
+    problem += "; did you mean '" + *close + "'?";
   Fail(mark, key_path, problem + ")");
 }
 
@@ -140,7 +142,8 @@ void YamlReader::RejectUnknownKeys(const YAML::Node& node, const std::string& ke
   std::vector<std::string> seen;
   for (const auto& entry : node) {
     const YAML::Node& key = entry.first;
-    if (!key.IsScalar()) Fail(key.Mark(), key_path, "a key must be a plain name (got " + Describe(key) + ")");
+    if (!key.IsScalar())
+      Fail(key.Mark(), key_path, "a key must be a plain name (got " + Describe(key) + ")");
     const std::string& name = key.Scalar();
     const std::string path = yaml_detail::JoinKey(key_path, name);
     for (const auto& s : seen) {
@@ -163,9 +166,11 @@ void YamlReader::RejectUnknownKeys(const YAML::Node& node, const std::string& ke
 }
 
 void YamlReader::FailInvalidField(const YAML::Node& node, const YAML::Mark& mark,
-                                  const std::string& key_path, const engine::InvalidField& e) const {
-  // Walk the field's relative path ("mount.roll_deg", "species[2].height_m") through the node to point
-  // at the deepest key that exists; an absent key means the default was invalid, reported at the struct.
+                                  const std::string& key_path,
+                                  const engine::InvalidField& e) const {
+  // Walk the field's relative path ("mount.roll_deg", "species[2].height_m") through the node to
+  // point at the deepest key that exists; an absent key means the default was invalid, reported at
+  // the struct.
   YAML::Node current;
   current.reset(node);
   YAML::Mark where = mark;
@@ -187,7 +192,8 @@ void YamlReader::FailInvalidField(const YAML::Node& node, const YAML::Mark& mark
       continue;
     }
     const std::size_t end = field.find_first_of(".[", pos);
-    const std::string name = field.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+    const std::string name =
+        field.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
     YAML::Node value;
     YAML::Mark key_mark;
     if (!current.IsMap() || !FindKey(current, name, &value, &key_mark)) break;
@@ -196,7 +202,8 @@ void YamlReader::FailInvalidField(const YAML::Node& node, const YAML::Mark& mark
     pos = end == std::string::npos ? field.size() : end;
   }
   std::string path = key_path;
-  if (!field.empty()) path = (path.empty() || field.front() == '[') ? path + field : path + "." + field;
+  if (!field.empty())
+    path = (path.empty() || field.front() == '[') ? path + field : path + "." + field;
   Fail(where, path, e.problem());
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 
-// Generic YAML reader for every `*Config` struct with a `Visit(V&)` (engine/core/config.h). One list of fields
-// drives reading, validation messages and documentation (schema.h). yaml-cpp appears only in scenes/.
+// Generic YAML reader for every `*Config` struct with a `Visit(V&)` (engine/core/config.h). One
+// list of fields drives reading, validation messages and documentation (schema.h). yaml-cpp appears
+// only in scenes/.
 //
 // Errors are ConfigError with 1-based `file:line:col` and the full key path:
 //   scenes/forest.yaml:42:7: vehicles[0].barometer.rate_hz: must be > 0 (got -5)
-// Positions: an unknown key or a field that fails Validate() points at its key; a value of the wrong type or
-// out of range points at the key too (the value is on the same line), a list element at the element.
+// Positions: an unknown key or a field that fails Validate() points at its key; a value of the
+// wrong type or out of range points at the key too (the value is on the same line), a list element
+// at the element.
 
 #include <yaml-cpp/yaml.h>
 
@@ -40,7 +42,8 @@ struct IsStdOptional<std::optional<T>> : std::true_type {};
 template <class T>
 struct IsFixedEigenVector : std::false_type {};
 template <class S, int N, int Options, int MaxRows, int MaxCols>
-struct IsFixedEigenVector<Eigen::Matrix<S, N, 1, Options, MaxRows, MaxCols>> : std::bool_constant<(N > 0)> {};
+struct IsFixedEigenVector<Eigen::Matrix<S, N, 1, Options, MaxRows, MaxCols>>
+    : std::bool_constant<(N > 0)> {};
 
 /// A visitor that does nothing, used only to detect whether a type has `Visit`.
 struct NullVisitor {
@@ -49,10 +52,14 @@ struct NullVisitor {
 };
 
 template <class T>
-concept HasVisit = requires(T& t, NullVisitor& v) { t.Visit(v); };
+concept HasVisit = requires(T& t, NullVisitor& v) {
+  t.Visit(v);
+};
 
 template <class T>
-concept HasValidate = requires(const T& t) { t.Validate(); };
+concept HasValidate = requires(const T& t) {
+  t.Validate();
+};
 
 /// "a.b" from "a" and "b"; "b" when the prefix is empty.
 inline std::string JoinKey(const std::string& prefix, const std::string& key) {
@@ -61,9 +68,9 @@ inline std::string JoinKey(const std::string& prefix, const std::string& key) {
 
 }  // namespace yaml_detail
 
-/// Reads config structs and values from YAML nodes of one file, reporting every mistake as a ConfigError
-/// that names the file, the 1-based line and column, and the key path. Missing keys keep the struct's
-/// defaults; unknown keys are errors with the closest valid key suggested.
+/// Reads config structs and values from YAML nodes of one file, reporting every mistake as a
+/// ConfigError that names the file, the 1-based line and column, and the key path. Missing keys
+/// keep the struct's defaults; unknown keys are errors with the closest valid key suggested.
 class YamlReader {
  public:
   /// @param file the file name printed in messages (as the user wrote it, or resolved).
@@ -79,7 +86,8 @@ class YamlReader {
                          const std::string& problem) const;
 
   /// Reads `out` (a struct with Visit, a number, bool, string, enum, Eigen vector, std::vector or
-  /// std::optional of those) from `node`, which is the value found at `key_path`. Throws ConfigError.
+  /// std::optional of those) from `node`, which is the value found at `key_path`. Throws
+  /// ConfigError.
   template <class T>
   void Read(const YAML::Node& node, const std::string& key_path, T& out) const {
     ReadValue(node, node.Mark(), key_path, out);
@@ -93,8 +101,8 @@ class YamlReader {
   /// Reads the map `node` into the struct `out` through its Visit, rejects unknown keys and runs
   /// Validate(). `ignored_keys` are accepted without being read (the caller handles them).
   template <class T>
-  void ReadStruct(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path, T& out,
-                  const std::vector<std::string>& ignored_keys = {}) const;
+  void ReadStruct(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path,
+                  T& out, const std::vector<std::string>& ignored_keys = {}) const;
 
   /// Calls out.Validate() and turns an InvalidField into a ConfigError located at the offending key
   /// inside `node` (or at `mark` when the key is absent, i.e. an invalid default).
@@ -114,10 +122,11 @@ class YamlReader {
   static std::string Describe(const YAML::Node& node);
 
   /// Parses a finite double from a scalar, or throws ConfigError.
-  double ParseDouble(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path) const;
+  double ParseDouble(const YAML::Node& node, const YAML::Mark& mark,
+                     const std::string& key_path) const;
   /// Parses an integer in [lo, hi] from a scalar, or throws ConfigError.
-  std::int64_t ParseInteger(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path,
-                            std::int64_t lo, std::int64_t hi) const;
+  std::int64_t ParseInteger(const YAML::Node& node, const YAML::Mark& mark,
+                            const std::string& key_path, std::int64_t lo, std::int64_t hi) const;
   /// Parses an unsigned 64-bit integer from a scalar (seeds), or throws ConfigError.
   std::uint64_t ParseUnsigned64(const YAML::Node& node, const YAML::Mark& mark,
                                 const std::string& key_path) const;
@@ -130,7 +139,8 @@ class YamlReader {
   void RequireSequence(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path,
                        const std::string& what) const;
   /// Throws ConfigError for an enum spelling that is not one of `choices` (with a suggestion).
-  [[noreturn]] void FailEnum(const YAML::Mark& mark, const std::string& key_path, const std::string& text,
+  [[noreturn]] void FailEnum(const YAML::Mark& mark, const std::string& key_path,
+                             const std::string& text,
                              const std::vector<std::string>& choices) const;
 
  private:
@@ -138,11 +148,13 @@ class YamlReader {
   class FieldReader;
 
   [[noreturn]] void FailInvalidField(const YAML::Node& node, const YAML::Mark& mark,
-                                     const std::string& key_path, const engine::InvalidField& e) const;
+                                     const std::string& key_path,
+                                     const engine::InvalidField& e) const;
   void RejectUnknownKeys(const YAML::Node& node, const std::string& key_path,
                          const std::vector<std::string>& known) const;
   /// Index of `key` in map `node` and its key mark, or false.
-  static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value, YAML::Mark* mark);
+  static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
+                      YAML::Mark* mark);
 
   std::string file_;
 };
@@ -172,8 +184,9 @@ class YamlReader::FieldReader {
 };
 
 template <class T>
-void YamlReader::ReadStruct(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path,
-                            T& out, const std::vector<std::string>& ignored_keys) const {
+void YamlReader::ReadStruct(const YAML::Node& node, const YAML::Mark& mark,
+                            const std::string& key_path, T& out,
+                            const std::vector<std::string>& ignored_keys) const {
   // `key:` with nothing after it means "all defaults".
   if (!node.IsNull()) {
     if (!node.IsMap()) Fail(mark, key_path, "expected a map of keys (got " + Describe(node) + ")");
@@ -187,8 +200,8 @@ void YamlReader::ReadStruct(const YAML::Node& node, const YAML::Mark& mark, cons
 }
 
 template <class T>
-void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path,
-                           T& out) const {
+void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark,
+                           const std::string& key_path, T& out) const {
   using yaml_detail::IsFixedEigenVector;
   using yaml_detail::IsStdOptional;
   using yaml_detail::IsStdVector;

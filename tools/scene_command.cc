@@ -1,4 +1,5 @@
-// `airis scene check|stats|schema`: validate a scene file, summarise it, print the format's key tables.
+// `airis scene check|stats|schema`: validate a scene file, summarise it, print the format's key
+// tables.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -29,7 +30,8 @@ Loaded Load(const std::string& file) {
   // Wall time here is a report to the user, never an input to the simulation.
   const auto start = std::chrono::steady_clock::now();
   Loaded out{scenes::LoadScene(file), 0.0};
-  out.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 
@@ -56,22 +58,25 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
     if (g.kind == "forest") std::printf(", %zu trees, %zu bushes", g.trees, g.bushes);
     std::printf("\n");
   }
-  std::printf("geometry    %zu meshes (%zu triangles stored), %zu models, %zu materials, %zu triangles drawn\n",
-              stats.meshes, stats.stored_triangles, stats.models, stats.materials, stats.drawn_triangles);
+  std::printf(
+      "geometry    %zu meshes (%zu triangles stored), %zu models, %zu materials, %zu triangles "
+      "drawn\n",
+      stats.meshes, stats.stored_triangles, stats.models, stats.materials, stats.drawn_triangles);
   for (const auto& v : s.vehicles) {
     std::string sensors;
     for (const auto& sensor : v.sensors) sensors += (sensors.empty() ? "" : ", ") + sensor.name;
-    std::printf("vehicle     %s (preset %s, %.3g kg) at [%g, %g, %g] m, yaw %g deg; sensors: %s\n", v.name.c_str(),
-                v.preset.c_str(), v.airframe.mass_kg, v.p_W.x(), v.p_W.y(), v.p_W.z(), engine::RadToDeg(v.yaw_rad),
-                sensors.empty() ? "none" : sensors.c_str());
+    std::printf("vehicle     %s (preset %s, %.3g kg) at [%g, %g, %g] m, yaw %g deg; sensors: %s\n",
+                v.name.c_str(), v.preset.c_str(), v.airframe.mass_kg, v.p_W.x(), v.p_W.y(),
+                v.p_W.z(), engine::RadToDeg(v.yaw_rad), sensors.empty() ? "none" : sensors.c_str());
   }
   if (!stats.bounds_W.isEmpty()) {
     const auto& lo = stats.bounds_W.min();
     const auto& hi = stats.bounds_W.max();
-    std::printf("bounds      [%.1f, %.1f, %.1f] to [%.1f, %.1f, %.1f] m (NED)\n", lo.x(), lo.y(), lo.z(), hi.x(),
-                hi.y(), hi.z());
+    std::printf("bounds      [%.1f, %.1f, %.1f] to [%.1f, %.1f, %.1f] m (NED)\n", lo.x(), lo.y(),
+                lo.z(), hi.x(), hi.y(), hi.z());
   }
-  std::printf("memory      %.2f MiB (static scene)\n", static_cast<double>(stats.memory_bytes) / (1024.0 * 1024.0));
+  std::printf("memory      %.2f MiB (static scene)\n",
+              static_cast<double>(stats.memory_bytes) / (1024.0 * 1024.0));
   std::printf("load time   %.1f ms\n", loaded.load_ms);
 }
 
@@ -131,17 +136,23 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   cmd->require_subcommand(1);
   auto options = std::make_shared<SceneOptions>();
 
-  CLI::App* check = cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
+  CLI::App* check =
+      cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
-  check->callback([options, &exit_code] { exit_code = RunReportingErrors([&] { return RunCheck(*options); }); });
+  check->callback([options, &exit_code] {
+    exit_code = RunReportingErrors([&] { return RunCheck(*options); });
+  });
 
   CLI::App* stats = cmd->add_subcommand(
       "stats", "Objects per class, triangles, meshes, instances, bounds, memory and load time");
   stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
   stats->add_flag("--json", options->json, "print one JSON object instead of text");
-  stats->callback([options, &exit_code] { exit_code = RunReportingErrors([&] { return RunStats(*options); }); });
+  stats->callback([options, &exit_code] {
+    exit_code = RunReportingErrors([&] { return RunStats(*options); });
+  });
 
-  CLI::App* schema = cmd->add_subcommand("schema", "Print every key of the scene format as Markdown tables");
+  CLI::App* schema =
+      cmd->add_subcommand("schema", "Print every key of the scene format as Markdown tables");
   schema->callback([&exit_code] { exit_code = RunReportingErrors([] { return RunSchema(); }); });
 }
 

@@ -1,5 +1,5 @@
-// Loading and generating scenes of about 10,000 objects (DESIGN.md principle 5: "well under a second").
-// Counters: objects placed and the static scene's heap (EstimateMemoryBytes).
+// Loading and generating scenes of about 10,000 objects (DESIGN.md principle 5: "well under a
+// second"). Counters: objects placed and the static scene's heap (EstimateMemoryBytes).
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -74,13 +74,14 @@ void BM_GenerateCity10k(benchmark::State& state) {
 }
 BENCHMARK(BM_GenerateCity10k)->Unit(benchmark::kMillisecond);
 
-// The whole path: YAML text -> parse -> validate -> generate -> whole-scene checks, with a vehicle whose
-// start is tested against every object.
+// The whole path: YAML text -> parse -> validate -> generate -> whole-scene checks, with a vehicle
+// whose start is tested against every object.
 void BM_LoadForestScene10k(benchmark::State& state) {
   const std::string text =
       "scene: {name: bench, seed: 1}\n"
       "generators:\n"
-      "  - forest: {area: {size_m: [600, 600]}, density_per_ha: 280, clearings: [{center_m: [0, 0], radius_m: 10}]}\n"
+      "  - forest: {area: {size_m: [600, 600]}, density_per_ha: 280, clearings: [{center_m: [0, "
+      "0], radius_m: 10}]}\n"
       "vehicles:\n"
       "  - {name: d, preset: quadrotor, start: {position_m: [0, 0, -0.2]}}\n";
   const Scene warm = LoadSceneFromString(text, "bench.yaml");
@@ -88,7 +89,8 @@ void BM_LoadForestScene10k(benchmark::State& state) {
     Scene s = LoadSceneFromString(text, "bench.yaml");
     benchmark::DoNotOptimize(s.static_scene.objects.data());
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(warm.static_scene.objects.size()));
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(warm.static_scene.objects.size()));
   ReportScene(state, warm.static_scene);
 }
 BENCHMARK(BM_LoadForestScene10k)->Unit(benchmark::kMillisecond);

@@ -1,5 +1,5 @@
-// The example scenes shipped in scenes/ all load, with the contents their comments promise. Tests run
-// from the repository root (airis_add_test's WORKING_DIRECTORY).
+// The example scenes shipped in scenes/ all load, with the contents their comments promise. Tests
+// run from the repository root (airis_add_test's WORKING_DIRECTORY).
 #include <gtest/gtest.h>
 
 #include <map>
@@ -36,7 +36,8 @@ TEST(ExampleScenesTest, CityHasHundredsOfBuildingsStreetsCarsAndLamps) {
   const SceneStats stats = CalcSceneStats(s);
   // About 1 km x 1 km of city (the ground plane, object 0, is larger).
   Eigen::AlignedBox3d city;
-  for (std::size_t i = 1; i < s.static_scene.objects.size(); ++i) city.extend(s.static_scene.ObjectBounds(i));
+  for (std::size_t i = 1; i < s.static_scene.objects.size(); ++i)
+    city.extend(s.static_scene.ObjectBounds(i));
   EXPECT_NEAR(city.sizes().x(), 1000.0, 100.0);
   EXPECT_NEAR(city.sizes().y(), 1000.0, 100.0);
   EXPECT_LT(stats.models, 40u);
@@ -81,15 +82,16 @@ TEST(ExampleScenesTest, ComposedIncludesTheCityTileAndPark) {
 TEST(MeshLoaderTest, LandingPadVolumeMatchesItsOctagon) {
   const MeshFile f = LoadMeshFile("scenes/assets/landing_pad.obj", MeshAxes::kYUp);
   ASSERT_EQ(f.materials.size() >= 3, true);
-  // The base slab: a regular octagon of circumradius 2 m (area 2 sqrt(2) r^2) 0.1 m thick. Its signed
-  // volume is positive only if every face winds outward after the axis conversion.
+  // The base slab: a regular octagon of circumradius 2 m (area 2 sqrt(2) r^2) 0.1 m thick. Its
+  // signed volume is positive only if every face winds outward after the axis conversion.
   for (const auto& part : f.parts) {
     if (f.materials[part.material].name != "pad") continue;
     const engine::TriangleMesh& m = f.meshes[part.mesh];
     double v = 0.0;
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
       v += m.positions[m.indices[t]].cast<double>().dot(
-               m.positions[m.indices[t + 1]].cast<double>().cross(m.positions[m.indices[t + 2]].cast<double>())) /
+               m.positions[m.indices[t + 1]].cast<double>().cross(
+                   m.positions[m.indices[t + 2]].cast<double>())) /
            6.0;
     }
     EXPECT_NEAR(v, 2.0 * std::sqrt(2.0) * 4.0 * 0.1, 1e-4);

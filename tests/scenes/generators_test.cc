@@ -40,10 +40,12 @@ ForestConfig SmallForest() {
   return c;
 }
 
-engine::StaticScene Forest(const ForestConfig& c, std::uint64_t seed, GeneratorReport* report = nullptr) {
+engine::StaticScene Forest(const ForestConfig& c, std::uint64_t seed,
+                           GeneratorReport* report = nullptr) {
   SceneBuilder b;
   engine::RandomStream stream(seed);
-  const GeneratorReport r = GenerateForest(c, {b.ClassId("tree"), b.ClassId("vegetation")}, c.name, stream, b);
+  const GeneratorReport r =
+      GenerateForest(c, {b.ClassId("tree"), b.ClassId("vegetation")}, c.name, stream, b);
   if (report) *report = r;
   return b.Finish();
 }
@@ -52,8 +54,8 @@ TEST(ForestGeneratorTest, DensitySpacingAndClearingsHold) {
   const ForestConfig c = SmallForest();
   GeneratorReport report;
   const engine::StaticScene s = Forest(c, 1, &report);
-  // Expected trees: density x (area - clearing). Binomial thinning gives sigma ~ sqrt(N) ~ 33; 10% is
-  // about 3.5 sigma, so this fails only if the thinning is wrong.
+  // Expected trees: density x (area - clearing). Binomial thinning gives sigma ~ sqrt(N) ~ 33; 10%
+  // is about 3.5 sigma, so this fails only if the thinning is wrong.
   const double expected = 300.0 * (200.0 * 200.0 - 3.14159 * 30.0 * 30.0) / 10000.0;
   EXPECT_NEAR(static_cast<double>(report.trees), expected, 0.1 * expected);
   std::vector<Vector2d> trunks;
@@ -66,7 +68,8 @@ TEST(ForestGeneratorTest, DensitySpacingAndClearingsHold) {
   }
   ASSERT_EQ(trunks.size(), report.trees);
   for (std::size_t i = 0; i < trunks.size(); ++i) {
-    for (std::size_t j = i + 1; j < trunks.size(); ++j) ASSERT_GE((trunks[i] - trunks[j]).norm(), 3.0);
+    for (std::size_t j = i + 1; j < trunks.size(); ++j)
+      ASSERT_GE((trunks[i] - trunks[j]).norm(), 3.0);
   }
   EXPECT_GT(report.bushes, 0u);
 }
@@ -74,7 +77,8 @@ TEST(ForestGeneratorTest, DensitySpacingAndClearingsHold) {
 TEST(ForestGeneratorTest, TreesShareAHandfulOfModelsAndMeshes) {
   const ForestConfig c = SmallForest();
   const engine::StaticScene s = Forest(c, 1);
-  // Meshes: cylinder (trunks), cone, sphere (crowns and bushes); models: variants per species + bush.
+  // Meshes: cylinder (trunks), cone, sphere (crowns and bushes); models: variants per species +
+  // bush.
   EXPECT_EQ(s.meshes.size(), 3u);
   EXPECT_EQ(s.models.size(), c.species.size() * c.variants_per_species + 1);
   EXPECT_GT(s.objects.size(), 500u);
@@ -97,7 +101,8 @@ TEST(ForestGeneratorTest, SameSeedSameForestOtherSeedOther) {
 TEST(ForestGeneratorTest, PolygonAreaKeepsTreesInside) {
   ForestConfig c = SmallForest();
   c.clearings.clear();
-  c.area.polygon_m = {Vector2d(0, 0), Vector2d(100, 0), Vector2d(0, 100)};  // right triangle, 0.5 ha
+  c.area.polygon_m = {Vector2d(0, 0), Vector2d(100, 0),
+                      Vector2d(0, 100)};  // right triangle, 0.5 ha
   EXPECT_DOUBLE_EQ(AreaOf(c.area), 5000.0);
   const engine::StaticScene s = Forest(c, 3);
   for (const auto& o : s.objects) {
@@ -116,11 +121,12 @@ CityConfig SmallCity() {
   return c;
 }
 
-engine::StaticScene City(const CityConfig& c, std::uint64_t seed, GeneratorReport* report = nullptr) {
+engine::StaticScene City(const CityConfig& c, std::uint64_t seed,
+                         GeneratorReport* report = nullptr) {
   SceneBuilder b;
   engine::RandomStream stream(seed);
-  CityResources r{b.ClassId("building"), b.ClassId("road"), b.ClassId("sidewalk"), b.ClassId("lamp_post"),
-                  b.ClassId("car"), std::nullopt};
+  CityResources r{b.ClassId("building"),  b.ClassId("road"), b.ClassId("sidewalk"),
+                  b.ClassId("lamp_post"), b.ClassId("car"),  std::nullopt};
   const GeneratorReport out = GenerateCity(c, r, c.name, stream, b);
   if (report) *report = out;
   return b.Finish();
@@ -138,7 +144,8 @@ TEST(CityGeneratorTest, BuildingsStandInBlocksNotOnStreets) {
     if (s.objects[i].class_id != 4) continue;
     const Eigen::AlignedBox3d box = s.ObjectBounds(i);
     for (int axis = 0; axis < 2; ++axis) {
-      // Position within the street/block pitch: buildings lie inside [street + sidewalk, pitch - sidewalk].
+      // Position within the street/block pitch: buildings lie inside [street + sidewalk, pitch -
+      // sidewalk].
       const double lo = std::fmod(box.min()[axis] - origin, pitch);
       const double hi = lo + box.sizes()[axis];
       EXPECT_GE(lo, c.street_width_m + c.sidewalk_width_m - 1e-6) << s.objects[i].name;
@@ -159,7 +166,8 @@ TEST(CityGeneratorTest, TowersDowntownHousesOutside) {
     if (d < 0.5 * c.downtown_radius_m) near_sum += height, ++near_n;
     if (d > 2.0 * c.downtown_radius_m) {
       far_sum += height, ++far_n;
-      EXPECT_LE(height, c.low_height_m[1] + 0.02 * c.tall_height_m[1]);  // exp(-4) of a tower at most
+      EXPECT_LE(height,
+                c.low_height_m[1] + 0.02 * c.tall_height_m[1]);  // exp(-4) of a tower at most
     }
   }
   ASSERT_GT(near_n, 0);
@@ -173,7 +181,8 @@ TEST(CityGeneratorTest, FurnitureAndDeterminism) {
   const engine::StaticScene b = City(c, 5);
   std::set<std::uint8_t> classes;
   for (const auto& o : a.objects) classes.insert(o.class_id);
-  EXPECT_EQ(classes, (std::set<std::uint8_t>{2, 3, 4, 7, 10}));  // road, sidewalk, building, car, lamp
+  EXPECT_EQ(classes,
+            (std::set<std::uint8_t>{2, 3, 4, 7, 10}));  // road, sidewalk, building, car, lamp
   ASSERT_EQ(a.objects.size(), b.objects.size());
   for (std::size_t i = 0; i < a.objects.size(); ++i) {
     EXPECT_TRUE(a.objects[i].T_WO.matrix() == b.objects[i].T_WO.matrix());

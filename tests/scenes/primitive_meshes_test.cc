@@ -11,8 +11,8 @@ namespace {
 using engine::Primitive;
 using engine::TriangleMesh;
 
-/// Signed volume by the divergence theorem: positive when every triangle winds counter-clockwise seen
-/// from outside (the convention of static_scene.h), exact for any closed mesh.
+/// Signed volume by the divergence theorem: positive when every triangle winds counter-clockwise
+/// seen from outside (the convention of static_scene.h), exact for any closed mesh.
 double SignedVolume(const TriangleMesh& m) {
   double v = 0.0;
   for (std::size_t t = 0; t < m.indices.size(); t += 3) {
@@ -37,7 +37,8 @@ void ExpectOutwardFrom(const TriangleMesh& m, const Eigen::Vector3f& inside) {
 
 // A regular N-gon inscribed in a unit-diameter circle has area (N / 2) r^2 sin(2 pi / N): the exact
 // volume ratio of a tessellated round primitive to the true one for cylinders and cones.
-const double kPolygonRatio = kRoundSegments / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi / kRoundSegments);
+const double kPolygonRatio =
+    kRoundSegments / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi / kRoundSegments);
 
 TEST(PrimitiveMeshesTest, BoxIsTheUnitCubeWoundOutward) {
   const TriangleMesh m = MakePrimitiveMesh(Primitive::kBox);
@@ -71,7 +72,8 @@ TEST(PrimitiveMeshesTest, ConeApexPointsUpInNed) {
 
 TEST(PrimitiveMeshesTest, SphereIsClosedAndNearTheTrueVolume) {
   const TriangleMesh sphere = MakePrimitiveMesh(Primitive::kSphere);
-  // A 24 x 12 UV sphere is inscribed: its volume is a little below pi/6; 3% bounds that discretisation.
+  // A 24 x 12 UV sphere is inscribed: its volume is a little below pi/6; 3% bounds that
+  // discretisation.
   const double v = SignedVolume(sphere);
   EXPECT_LT(v, std::numbers::pi / 6.0);
   EXPECT_GT(v, 0.97 * std::numbers::pi / 6.0);
@@ -87,7 +89,8 @@ TEST(PrimitiveMeshesTest, PlaneFacesUp) {
   ASSERT_EQ(plane.triangle_count(), 2u);
   for (std::size_t t = 0; t < plane.indices.size(); t += 3) {
     const Eigen::Vector3f a = plane.positions[plane.indices[t]];
-    const Eigen::Vector3f n = (plane.positions[plane.indices[t + 1]] - a).cross(plane.positions[plane.indices[t + 2]] - a);
+    const Eigen::Vector3f n = (plane.positions[plane.indices[t + 1]] - a)
+                                  .cross(plane.positions[plane.indices[t + 2]] - a);
     EXPECT_LT(n.z(), 0.0f);  // up is -z in NED
   }
 }

@@ -16,7 +16,8 @@ using engine::ConfigError;
 /// A fresh folder under the test temp dir with files written into it.
 class SceneFiles {
  public:
-  explicit SceneFiles(const std::string& name) : dir_(fs::path(testing::TempDir()) / ("airis_scene_" + name)) {
+  explicit SceneFiles(const std::string& name)
+      : dir_(fs::path(testing::TempDir()) / ("airis_scene_" + name)) {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -53,8 +54,9 @@ TEST(SceneLoaderTest, UnknownKeyInAnObjectNamesFileLineColumnAndSuggestion) {
                                    "objects:\n"
                                    "  - primitive: box\n"
                                    "    positon_m: [0, 0, -1]\n");
-  EXPECT_EQ(LoadError(path),
-            path + ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_m'?)");
+  EXPECT_EQ(
+      LoadError(path),
+      path + ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_m'?)");
 }
 
 TEST(SceneLoaderTest, WrongTypeAndOutOfRangeNameTheKey) {
@@ -66,12 +68,14 @@ TEST(SceneLoaderTest, WrongTypeAndOutOfRangeNameTheKey) {
                                 "  - primitive: sphere\n"
                                 "    material:\n"
                                 "      restitution: 2\n");
-  EXPECT_EQ(LoadError(b), b + ":4:7: objects[0].material.restitution: must be between 0 and 1 (got 2)");
+  EXPECT_EQ(LoadError(b),
+            b + ":4:7: objects[0].material.restitution: must be between 0 and 1 (got 2)");
   const std::string c = f.Write("c.yaml", "objects:\n  - primitive: box\n    scale: [1, 0, 1]\n");
   EXPECT_EQ(LoadError(c), c + ":3:16: objects[0].scale[1]: must be > 0 (got 0)");
   const std::string d = f.Write("d.yaml", "scene:\n  environment:\n    wind:\n      gust: drydn\n");
-  EXPECT_EQ(LoadError(d), d + ":4:7: scene.environment.wind.gust: unknown value 'drydn' (expected none, "
-                              "gauss_markov or dryden; did you mean 'dryden'?)");
+  EXPECT_EQ(LoadError(d),
+            d + ":4:7: scene.environment.wind.gust: unknown value 'drydn' (expected none, "
+                "gauss_markov or dryden; did you mean 'dryden'?)");
 }
 
 TEST(SceneLoaderTest, NestedGeneratorValidationPointsIntoTheList) {
@@ -83,16 +87,20 @@ TEST(SceneLoaderTest, NestedGeneratorValidationPointsIntoTheList) {
                                    "        - name: a\n"
                                    "        - name: b\n"
                                    "          height_m: [20, 10]\n");
-  EXPECT_EQ(LoadError(path), path + ":6:11: generators[0].forest.species[1].height_m: expected [min, max] "
-                                    "with min <= max (got [20, 10])");
+  EXPECT_EQ(LoadError(path),
+            path +
+                ":6:11: generators[0].forest.species[1].height_m: expected [min, max] "
+                "with min <= max (got [20, 10])");
   const std::string both = f.Write("both.yaml", "generators:\n  - {}\n");
-  EXPECT_EQ(LoadError(both), both + ":2:5: generators[0].city: expected one generator: city or forest");
+  EXPECT_EQ(LoadError(both),
+            both + ":2:5: generators[0].city: expected one generator: city or forest");
 }
 
 TEST(SceneLoaderTest, MissingMeshNamesTheResolvedPath) {
   SceneFiles f("missing_mesh");
   const std::string path = f.Write("sub/s.yaml", "objects:\n  - mesh: ../meshes/house.obj\n");
-  EXPECT_EQ(LoadError(path), path + ":2:5: objects[0].mesh: mesh file not found: " + f.Path("meshes/house.obj"));
+  EXPECT_EQ(LoadError(path),
+            path + ":2:5: objects[0].mesh: mesh file not found: " + f.Path("meshes/house.obj"));
 }
 
 TEST(SceneLoaderTest, UnreadableAndEmptyMeshesGiveAssimpsReason) {
@@ -101,13 +109,18 @@ TEST(SceneLoaderTest, UnreadableAndEmptyMeshesGiveAssimpsReason) {
   f.Write("junk.stl", "solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0\n");
   const std::string a = f.Write("a.yaml", "objects:\n  - mesh: empty.obj\n");
   const std::string a_error = LoadError(a);
-  EXPECT_EQ(a_error.rfind(a + ":2:5: objects[0].mesh: cannot load mesh " + f.Path("empty.obj") + ": ", 0), 0u)
+  EXPECT_EQ(
+      a_error.rfind(a + ":2:5: objects[0].mesh: cannot load mesh " + f.Path("empty.obj") + ": ", 0),
+      0u)
       << a_error;
   const std::string b = f.Write("b.yaml", "objects:\n  - name: x\n    mesh: junk.stl\n");
   const std::string b_error = LoadError(b);
-  EXPECT_EQ(b_error.rfind(b + ":3:5: objects[0].mesh: cannot load mesh " + f.Path("junk.stl") + ": ", 0), 0u)
+  EXPECT_EQ(
+      b_error.rfind(b + ":3:5: objects[0].mesh: cannot load mesh " + f.Path("junk.stl") + ": ", 0),
+      0u)
       << b_error;
-  EXPECT_GT(b_error.size(), (b + ":3:5: objects[0].mesh: cannot load mesh " + f.Path("junk.stl") + ": ").size());
+  EXPECT_GT(b_error.size(),
+            (b + ":3:5: objects[0].mesh: cannot load mesh " + f.Path("junk.stl") + ": ").size());
 }
 
 TEST(SceneLoaderTest, MissingTexturesNameTheResolvedPath) {
@@ -116,14 +129,16 @@ TEST(SceneLoaderTest, MissingTexturesNameTheResolvedPath) {
                                 "objects:\n"
                                 "  - primitive: box\n"
                                 "    material: {texture: img/brick.png}\n");
-  EXPECT_EQ(LoadError(a), a + ":3:16: objects[0].material.texture: texture file not found: " + f.Path("img/brick.png"));
+  EXPECT_EQ(LoadError(a), a + ":3:16: objects[0].material.texture: texture file not found: " +
+                              f.Path("img/brick.png"));
   // A texture named inside a mesh's material library resolves against the mesh file.
   f.Write("m/cube.mtl", "newmtl wall\nKd 1 0 0\nmap_Kd wall.png\n");
   f.Write("m/cube.obj", std::string("mtllib cube.mtl\nusemtl wall\n") + kCube);
   const std::string b = f.Write("b.yaml", "objects:\n  - mesh: m/cube.obj\n");
   const std::string error = LoadError(b);
   EXPECT_NE(error.find(b + ":2:5: objects[0].mesh: cannot load mesh"), std::string::npos) << error;
-  EXPECT_NE(error.find("texture file not found: " + f.Path("m/wall.png")), std::string::npos) << error;
+  EXPECT_NE(error.find("texture file not found: " + f.Path("m/wall.png")), std::string::npos)
+      << error;
 }
 
 TEST(SceneLoaderTest, IncludeCycleNamesTheChain) {
@@ -134,43 +149,54 @@ TEST(SceneLoaderTest, IncludeCycleNamesTheChain) {
   const std::string self = f.Write("self.yaml", "include: [self.yaml]\n");
   EXPECT_EQ(LoadError(self), self + ":1:11: include[0]: include cycle: " + self + " -> " + self);
   const std::string missing = f.Write("m.yaml", "include: [nope.yaml]\n");
-  EXPECT_EQ(LoadError(missing), missing + ":1:11: include[0]: file not found: " + f.Path("nope.yaml"));
+  EXPECT_EQ(LoadError(missing),
+            missing + ":1:11: include[0]: file not found: " + f.Path("nope.yaml"));
 }
 
 TEST(SceneLoaderTest, UnknownClassSuggestsAndLists) {
   SceneFiles f("class");
   const std::string path = f.Write("s.yaml", "objects:\n  - primitive: box\n    class: buildng\n");
   const std::string error = LoadError(path);
-  EXPECT_EQ(error.rfind(path + ":3:5: objects[0].class: unknown class 'buildng' (did you mean 'building'?); "
-                               "known classes: ground, road",
-                        0),
-            0u)
+  EXPECT_EQ(
+      error.rfind(path +
+                      ":3:5: objects[0].class: unknown class 'buildng' (did you mean 'building'?); "
+                      "known classes: ground, road",
+                  0),
+      0u)
       << error;
 }
 
 TEST(SceneLoaderTest, VehicleInsideAnObjectNamesBoth) {
   SceneFiles f("inside");
-  const std::string path = f.Write("s.yaml",
-                                   "objects:\n"
-                                   "  - {name: shed, primitive: box, position_m: [10, 0, -2], scale: [4, 4, 4]}\n"
-                                   "vehicles:\n"
-                                   "  - name: drone1\n"
-                                   "    preset: quad_x\n"
-                                   "    start: {position_m: [11, 1, -1]}\n");
-  EXPECT_EQ(LoadError(path), path + ":6:13: vehicles[0].start.position_m: vehicle 'drone1' starts inside object "
-                                    "'shed' (class structure, instance 2)");
+  const std::string path =
+      f.Write("s.yaml",
+              "objects:\n"
+              "  - {name: shed, primitive: box, position_m: [10, 0, -2], scale: [4, 4, 4]}\n"
+              "vehicles:\n"
+              "  - name: drone1\n"
+              "    preset: quad_x\n"
+              "    start: {position_m: [11, 1, -1]}\n");
+  EXPECT_EQ(LoadError(path),
+            path +
+                ":6:13: vehicles[0].start.position_m: vehicle 'drone1' starts inside object "
+                "'shed' (class structure, instance 2)");
 }
 
 TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
   SceneFiles f("vehicles");
-  const std::string a = f.Write("a.yaml", "vehicles:\n  - {name: d, preset: quad_x, start: {position_m: [0, 0, 1]}}\n");
-  EXPECT_EQ(LoadError(a), a + ":2:39: vehicles[0].start.position_m: vehicle 'd' starts below the ground (z = 1 m; "
-                              "NED z is down, so heights are negative)");
+  const std::string a = f.Write(
+      "a.yaml", "vehicles:\n  - {name: d, preset: quad_x, start: {position_m: [0, 0, 1]}}\n");
+  EXPECT_EQ(
+      LoadError(a),
+      a + ":2:39: vehicles[0].start.position_m: vehicle 'd' starts below the ground (z = 1 m; "
+          "NED z is down, so heights are negative)");
   const std::string b = f.Write("b.yaml",
                                 "vehicles:\n"
                                 "  - {name: d, preset: quad_x}\n"
                                 "  - {name: d, preset: quad_x, start: {position_m: [5, 0, -1]}}\n");
-  EXPECT_EQ(LoadError(b), b + ":3:6: vehicles[1].name: duplicate vehicle name 'd' (also vehicles[0] at " + b + ":2)");
+  EXPECT_EQ(
+      LoadError(b),
+      b + ":3:6: vehicles[1].name: duplicate vehicle name 'd' (also vehicles[0] at " + b + ":2)");
   const std::string c = f.Write("c.yaml", "vehicles:\n  - {name: d}\n");
   EXPECT_EQ(LoadError(c), c + ":2:5: vehicles[0].preset: every vehicle needs a preset");
 }
@@ -181,18 +207,21 @@ TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
                                    "objects:\n"
                                    "  - primitive: box\n"
                                    "    repeat: {count: 65535, step_m: [2, 0, 0]}\n");
-  EXPECT_EQ(LoadError(path), path + ":3:5: objects[0].repeat: the scene exceeds 65535 objects (instance ids are 16-bit)");
+  EXPECT_EQ(
+      LoadError(path),
+      path + ":3:5: objects[0].repeat: the scene exceeds 65535 objects (instance ids are 16-bit)");
 }
 
 TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {
   SceneFiles f("repeat");
   f.Write("cube.obj", kCube);
-  const std::string path = f.Write("s.yaml",
-                                   "objects:\n"
-                                   "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_m: [0, 0, -1],\n"
-                                   "     repeat: {count: 3, step_m: [2, 0, 0], rows: 2, row_step_m: [0, 2, 0]}}\n"
-                                   "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_m: [9, 9, -1]}\n"
-                                   "  - {primitive: cone, position_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
+  const std::string path =
+      f.Write("s.yaml",
+              "objects:\n"
+              "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_m: [0, 0, -1],\n"
+              "     repeat: {count: 3, step_m: [2, 0, 0], rows: 2, row_step_m: [0, 2, 0]}}\n"
+              "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_m: [9, 9, -1]}\n"
+              "  - {primitive: cone, position_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
   const Scene s = LoadScene(path);
   ASSERT_EQ(s.static_scene.objects.size(), 1u + 6u + 1u + 1u);  // ground, 6 copies, d, cone
   std::set<std::uint32_t> ids;
@@ -207,7 +236,8 @@ TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {
   EXPECT_EQ(objects[1].model, objects[7].model);  // one mesh file, one model
   EXPECT_EQ(objects[8].name, "cone");
   EXPECT_GE(objects[8].material_override, 0);
-  EXPECT_EQ(s.static_scene.materials[objects[8].material_override].base_color_rgb, Eigen::Vector3f(1, 0, 0));
+  EXPECT_EQ(s.static_scene.materials[objects[8].material_override].base_color_rgb,
+            Eigen::Vector3f(1, 0, 0));
 }
 
 TEST(SceneLoaderTest, IncludesConcatenateAndTheIncluderWins) {
@@ -217,10 +247,11 @@ TEST(SceneLoaderTest, IncludesConcatenateAndTheIncluderWins) {
           "ground: {size_m: [10, 10]}\n"
           "objects: [{name: from_a, primitive: box, position_m: [3, 0, -1]}]\n");
   f.Write("tiles/b.yaml", "objects: [{name: from_b, primitive: sphere, position_m: [6, 0, -1]}]\n");
-  const std::string top = f.Write("top.yaml",
-                                  "include: [tiles/a.yaml, tiles/b.yaml]\n"
-                                  "scene: {name: top}\n"
-                                  "objects: [{name: own, primitive: box, position_m: [9, 0, -1]}]\n");
+  const std::string top =
+      f.Write("top.yaml",
+              "include: [tiles/a.yaml, tiles/b.yaml]\n"
+              "scene: {name: top}\n"
+              "objects: [{name: own, primitive: box, position_m: [9, 0, -1]}]\n");
   const Scene s = LoadScene(top);
   EXPECT_EQ(s.name, "top");
   EXPECT_EQ(s.seed, 1u);  // the includer's scene block replaces the tile's as a whole
@@ -261,13 +292,14 @@ TEST(SceneLoaderTest, CustomClassesGetIdsAndClashesAreErrors) {
     LoadSceneFromString("classes:\n  - {name: crate, id: 4}\n", "mem.yaml");
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& e) {
-    EXPECT_EQ(std::string(e.what()), "mem.yaml:2:19: classes[0].id: id 4 is already class 'building'");
+    EXPECT_EQ(std::string(e.what()),
+              "mem.yaml:2:19: classes[0].id: id 4 is already class 'building'");
   }
 }
 
 TEST(SceneLoaderTest, SunFromTimeOfDayAtEquinoxNoon) {
-  // Near the March equinox (declination ~0) at solar noon the sun stands 90 deg - latitude high, due
-  // south. Cooper's declination is -0.4 deg on that day, so 0.5 deg bounds it.
+  // Near the March equinox (declination ~0) at solar noon the sun stands 90 deg - latitude high,
+  // due south. Cooper's declination is -0.4 deg on that day, so 0.5 deg bounds it.
   double azimuth = 0, elevation = 0;
   SolarAngles(engine::DegToRad(47.0), 2026.0 + 79.0 / 365.0, 12.0, &azimuth, &elevation);
   EXPECT_NEAR(engine::RadToDeg(elevation), 43.0, 0.5);

@@ -1,5 +1,5 @@
-// The `vehicles` block: presets, overrides read through MultirotorConfig's Visit, sensors through theirs,
-// and the World built from a scene.
+// The `vehicles` block: presets, overrides read through MultirotorConfig's Visit, sensors through
+// theirs, and the World built from a scene.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -24,7 +24,8 @@ std::string ErrorOf(const std::string& text) {
 
 TEST(VehiclesSectionTest, UnknownPresetListsThePresets) {
   EXPECT_EQ(ErrorOf("vehicles:\n  - name: d\n    preset: quad_xx\n"),
-            "scenes/v.yaml:3:5: vehicles[0].preset: unknown preset 'quad_xx' (did you mean 'quad_x'?); presets: "
+            "scenes/v.yaml:3:5: vehicles[0].preset: unknown preset 'quad_xx' (did you mean "
+            "'quad_x'?); presets: "
             "quad_x, quad_plus, hexa_x, octo_x, tilt_rotor");
 }
 
@@ -49,14 +50,16 @@ TEST(VehiclesSectionTest, OverrideMistakesNameFileLineAndKey) {
                     "    preset: quad_x\n"
                     "    overrides:\n"
                     "      mas_kg: 2\n"),
-            "scenes/v.yaml:5:7: vehicles[0].overrides.mas_kg: unknown key 'mas_kg' (did you mean 'mass_kg'?)");
+            "scenes/v.yaml:5:7: vehicles[0].overrides.mas_kg: unknown key 'mas_kg' (did you mean "
+            "'mass_kg'?)");
   const std::string bad_value = ErrorOf(
       "vehicles:\n"
       "  - name: d\n"
       "    preset: quad_x\n"
       "    overrides:\n"
       "      mass_kg: -1\n");
-  EXPECT_EQ(bad_value.rfind("scenes/v.yaml:5:7: vehicles[0].overrides.mass_kg: ", 0), 0u) << bad_value;
+  EXPECT_EQ(bad_value.rfind("scenes/v.yaml:5:7: vehicles[0].overrides.mass_kg: ", 0), 0u)
+      << bad_value;
 }
 
 TEST(VehiclesSectionTest, SensorsAreReadThroughTheirConfigs) {
@@ -91,14 +94,16 @@ TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
                     "    sensors:\n"
                     "      - imu: {}\n"
                     "      - imu: {}\n"),
-            "scenes/v.yaml:6:9: vehicles[0].sensors[1]: duplicate sensor name 'imu' on vehicle 'd' (name one "
+            "scenes/v.yaml:6:9: vehicles[0].sensors[1]: duplicate sensor name 'imu' on vehicle 'd' "
+            "(name one "
             "with `name:`)");
   EXPECT_EQ(ErrorOf("vehicles:\n"
                     "  - name: d\n"
                     "    preset: quad_x\n"
                     "    sensors:\n"
                     "      - {name: x}\n"),
-            "scenes/v.yaml:5:9: vehicles[0].sensors[0].imu: expected one sensor: imu, barometer, magnetometer, gps, "
+            "scenes/v.yaml:5:9: vehicles[0].sensors[0].imu: expected one sensor: imu, barometer, "
+            "magnetometer, gps, "
             "rangefinder or lidar");
 }
 
@@ -118,7 +123,8 @@ TEST(VehiclesSectionTest, BuildWorldPlacesVehiclesAndMountsSensors) {
   EXPECT_EQ(world->vehicle(0).name(), "a");
   EXPECT_TRUE(world->vehicle(0).state().p_W.isApprox(engine::Vec3(0, 0, -0.2)));
   // Yaw 90 deg: the body's forward axis points east.
-  EXPECT_TRUE((world->vehicle(0).state().q_WB * engine::Vec3::UnitX()).isApprox(engine::Vec3::UnitY(), 1e-12));
+  EXPECT_TRUE((world->vehicle(0).state().q_WB * engine::Vec3::UnitX())
+                  .isApprox(engine::Vec3::UnitY(), 1e-12));
   EXPECT_EQ(world->sensors(0).size(), 3u);
   EXPECT_EQ(world->sensors(1).size(), 0u);
   EXPECT_EQ(world->vehicle(1).actuator_count(), 8);

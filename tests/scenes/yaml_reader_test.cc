@@ -137,9 +137,11 @@ TEST(YamlReaderTest, EmptyDocumentIsAllDefaults) {
 }
 
 TEST(YamlReaderTest, ReadsFullUnsigned64Seeds) {
-  EXPECT_EQ(ReadText<SceneTestConfig>("seed: 18446744073709551615\n").seed, 18446744073709551615ull);
-  EXPECT_EQ(ErrorOf<SceneTestConfig>("seed: -1\n"),
-            "scenes/test.yaml:1:1: seed: out of range (got -1; expected 0 to 18446744073709551615)");
+  EXPECT_EQ(ReadText<SceneTestConfig>("seed: 18446744073709551615\n").seed,
+            18446744073709551615ull);
+  EXPECT_EQ(
+      ErrorOf<SceneTestConfig>("seed: -1\n"),
+      "scenes/test.yaml:1:1: seed: out of range (got -1; expected 0 to 18446744073709551615)");
 }
 
 TEST(YamlReaderTest, UnknownKeySuggestsClosest) {
@@ -153,8 +155,9 @@ TEST(YamlReaderTest, UnknownKeySuggestsClosest) {
 }
 
 TEST(YamlReaderTest, UnknownKeyWithoutCloseMatchListsValidKeys) {
-  EXPECT_EQ(ErrorOf<MountTestConfig>("colour: red\n"),
-            "scenes/test.yaml:1:1: colour: unknown key 'colour' (valid keys: roll_deg, position_m)");
+  EXPECT_EQ(
+      ErrorOf<MountTestConfig>("colour: red\n"),
+      "scenes/test.yaml:1:1: colour: unknown key 'colour' (valid keys: roll_deg, position_m)");
 }
 
 TEST(YamlReaderTest, DuplicateKeyIsAnError) {
