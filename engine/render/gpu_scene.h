@@ -72,6 +72,8 @@ class GpuScene {
 
   const std::vector<Batch>& batches() const { return batches_; }
   const SceneLighting& lighting() const { return lighting_; }
+  /// Replaces the sun, sky and fog (e.g. a preview from far away without the scene's fog).
+  void set_lighting(const SceneLighting& lighting) { lighting_ = lighting; }
   /// Total number of placed parts.
   std::size_t part_count() const { return part_count_; }
 

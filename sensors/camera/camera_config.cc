@@ -1,0 +1,63 @@
+#include "sensors/camera/camera_config.h"
+
+#include <algorithm>
+
+namespace airis::sensors {
+
+namespace {
+
+constexpr engine::EnumName<CameraAttachment> kAttachmentNames[] = {
+    {CameraAttachment::kVehicle, "vehicle"}, {CameraAttachment::kWorld, "world"}};
+
+// Re-throws an InvalidField from a nested struct with the nested field's path.
+template <class F>
+void WithPrefix(const std::string& prefix, F&& check) {
+  try {
+    check();
+  } catch (const engine::InvalidField& e) {
+    throw engine::InvalidField(prefix + e.field(), e.problem());
+  }
+}
+
+}  // namespace
+
+std::span<const engine::EnumName<CameraAttachment>> EnumNames(CameraAttachment) {
+  return kAttachmentNames;
+}
+
+void CameraConfig::Validate() const {
+  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireInRange("width_px", width_px, 1, 8192);
+  engine::RequireInRange("height_px", height_px, 1, 8192);
+  if (!fx_px) engine::RequireInRange("hfov_deg", hfov_deg, 1.0, 170.0);
+  // The intrinsics' own checks name fx_px, near_m, distortion.k1, ... as in this struct.
+  CalcIntrinsics().Validate();
+  WithPrefix("outputs.", [&] { outputs.Validate(); });
+  WithPrefix("mount.", [&] { mount.Validate(); });
+}
+
+engine::CameraIntrinsics CameraConfig::CalcIntrinsics() const {
+  engine::CameraIntrinsics k;
+  if (fx_px) {
+    k.width_px = width_px;
+    k.height_px = height_px;
+    k.fx_px = *fx_px;
+  } else {
+    k = engine::CameraIntrinsics::FromHorizontalFov(width_px, height_px,
+                                                    std::clamp(hfov_deg, 1e-3, 179.0));
+  }
+  k.fy_px = fy_px.value_or(k.fx_px);
+  k.cx_px = cx_px.value_or(0.5 * (width_px - 1));
+  k.cy_px = cy_px.value_or(0.5 * (height_px - 1));
+  k.near_m = near_m;
+  k.far_m = far_m;
+  k.distortion = distortion;
+  return k;
+}
+
+void StereoCameraConfig::Validate() const {
+  WithPrefix("camera.", [&] { camera.Validate(); });
+  engine::RequirePositive("baseline_m", baseline_m);
+}
+
+}  // namespace airis::sensors

@@ -1,0 +1,47 @@
+#include "sensors/camera/stereo_camera_sensor.h"
+
+#include "engine/core/error.h"
+
+namespace airis::sensors {
+
+namespace {
+
+const StereoCameraConfig& Validated(const StereoCameraConfig& config) {
+  config.Validate();
+  return config;
+}
+
+}  // namespace
+
+StereoCameraSensor::StereoCameraSensor(std::string name, const StereoCameraConfig& config,
+                                       std::shared_ptr<const engine::RenderScene> scene)
+    : engine::Sensor(std::move(name), Validated(config).camera.rate_hz),
+      config_(config),
+      scene_(std::move(scene)),
+      renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs) {}
+
+std::span<const std::string> StereoCameraSensor::columns() const {
+  static const std::vector<std::string> kColumns = [] {
+    std::vector<std::string> c = CameraPoseColumns("left_");
+    for (auto& r : CameraPoseColumns("right_")) c.push_back(r);
+    return c;
+  }();
+  return kColumns;
+}
+
+void StereoCameraSensor::CopyLatestRow(std::span<double> out) const {
+  AIRIS_DEMAND(out.size() == columns().size());
+  CopyPose(left_.T_WC, out.subspan(0, 7));
+  CopyPose(right_.T_WC, out.subspan(7, 7));
+}
+
+void StereoCameraSensor::Sample(const engine::SensorContext& context) {
+  const Eigen::Isometry3d T_WL = CalcCameraPose(config_.camera, context.state);
+  const Eigen::Isometry3d T_WR = T_WL * Eigen::Translation3d(config_.baseline_m, 0.0, 0.0);
+  renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns);
+  renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns);
+  renderer_.Collect(left_);
+  renderer_.Collect(right_);
+}
+
+}  // namespace airis::sensors

@@ -1,0 +1,137 @@
+// Camera rendering speed: a drone's view of scenes/city.yaml and scenes/forest.yaml (when the scene loader
+// is built) and of the synthetic city (10,000 buildings over 1 km^2) and forest (5,000 trees), RGB + planar
+// depth + segmentation read back every frame. docs/rendering.md has the table.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "engine/render/camera_renderer.h"
+#include "engine/render/synthetic_scene.h"
+#ifdef AIRIS_BENCH_SCENES_DIR
+#include "scenes/scene.h"
+#endif
+
+namespace airis::engine {
+namespace {
+
+EglContext& Context() {
+  static EglContext context;
+  context.MakeCurrent();
+  return context;
+}
+
+const GpuScene& City() {
+  static const GpuScene scene((Context(), MakeSyntheticCity(10'000, 1000.0, 1)));
+  return scene;
+}
+
+const GpuScene& Forest() {
+  static const GpuScene scene((Context(), MakeSyntheticForest(5'000, 500.0, 1)));
+  return scene;
+}
+
+// A drone's straight flight at constant altitude; frame k of 200, then repeating.
+struct Flight {
+  double yaw_deg;
+  double altitude_m;
+  double pitch_deg;
+  double length_m;
+};
+// City: north along the street from the central crossing; forest: east over the crowns (as tools/bench_render).
+constexpr Flight kCityFlight{0.0, 30.0, -15.0, 300.0};
+constexpr Flight kForestFlight{90.0, 30.0, -20.0, 150.0};
+
+Eigen::Isometry3d DronePose(int k, const Flight& f) {
+  const double s = f.length_m * static_cast<double>(k % 200) / 200.0;
+  const double yaw_rad = f.yaw_deg * M_PI / 180.0;
+  const Eigen::Matrix3d R_WS = (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(f.pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()))
+                                   .toRotationMatrix();
+  Eigen::Isometry3d T_WC = Eigen::Isometry3d::Identity();
+  T_WC.linear() = R_WS * CalcR_SC();
+  T_WC.translation() << s * std::cos(yaw_rad), s * std::sin(yaw_rad), -f.altitude_m;
+  return T_WC;
+}
+
+void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& flight) {
+  RenderOutputs outputs;
+  outputs.rgb = outputs.depth_planar = outputs.segmentation = true;
+  CameraRenderer renderer(
+      Context(),
+      CameraIntrinsics::FromHorizontalFov(static_cast<int>(state.range(0)),
+                                          static_cast<int>(state.range(1)), 90.0, 0.1, 2000.0),
+      outputs);
+  CameraFrame frame;
+  for (int k = 0; k < 3; ++k) renderer.Render(scene, DronePose(k, flight), 0, frame);  // warm-up
+  int k = 0;
+  for (auto _ : state) {
+    renderer.Render(scene, DronePose(k++, flight), 0, frame);
+    benchmark::DoNotOptimize(frame.rgba.pixels.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
+                                             benchmark::Counter::kIsRate);
+  state.counters["triangles"] = static_cast<double>(renderer.last_triangles());
+}
+
+void BM_RenderSyntheticCity(benchmark::State& state) { RunRender(state, City(), kCityFlight); }
+BENCHMARK(BM_RenderSyntheticCity)
+    ->Args({640, 480})
+    ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_RenderSyntheticForest(benchmark::State& state) { RunRender(state, Forest(), kForestFlight); }
+BENCHMARK(BM_RenderSyntheticForest)
+    ->Args({640, 480})
+    ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+#ifdef AIRIS_BENCH_SCENES_DIR
+const GpuScene& SceneFile(const char* name) {
+  static std::map<std::string, std::unique_ptr<GpuScene>> scenes;
+  auto& slot = scenes[name];
+  if (!slot) {
+    const std::string path = std::string(AIRIS_BENCH_SCENES_DIR) + "/" + name;
+    const scenes::Scene scene = scenes::LoadScene(path);
+    Context();
+    slot = std::make_unique<GpuScene>(scene.static_scene);
+  }
+  return *slot;
+}
+
+void BM_RenderCity(benchmark::State& state) { RunRender(state, SceneFile("city.yaml"), kCityFlight); }
+BENCHMARK(BM_RenderCity)->Args({640, 480})->Args({1280, 720})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_RenderForest(benchmark::State& state) {
+  RunRender(state, SceneFile("forest.yaml"), kForestFlight);
+}
+BENCHMARK(BM_RenderForest)->Args({640, 480})->Args({1280, 720})->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+
+// The CPU side alone: frustum culling and camera-relative instance transforms of 10,000 buildings.
+void BM_CollectVisibleCity(benchmark::State& state) {
+  const GpuScene& scene = City();
+  const CameraIntrinsics k = CameraIntrinsics::FromHorizontalFov(640, 480, 90.0, 0.1, 2000.0);
+  const double x_edge = (k.width_px - 0.5 - k.cx_px) / k.fx_px;
+  const double y_edge = (k.height_px - 0.5 - k.cy_px) / k.fy_px;
+  std::vector<Eigen::Vector4d> planes = {
+      Eigen::Vector4d(1, 0, x_edge, 0).normalized(), Eigen::Vector4d(-1, 0, x_edge, 0).normalized(),
+      Eigen::Vector4d(0, 1, y_edge, 0).normalized(), Eigen::Vector4d(0, -1, y_edge, 0).normalized(),
+      Eigen::Vector4d(0, 0, 1, -k.near_m), Eigen::Vector4d(0, 0, -1, k.far_m)};
+  VisibleSet visible;
+  int i = 0;
+  for (auto _ : state) {
+    scene.CollectVisible(DronePose(i++, kCityFlight), planes, visible);
+    benchmark::DoNotOptimize(visible.instances.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.part_count()));
+}
+BENCHMARK(BM_CollectVisibleCity)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace airis::engine

@@ -1,0 +1,182 @@
+#include "sensors/camera/camera_sensor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sensors/camera/stereo_camera_sensor.h"
+#include "tests/render/render_test_util.h"
+
+namespace airis::sensors {
+namespace {
+
+using engine::RigidBodyState;
+using engine::SensorContext;
+
+std::shared_ptr<const engine::RenderScene> BoxesScene() {
+  engine::testing::SharedContext();  // fails the test with EGL's message if no context can be made
+  engine::StaticScene scene = engine::testing::MakeEmptyScene();
+  engine::testing::AddGround(scene, 400.0, 1);
+  engine::testing::AddBox(scene, {10.0, 0.0, -2.0}, {2.0, 2.0, 4.0}, 2, 10);  // north
+  engine::testing::AddBox(scene, {0.0, 10.0, -2.0}, {2.0, 2.0, 4.0}, 2, 20);  // east
+  return std::make_shared<engine::RenderScene>(scene);
+}
+
+CameraConfig SmallCamera() {
+  CameraConfig c;
+  c.width_px = 64;
+  c.height_px = 48;
+  c.hfov_deg = 60.0;
+  c.outputs.rgb = false;
+  c.outputs.segmentation = true;
+  c.outputs.depth_planar = true;
+  return c;
+}
+
+std::uint16_t CentreInstance(const engine::CameraFrame& f) {
+  return f.instance_id.at(f.instance_id.width / 2, f.instance_id.height / 2);
+}
+
+TEST(CameraSensorTest, IdentityMountLooksAlongBodyX) {
+  CameraSensor camera("front", SmallCamera(), BoxesScene());
+  RigidBodyState state;
+  state.p_W = {0.0, 0.0, -2.0};
+  SensorContext context;
+  context.state = &state;
+  ASSERT_TRUE(camera.Update(context));
+  EXPECT_EQ(CentreInstance(camera.latest()), 10);  // facing north
+  // Yawed 90 degrees right: body x points east.
+  state.q_WB = engine::Quat(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  context.now_ns = engine::kNsPerSecond;
+  ASSERT_TRUE(camera.Update(context));
+  EXPECT_EQ(CentreInstance(camera.latest()), 20);
+  // Planar depth of the east box's west face (y = 9) from y = 0.
+  EXPECT_NEAR(camera.latest().depth_planar_m.at(32, 24), 9.0, 9.0 * 1e-6);
+}
+
+TEST(CameraSensorTest, MountPitchedDownSeesTheGroundAtTheHeight) {
+  CameraConfig config = SmallCamera();
+  config.mount.pitch_deg = -90.0;           // looking straight down
+  config.mount.position_m = {0.0, 0.0, 0.5};  // 0.5 m below the centre of mass
+  CameraSensor camera("down", config, BoxesScene());
+  RigidBodyState state;
+  state.p_W = {-20.0, -20.0, -30.0};
+  SensorContext context;
+  context.state = &state;
+  ASSERT_TRUE(camera.Update(context));
+  EXPECT_EQ(CentreInstance(camera.latest()), 1);
+  EXPECT_NEAR(camera.latest().depth_planar_m.at(10, 40), 29.5, 29.5 * 1e-6);
+  // The pose row: camera 0.5 m below the body.
+  std::vector<double> row(camera.columns().size());
+  camera.CopyLatestRow(row);
+  EXPECT_EQ(camera.columns()[2], "p_WC_z_m");
+  EXPECT_DOUBLE_EQ(row[2], -29.5);
+}
+
+TEST(CameraSensorTest, WorldAttachedCameraIgnoresTheVehicle) {
+  CameraConfig config = SmallCamera();
+  config.attachment = CameraAttachment::kWorld;
+  config.mount.position_m = {0.0, 0.0, -2.0};
+  config.mount.yaw_deg = 90.0;  // looking east
+  CameraSensor camera("tower", config, BoxesScene());
+  RigidBodyState state;
+  state.p_W = {100.0, 50.0, -10.0};
+  state.q_WB = engine::Quat(Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitZ()));
+  SensorContext context;
+  context.state = &state;
+  ASSERT_TRUE(camera.Update(context));
+  EXPECT_EQ(CentreInstance(camera.latest()), 20);
+}
+
+TEST(CameraSensorTest, RendersAtItsOwnExactRate) {
+  CameraConfig config = SmallCamera();
+  config.rate_hz = 30.0;
+  CameraSensor camera("front", config, BoxesScene());
+  RigidBodyState state;
+  SensorContext context;
+  context.state = &state;
+  int frames = 0;
+  camera.AddListener([&](const engine::Sensor& s) {
+    const auto& c = static_cast<const CameraSensor&>(s);
+    // Frame k is the first 1 kHz tick at or after k / 30 s.
+    const engine::TimeNs due = (frames * engine::kNsPerSecond + 29) / 30;
+    EXPECT_EQ(c.latest().time_ns, (due + 999'999) / 1'000'000 * 1'000'000);
+    ++frames;
+  });
+  for (engine::TimeNs t = 0; t < 2 * engine::kNsPerSecond; t += 1'000'000) {
+    context.now_ns = t;
+    camera.Update(context);
+  }
+  EXPECT_EQ(frames, 60);
+}
+
+TEST(StereoCameraSensorTest, PairIsSynchronisedWithTheBaselineAlongImageRight) {
+  StereoCameraConfig config;
+  config.camera = SmallCamera();
+  config.camera.rate_hz = 10.0;
+  config.baseline_m = 0.25;
+  StereoCameraSensor stereo("stereo", config, BoxesScene());
+  RigidBodyState state;
+  state.p_W = {0.0, 0.0, -2.0};
+  state.q_WB = engine::Quat(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  SensorContext context;
+  context.state = &state;
+  context.now_ns = 0;
+  ASSERT_TRUE(stereo.Update(context));
+  EXPECT_EQ(stereo.left().time_ns, stereo.right().time_ns);
+  // Right camera = left + baseline along body y (image right) rotated into the world.
+  const Eigen::Vector3d offset_W = stereo.right().T_WC.translation() - stereo.left().T_WC.translation();
+  EXPECT_LT((offset_W - state.q_WB * Eigen::Vector3d(0.0, 0.25, 0.0)).norm(), 1e-12);
+  EXPECT_TRUE(stereo.right().T_WC.linear().isApprox(stereo.left().T_WC.linear()));
+  // Both see the north box; the right camera sees it further left.
+  auto box_centroid = [](const engine::CameraFrame& f) {
+    double sum = 0;
+    int n = 0;
+    for (int u = 0; u < f.instance_id.width; ++u) {
+      if (f.instance_id.at(u, f.instance_id.height / 2) == 10) {
+        sum += u;
+        ++n;
+      }
+    }
+    return n > 0 ? sum / n : -1.0;
+  };
+  EXPECT_GT(box_centroid(stereo.left()), box_centroid(stereo.right()));
+  EXPECT_EQ(stereo.columns().size(), 14u);
+}
+
+TEST(CameraConfigTest, ValidateNamesNestedFields) {
+  CameraConfig config;
+  config.hfov_deg = 200.0;
+  try {
+    config.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "hfov_deg");
+  }
+  config = CameraConfig{};
+  config.mount.pitch_deg = 120.0;
+  try {
+    config.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "mount.pitch_deg");
+  }
+  StereoCameraConfig stereo;
+  stereo.camera.distortion.k1 = std::nan("");
+  try {
+    stereo.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "camera.distortion.k1");
+  }
+  CameraConfig explicit_k;
+  explicit_k.fx_px = 500.0;
+  explicit_k.cx_px = 300.0;
+  const engine::CameraIntrinsics k = explicit_k.CalcIntrinsics();
+  EXPECT_EQ(k.fy_px, 500.0);
+  EXPECT_EQ(k.cx_px, 300.0);
+  EXPECT_EQ(k.cy_px, 239.5);
+}
+
+}  // namespace
+}  // namespace airis::sensors
