@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "engine/render/camera_renderer.h"
 #include "engine/render/egl_context.h"
@@ -35,9 +35,10 @@ struct Flight {
 Eigen::Isometry3d DronePose(int k, const Flight& f) {
   const double s = f.length_m * static_cast<double>(k % 200) / 200.0;
   const double yaw_rad = f.yaw_deg * M_PI / 180.0;
-  const Eigen::Matrix3d R_WS = (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
-                                Eigen::AngleAxisd(f.pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()))
-                                   .toRotationMatrix();
+  const Eigen::Matrix3d R_WS =
+      (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(f.pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
   Eigen::Isometry3d T_WC = Eigen::Isometry3d::Identity();
   T_WC.linear() = R_WS * engine::CalcR_SC();
   T_WC.translation() << f.north_m + s * std::cos(yaw_rad), f.east_m + s * std::sin(yaw_rad),
@@ -58,8 +59,8 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
   outputs.rgb = true;
   outputs.depth_planar = true;
   outputs.segmentation = true;
-  CameraRenderer renderer(context, CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, 2000.0),
-                          outputs);
+  CameraRenderer renderer(
+      context, CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, 2000.0), outputs);
   CameraFrame frame;
   constexpr int kWarmUp = 5;
   for (int k = 0; k < kWarmUp; ++k) renderer.Render(scene, DronePose(k, flight), 0, frame);
@@ -83,8 +84,7 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
   }
   while (renderer.Collect(frame)) {
   }
-  r.pipelined_fps =
-      frames / std::chrono::duration<double>(Clock::now() - start_pipelined).count();
+  r.pipelined_fps = frames / std::chrono::duration<double>(Clock::now() - start_pipelined).count();
   return r;
 }
 
@@ -110,8 +110,9 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   auto load = [](const std::string& path) {
     return [path] { return scenes::LoadScene(path).static_scene; };
   };
-  // City: from the central crossing north along the street at 30 m, 15 degrees down (towers both sides,
-  // the street and its cars below). Forest: from the central clearing east at 30 m over the crowns.
+  // City: from the central crossing north along the street at 30 m, 15 degrees down (towers both
+  // sides, the street and its cars below). Forest: from the central clearing east at 30 m over the
+  // crowns.
   const Flight city_flight{0.0, 0.0, 0.0, 30.0, -15.0, 300.0};
   const Flight forest_flight{0.0, 0.0, 90.0, 30.0, -20.0, 150.0};
   if (!options.city_scene.empty()) {
@@ -123,8 +124,9 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   if (options.synthetic) {
     cases.push_back({"synthetic_city", [] { return engine::MakeSyntheticCity(10'000, 1000.0, 1); },
                      city_flight, "synthetic: 10,000 box buildings over 1 km^2 + ground"});
-    cases.push_back({"synthetic_forest", [] { return engine::MakeSyntheticForest(5'000, 500.0, 1); },
-                     forest_flight, "synthetic: 5,000 trees (trunk + crown) over 0.25 km^2 + ground"});
+    cases.push_back({"synthetic_forest",
+                     [] { return engine::MakeSyntheticForest(5'000, 500.0, 1); }, forest_flight,
+                     "synthetic: 5,000 trees (trunk + crown) over 0.25 km^2 + ground"});
   }
   for (SceneCase& c : cases) {
     const engine::StaticScene scene = c.make();

@@ -8,22 +8,24 @@ namespace airis::tools {
 /// What `airis bench render` measures.
 struct RenderBenchOptions {
   int frames = 60;  ///< timed frames per case (after 5 warm-up frames)
-  /// Scene files of the city and forest cases (relative to the working directory); empty = skip the case.
+  /// Scene files of the city and forest cases (relative to the working directory); empty = skip the
+  /// case.
   std::string city_scene = "scenes/city.yaml";
   std::string forest_scene = "scenes/forest.yaml";
-  /// Also run the synthetic city (10,000 boxes over 1 km^2) and forest (5,000 trees) built in code, which
-  /// need no files (keys synthetic_city_*, synthetic_forest_*).
+  /// Also run the synthetic city (10,000 boxes over 1 km^2) and forest (5,000 trees) built in code,
+  /// which need no files (keys synthetic_city_*, synthetic_forest_*).
   bool synthetic = true;
 };
 
-/// Renders the city and the forest from a drone flying at 30 m (city: north along the street from the
-/// central crossing, camera 15 degrees down; forest: east over the crowns, 20 degrees down) at 640x480 and
-/// 1280x720 with a 90 degree horizontal field of view, RGB + planar depth + segmentation read back to the
-/// CPU every frame. Returns frames per second (wall clock) as JSON: city_640x480_fps, city_1280x720_fps,
-/// forest_640x480_fps, forest_1280x720_fps (and synthetic_city_*, synthetic_forest_*), the same with
-/// pipelined readback (*_pipelined_fps), mean triangles and draw calls per frame, the scenes used, and
-/// gl_vendor / gl_renderer / egl_platform. Throws what the EGL context throws, and ConfigError from the
-/// scene loader for a missing or bad scene file.
+/// Renders the city and the forest from a drone flying at 30 m (city: north along the street from
+/// the central crossing, camera 15 degrees down; forest: east over the crowns, 20 degrees down) at
+/// 640x480 and 1280x720 with a 90 degree horizontal field of view, RGB + planar depth +
+/// segmentation read back to the CPU every frame. Returns frames per second (wall clock) as JSON:
+/// city_640x480_fps, city_1280x720_fps, forest_640x480_fps, forest_1280x720_fps (and
+/// synthetic_city_*, synthetic_forest_*), the same with pipelined readback (*_pipelined_fps), mean
+/// triangles and draw calls per frame, the scenes used, and gl_vendor / gl_renderer / egl_platform.
+/// Throws what the EGL context throws, and ConfigError from the scene loader for a missing or bad
+/// scene file.
 nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options = {});
 
 }  // namespace airis::tools

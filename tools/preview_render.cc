@@ -34,10 +34,12 @@ cv::Mat ToBgr(const engine::Image<std::uint8_t>& rgb) {
 
 }  // namespace
 
-Eigen::Isometry3d CalcBirdsEyePose(const engine::StaticScene& scene, double hfov_deg, double aspect) {
+Eigen::Isometry3d CalcBirdsEyePose(const engine::StaticScene& scene, double hfov_deg,
+                                   double aspect) {
   Eigen::AlignedBox3d bounds;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) bounds.extend(scene.ObjectBounds(i));
-  if (bounds.isEmpty()) bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-10, -10, -1), Eigen::Vector3d(10, 10, 0));
+  if (bounds.isEmpty())
+    bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-10, -10, -1), Eigen::Vector3d(10, 10, 0));
   const Eigen::Vector3d centre = bounds.center();
   const double radius = 0.5 * bounds.sizes().norm();
   // Narrower of the two fields of view, so the scene's bounding sphere fits both ways.
@@ -66,7 +68,8 @@ PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOp
   double far_m = 100.0;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Eigen::AlignedBox3d b = scene.ObjectBounds(i);
-    far_m = std::max(far_m, (b.center() - result.T_WC.translation()).norm() + 0.5 * b.sizes().norm());
+    far_m =
+        std::max(far_m, (b.center() - result.T_WC.translation()).norm() + 0.5 * b.sizes().norm());
   }
   engine::CameraIntrinsics k = engine::CameraIntrinsics::FromHorizontalFov(
       options.width_px, options.height_px, options.hfov_deg, std::max(0.05, far_m * 1e-5), far_m);
@@ -74,7 +77,8 @@ PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOp
   engine::EglContext context;
   engine::GpuScene gpu(scene);
   if (!options.camera_position_m) {
-    // From the bird's-eye distance the scene's fog (meant for a drone's view) would hide everything.
+    // From the bird's-eye distance the scene's fog (meant for a drone's view) would hide
+    // everything.
     engine::SceneLighting clear = scene.lighting;
     clear.fog_distance_m = 0.0f;
     gpu.set_lighting(clear);
@@ -105,10 +109,13 @@ PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOp
   try {
     written = cv::imwrite(png_path, out);
   } catch (const cv::Exception& e) {
-    throw ConfigError({}, "out", "cannot write the preview (got '" + png_path + "': " + e.what() + ")");
+    throw ConfigError({}, "out",
+                      "cannot write the preview (got '" + png_path + "': " + e.what() + ")");
   }
   if (!written) {
-    throw ConfigError({}, "out", "cannot write the preview (got '" + png_path + "'; expected a writable .png path)");
+    throw ConfigError(
+        {}, "out",
+        "cannot write the preview (got '" + png_path + "'; expected a writable .png path)");
   }
   return result;
 }

@@ -10,14 +10,14 @@
 
 namespace airis::engine {
 
-/// Which images a camera produces. Every enabled output comes from the same geometry pass (multiple render
-/// targets); fewer outputs render faster.
+/// Which images a camera produces. Every enabled output comes from the same geometry pass (multiple
+/// render targets); fewer outputs render faster.
 struct RenderOutputs {
-  bool rgb = true;                ///< RGBA8, sRGB-encoded, alpha 255
-  bool depth_planar = false;      ///< float32 metres along the optical axis (camera z)
-  bool depth_perspective = false; ///< float32 metres along the pixel's ray (range)
-  bool segmentation = false;      ///< class id (uint8) and instance id (uint16), 0 = sky
-  bool normals = false;           ///< float32 x3 unit surface normal in the camera frame, 0 for sky
+  bool rgb = true;                 ///< RGBA8, sRGB-encoded, alpha 255
+  bool depth_planar = false;       ///< float32 metres along the optical axis (camera z)
+  bool depth_perspective = false;  ///< float32 metres along the pixel's ray (range)
+  bool segmentation = false;       ///< class id (uint8) and instance id (uint16), 0 = sky
+  bool normals = false;  ///< float32 x3 unit surface normal in the camera frame, 0 for sky
 
   template <class V>
   void Visit(V& v) {
@@ -37,7 +37,8 @@ struct RenderOutputs {
 /// Depth written where a pixel sees the sky.
 inline constexpr float kSkyDepthM = std::numeric_limits<float>::infinity();
 
-/// A row-major image: pixel (u, v) channel c at pixels[(v * width + u) * channels + c]; row 0 is the top.
+/// A row-major image: pixel (u, v) channel c at pixels[(v * width + u) * channels + c]; row 0 is
+/// the top.
 template <class T>
 struct Image {
   int width = 0;
@@ -62,14 +63,15 @@ struct Image {
 
 /// One rendered camera frame. Images of disabled outputs are empty.
 struct CameraFrame {
-  TimeNs time_ns = 0;                             ///< simulated time the frame shows
-  Eigen::Isometry3d T_WC = Eigen::Isometry3d::Identity();  ///< camera pose (optical frame -> world NED)
-  Image<std::uint8_t> rgba;                       ///< 4 channels, sRGB
-  Image<float> depth_planar_m;                    ///< kSkyDepthM for sky
-  Image<float> depth_perspective_m;               ///< kSkyDepthM for sky
-  Image<std::uint8_t> class_id;                   ///< kNoClass (0) for sky
-  Image<std::uint16_t> instance_id;               ///< kNoInstance (0) for sky
-  Image<float> normal_C;                          ///< 3 channels, zero for sky
+  TimeNs time_ns = 0;  ///< simulated time the frame shows
+  Eigen::Isometry3d T_WC =
+      Eigen::Isometry3d::Identity();  ///< camera pose (optical frame -> world NED)
+  Image<std::uint8_t> rgba;           ///< 4 channels, sRGB
+  Image<float> depth_planar_m;        ///< kSkyDepthM for sky
+  Image<float> depth_perspective_m;   ///< kSkyDepthM for sky
+  Image<std::uint8_t> class_id;       ///< kNoClass (0) for sky
+  Image<std::uint16_t> instance_id;   ///< kNoInstance (0) for sky
+  Image<float> normal_C;              ///< 3 channels, zero for sky
 };
 
 }  // namespace airis::engine

@@ -21,7 +21,8 @@ Eigen::Vector2d BrownConradyDistortion::Distort(const Eigen::Vector2d& xy) const
           y * radial + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y};
 }
 
-std::optional<Eigen::Vector2d> BrownConradyDistortion::Undistort(const Eigen::Vector2d& xy_d) const {
+std::optional<Eigen::Vector2d> BrownConradyDistortion::Undistort(
+    const Eigen::Vector2d& xy_d) const {
   constexpr int kMaxIterations = 50;
   constexpr double kTolerance = 1e-14;  // normalised units: far below a pixel of any real camera
   Eigen::Vector2d xy = xy_d;
@@ -71,8 +72,9 @@ void CameraIntrinsics::Validate() const {
   RequireFinite("cy_px", cy_px);
   RequirePositive("near_m", near_m);
   RequirePositive("far_m", far_m);
-  Require(far_m > near_m, "far_m", "must be greater than near_m (got " + FormatNumber(far_m) +
-                                        " <= " + FormatNumber(near_m) + ")");
+  Require(far_m > near_m, "far_m",
+          "must be greater than near_m (got " + FormatNumber(far_m) +
+              " <= " + FormatNumber(near_m) + ")");
   try {
     distortion.Validate();
   } catch (const InvalidField& e) {
@@ -95,7 +97,8 @@ std::optional<Eigen::Vector3d> CameraIntrinsics::CalcRay(const Eigen::Vector2d& 
 
 Mat3 CalcR_SC() {
   Mat3 R_SC;
-  // Columns: the optical axes x (right), y (down), z (forward) expressed in S (forward, right, down).
+  // Columns: the optical axes x (right), y (down), z (forward) expressed in S (forward, right,
+  // down).
   R_SC << 0, 0, 1,  //
       1, 0, 0,      //
       0, 1, 0;

@@ -15,26 +15,28 @@ namespace {
 
 enum Target { kRgb = 0, kDepthPlanar, kDepthPerspective, kClass, kInstance, kNormal };
 
-constexpr GLenum kInternalFormat[] = {GL_SRGB8_ALPHA8, GL_R32F,   GL_R32F,
-                                      GL_R8UI,         GL_R16UI,  GL_RGBA32F};
+constexpr GLenum kInternalFormat[] = {GL_SRGB8_ALPHA8, GL_R32F,  GL_R32F,
+                                      GL_R8UI,         GL_R16UI, GL_RGBA32F};
 constexpr const char* kDefine[] = {"OUT_RGB",   "OUT_DEPTH_PLANAR", "OUT_DEPTH_PERSPECTIVE",
                                    "OUT_CLASS", "OUT_INSTANCE",     "OUT_NORMAL"};
 constexpr const char* kRemapSampler[] = {"u_rgb",   "u_depth_planar", "u_depth_perspective",
                                          "u_class", "u_instance",     "u_normal"};
 // What the frame stores per pixel, and the read format that delivers exactly that.
-constexpr GLenum kPreferredFormat[] = {GL_RGBA, GL_RED, GL_RED, GL_RED_INTEGER, GL_RED_INTEGER,
-                                       GL_RGBA};
+constexpr GLenum kPreferredFormat[] = {GL_RGBA,        GL_RED,         GL_RED,
+                                       GL_RED_INTEGER, GL_RED_INTEGER, GL_RGBA};
 constexpr GLenum kPreferredType[] = {GL_UNSIGNED_BYTE, GL_FLOAT,          GL_FLOAT,
                                      GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_FLOAT};
 constexpr int kPreferredBytes[] = {4, 4, 4, 1, 2, 16};
-// The combination every ES 3.0 implementation must accept for that kind of buffer (fallback, converted).
-constexpr GLenum kFallbackFormat[] = {GL_RGBA, GL_RGBA, GL_RGBA, GL_RGBA_INTEGER, GL_RGBA_INTEGER,
-                                      GL_RGBA};
+// The combination every ES 3.0 implementation must accept for that kind of buffer (fallback,
+// converted).
+constexpr GLenum kFallbackFormat[] = {GL_RGBA,         GL_RGBA,         GL_RGBA,
+                                      GL_RGBA_INTEGER, GL_RGBA_INTEGER, GL_RGBA};
 constexpr GLenum kFallbackType[] = {GL_UNSIGNED_BYTE, GL_FLOAT,        GL_FLOAT,
                                     GL_UNSIGNED_INT,  GL_UNSIGNED_INT, GL_FLOAT};
 
-// Pinhole projection from the camera frame (x right, y down, z forward) to clip space, with window row 0 =
-// image row 0 (so the image is stored top-down) and pixel centres at integer image coordinates.
+// Pinhole projection from the camera frame (x right, y down, z forward) to clip space, with window
+// row 0 = image row 0 (so the image is stored top-down) and pixel centres at integer image
+// coordinates.
 Eigen::Matrix4f CalcProjection(const CameraIntrinsics& k) {
   const double w = k.width_px;
   const double h = k.height_px;
@@ -57,9 +59,10 @@ std::vector<Eigen::Vector4d> CalcFrustumPlanes(const CameraIntrinsics& k) {
   const double x_right = (k.width_px - 0.5 - k.cx_px) / k.fx_px;
   const double y_top = (-0.5 - k.cy_px) / k.fy_px;
   const double y_bottom = (k.height_px - 0.5 - k.cy_px) / k.fy_px;
-  std::vector<Eigen::Vector4d> planes = {
-      {1.0, 0.0, -x_left, 0.0}, {-1.0, 0.0, x_right, 0.0}, {0.0, 1.0, -y_top, 0.0},
-      {0.0, -1.0, y_bottom, 0.0}};
+  std::vector<Eigen::Vector4d> planes = {{1.0, 0.0, -x_left, 0.0},
+                                         {-1.0, 0.0, x_right, 0.0},
+                                         {0.0, 1.0, -y_top, 0.0},
+                                         {0.0, -1.0, y_bottom, 0.0}};
   for (auto& p : planes) p /= p.head<3>().norm();
   planes.emplace_back(0.0, 0.0, 1.0, -k.near_m);
   planes.emplace_back(0.0, 0.0, -1.0, k.far_m);
@@ -70,29 +73,41 @@ std::vector<Eigen::Vector4d> CalcFrustumPlanes(const CameraIntrinsics& k) {
 
 bool CameraRenderer::Enabled(int target) const {
   switch (target) {
-    case kRgb: return outputs_.rgb;
-    case kDepthPlanar: return outputs_.depth_planar;
-    case kDepthPerspective: return outputs_.depth_perspective;
+    case kRgb:
+      return outputs_.rgb;
+    case kDepthPlanar:
+      return outputs_.depth_planar;
+    case kDepthPerspective:
+      return outputs_.depth_perspective;
     case kClass:
-    case kInstance: return outputs_.segmentation;
-    case kNormal: return outputs_.normals;
-    default: return false;
+    case kInstance:
+      return outputs_.segmentation;
+    case kNormal:
+      return outputs_.normals;
+    default:
+      return false;
   }
 }
 
 CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics& intrinsics,
                                const RenderOutputs& outputs)
-    : context_(context), intrinsics_(intrinsics), render_intrinsics_(intrinsics), outputs_(outputs) {
+    : context_(context),
+      intrinsics_(intrinsics),
+      render_intrinsics_(intrinsics),
+      outputs_(outputs) {
   intrinsics_.Validate();
   outputs_.Validate();
   context_.MakeCurrent();
-  const bool float_targets = outputs_.depth_planar || outputs_.depth_perspective || outputs_.normals;
+  const bool float_targets =
+      outputs_.depth_planar || outputs_.depth_perspective || outputs_.normals;
   if (float_targets && !context_.HasExtension("GL_EXT_color_buffer_float")) {
-    throw std::runtime_error("the OpenGL ES driver (" + context_.gl_renderer() +
-                             ") lacks GL_EXT_color_buffer_float, needed for float32 depth and normals");
+    throw std::runtime_error(
+        "the OpenGL ES driver (" + context_.gl_renderer() +
+        ") lacks GL_EXT_color_buffer_float, needed for float32 depth and normals");
   }
 
-  // With distortion: the undistorted region every output pixel's ray needs, at the same focal length.
+  // With distortion: the undistorted region every output pixel's ray needs, at the same focal
+  // length.
   distorted_ = !intrinsics_.distortion.IsIdentity();
   std::vector<float> map;
   if (distorted_) {
@@ -143,8 +158,8 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
   glUseProgram(scene_program_.id());
   glUniform1i(scene_program_.Uniform("u_texture"), 0);
 
-  geometry_target_ = CreateTarget(render_intrinsics_.width_px, render_intrinsics_.height_px,
-                                  distorted_, true);
+  geometry_target_ =
+      CreateTarget(render_intrinsics_.width_px, render_intrinsics_.height_px, distorted_, true);
   if (distorted_) {
     output_target_ = CreateTarget(intrinsics_.width_px, intrinsics_.height_px, false, false);
     remap_program_ = GlProgram("remap", shaders::k_sky_vert, shaders::k_remap_frag, defines);
@@ -153,7 +168,8 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
       if (Enabled(t)) glUniform1i(remap_program_.Uniform(kRemapSampler[t]), t);
     }
     glUniform1i(remap_program_.Uniform("u_map"), kTargets);
-    glUniform2f(remap_program_.Uniform("u_source_size"), static_cast<float>(render_intrinsics_.width_px),
+    glUniform2f(remap_program_.Uniform("u_source_size"),
+                static_cast<float>(render_intrinsics_.width_px),
                 static_cast<float>(render_intrinsics_.height_px));
     glGenTextures(1, &remap_texture_);
     glBindTexture(GL_TEXTURE_2D, remap_texture_);
@@ -169,8 +185,8 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
   glGenBuffers(1, &instance_buffer_);
   planes_C_ = CalcFrustumPlanes(render_intrinsics_);
 
-  // Read formats: the implementation's own format when it is the frame's layout (no conversion), else the
-  // combination ES 3.0 guarantees, converted on the CPU.
+  // Read formats: the implementation's own format when it is the frame's layout (no conversion),
+  // else the combination ES 3.0 guarantees, converted on the CPU.
   glBindFramebuffer(GL_READ_FRAMEBUFFER, output_target_.fbo);
   std::size_t pbo_bytes = 0;
   const std::size_t pixels = static_cast<std::size_t>(intrinsics_.width_px) * intrinsics_.height_px;
@@ -227,7 +243,8 @@ CameraRenderer::RenderTarget CameraRenderer::CreateTarget(int width, int height,
     glGenTextures(1, &target.textures[t]);
     glBindTexture(GL_TEXTURE_2D, target.textures[t]);
     glTexStorage2D(GL_TEXTURE_2D, 1, kInternalFormat[t], width, height);
-    // Only the RGB source of the distortion remap is filtered; everything else is read texel by texel.
+    // Only the RGB source of the distortion remap is filtered; everything else is read texel by
+    // texel.
     const GLint filter = (sampled && t == kRgb) ? GL_LINEAR : GL_NEAREST;
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
@@ -244,9 +261,9 @@ CameraRenderer::RenderTarget CameraRenderer::CreateTarget(int width, int height,
   }
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error("render target " + std::to_string(width) + "x" + std::to_string(height) +
-                             " is incomplete (status " + std::to_string(status) + ") on " +
-                             context_.gl_renderer());
+    throw std::runtime_error("render target " + std::to_string(width) + "x" +
+                             std::to_string(height) + " is incomplete (status " +
+                             std::to_string(status) + ") on " + context_.gl_renderer());
   }
   CheckGl("render target");
   return target;
@@ -305,8 +322,8 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   glDepthFunc(GL_LESS);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
-  // Rows run top-down in window space, which mirrors the image: outward (counter-clockwise) faces arrive
-  // clockwise.
+  // Rows run top-down in window space, which mirrors the image: outward (counter-clockwise) faces
+  // arrive clockwise.
   glFrontFace(GL_CW);
   glDisable(GL_BLEND);
 
@@ -339,7 +356,8 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
     glDepthMask(GL_FALSE);
     glUseProgram(sky_program_.id());
     glUniform4f(sky_program_.Uniform("u_intrinsics"), static_cast<float>(k.fx_px),
-                static_cast<float>(k.fy_px), static_cast<float>(k.cx_px), static_cast<float>(k.cy_px));
+                static_cast<float>(k.fy_px), static_cast<float>(k.cx_px),
+                static_cast<float>(k.cy_px));
     glUniform3fv(sky_program_.Uniform("u_to_sun_C"), 1, to_sun_C.data());
     glUniform3fv(sky_program_.Uniform("u_up_C"), 1, up_C.data());
     glUniform3fv(sky_program_.Uniform("u_sun_rgb"), 1, light.sun_color_rgb.data());
@@ -394,12 +412,18 @@ void CameraRenderer::PrepareFrame(CameraFrame& out, TimeNs time_ns,
 
 void* CameraRenderer::FrameBuffer(int target, CameraFrame& out) const {
   switch (target) {
-    case kRgb: return out.rgba.pixels.data();
-    case kDepthPlanar: return out.depth_planar_m.pixels.data();
-    case kDepthPerspective: return out.depth_perspective_m.pixels.data();
-    case kClass: return out.class_id.pixels.data();
-    case kInstance: return out.instance_id.pixels.data();
-    default: return out.normal_C.pixels.data();
+    case kRgb:
+      return out.rgba.pixels.data();
+    case kDepthPlanar:
+      return out.depth_planar_m.pixels.data();
+    case kDepthPerspective:
+      return out.depth_perspective_m.pixels.data();
+    case kClass:
+      return out.class_id.pixels.data();
+    case kInstance:
+      return out.instance_id.pixels.data();
+    default:
+      return out.normal_C.pixels.data();
   }
 }
 
@@ -490,8 +514,9 @@ bool CameraRenderer::Collect(CameraFrame& out) {
   for (int t = 0; t < kTargets; ++t) {
     if (!Enabled(t)) continue;
     const std::size_t length = pixels * read_formats_[t].bytes_per_pixel;
-    const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, static_cast<GLintptr>(slot.offset[t]),
-                                          static_cast<GLsizeiptr>(length), GL_MAP_READ_BIT);
+    const void* mapped =
+        glMapBufferRange(GL_PIXEL_PACK_BUFFER, static_cast<GLintptr>(slot.offset[t]),
+                         static_cast<GLsizeiptr>(length), GL_MAP_READ_BIT);
     if (mapped == nullptr) throw std::runtime_error("cannot map the readback buffer");
     DeliverFromBytes(t, mapped, out);
     glUnmapBuffer(GL_PIXEL_PACK_BUFFER);

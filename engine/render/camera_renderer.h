@@ -15,47 +15,50 @@
 
 namespace airis::engine {
 
-/// Renders one camera's images of a GpuScene: frustum culling, one instanced geometry pass into multiple
-/// render targets (RGB, planar depth, perspective depth, class id, instance id, normals), the sky, the lens
-/// distortion remap when the camera has one, and readback.
+/// Renders one camera's images of a GpuScene: frustum culling, one instanced geometry pass into
+/// multiple render targets (RGB, planar depth, perspective depth, class id, instance id, normals),
+/// the sky, the lens distortion remap when the camera has one, and readback.
 ///
-/// Projection: pinhole with the camera's intrinsics; image rows are rendered top-down (row 0 of the GL
-/// framebuffer is image row 0), so readback needs no flip. With distortion, the scene is first rendered
-/// undistorted at the same focal length over the (larger) region that the distorted image sees, then every
-/// output pixel takes the undistorted sample its ray maps to (CameraIntrinsics::CalcRay of the pixel centre,
-/// i.e. the Brown-Conrady model inverted by Newton's method, once, into a lookup texture).
+/// Projection: pinhole with the camera's intrinsics; image rows are rendered top-down (row 0 of the
+/// GL framebuffer is image row 0), so readback needs no flip. With distortion, the scene is first
+/// rendered undistorted at the same focal length over the (larger) region that the distorted image
+/// sees, then every output pixel takes the undistorted sample its ray maps to
+/// (CameraIntrinsics::CalcRay of the pixel centre, i.e. the Brown-Conrady model inverted by
+/// Newton's method, once, into a lookup texture).
 ///
-/// Readback: Render() reads straight into the frame's buffers (no staging copy). Submit()/Collect() read into
-/// pixel buffer objects instead, so the GPU renders the next frame (another camera, or this camera's next
-/// pose) while the previous transfer completes; Collect() copies each image once from the mapped buffer.
-/// All calls need `context` current.
+/// Readback: Render() reads straight into the frame's buffers (no staging copy). Submit()/Collect()
+/// read into pixel buffer objects instead, so the GPU renders the next frame (another camera, or
+/// this camera's next pose) while the previous transfer completes; Collect() copies each image once
+/// from the mapped buffer. All calls need `context` current.
 class CameraRenderer {
  public:
   /// Frames that may be in flight between Submit() and Collect().
   static constexpr int kMaxInFlight = 2;
 
-  /// Builds the render targets and shader variants. Throws InvalidField on bad intrinsics or outputs (also
-  /// when the distortion model folds inside the image), std::runtime_error when the GL lacks float render
-  /// targets (EXT_color_buffer_float) or a shader fails to build.
+  /// Builds the render targets and shader variants. Throws InvalidField on bad intrinsics or
+  /// outputs (also when the distortion model folds inside the image), std::runtime_error when the
+  /// GL lacks float render targets (EXT_color_buffer_float) or a shader fails to build.
   CameraRenderer(const EglContext& context, const CameraIntrinsics& intrinsics,
                  const RenderOutputs& outputs);
   ~CameraRenderer();
   CameraRenderer(const CameraRenderer&) = delete;
   CameraRenderer& operator=(const CameraRenderer&) = delete;
 
-  /// Renders `scene` seen from T_WC (optical frame C -> world NED) at simulated time `time_ns` and reads
-  /// the enabled outputs into `out` (reusing its buffers).
-  void Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns, CameraFrame& out);
+  /// Renders `scene` seen from T_WC (optical frame C -> world NED) at simulated time `time_ns` and
+  /// reads the enabled outputs into `out` (reusing its buffers).
+  void Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
+              CameraFrame& out);
 
   /// Renders and starts an asynchronous readback. Requires frames_in_flight() < kMaxInFlight.
   void Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns);
-  /// Completes the oldest submitted frame into `out` (waiting for it if needed). Returns false when none is
-  /// in flight.
+  /// Completes the oldest submitted frame into `out` (waiting for it if needed). Returns false when
+  /// none is in flight.
   bool Collect(CameraFrame& out);
   int frames_in_flight() const { return in_flight_; }
 
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
-  /// Intrinsics of the undistorted image the geometry pass renders (equal to intrinsics() without distortion).
+  /// Intrinsics of the undistorted image the geometry pass renders (equal to intrinsics() without
+  /// distortion).
   const CameraIntrinsics& render_intrinsics() const { return render_intrinsics_; }
   const RenderOutputs& outputs() const { return outputs_; }
   /// Draw calls and triangles submitted by the last frame (after culling).

@@ -37,7 +37,8 @@ std::string EglErrorText() {
   return buffer;
 }
 
-// One way of making a display: a device (hardware or Mesa's software device) or the surfaceless platform.
+// One way of making a display: a device (hardware or Mesa's software device) or the surfaceless
+// platform.
 struct Candidate {
   std::string name;
   EGLenum platform = 0;
@@ -54,8 +55,8 @@ std::vector<Candidate> ListDevices(bool software, std::string& why_none) {
   }
   auto query_devices =
       reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-  auto query_string =
-      reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
+  auto query_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+      eglGetProcAddress("eglQueryDeviceStringEXT"));
   EGLDeviceEXT devices[16];
   EGLint count = 0;
   if (query_devices == nullptr || !query_devices(16, devices, &count) || count == 0) {
@@ -141,8 +142,8 @@ EglContext::EglContext(EglPlatform platform) : egl_(std::make_unique<Handles>())
       tried.push_back(c.name + ": OpenGL ES API unavailable (" + EglErrorText() + ")");
       continue;
     }
-    const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE, 0,
-                                        EGL_NONE};
+    const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE,
+                                        0, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint configs = 0;
     eglChooseConfig(display, config_attributes, &config, 1, &configs);
@@ -161,7 +162,8 @@ EglContext::EglContext(EglPlatform platform) : egl_(std::make_unique<Handles>())
       continue;
     }
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-      tried.push_back(c.name + ": eglMakeCurrent without a surface failed (" + EglErrorText() + ")");
+      tried.push_back(c.name + ": eglMakeCurrent without a surface failed (" + EglErrorText() +
+                      ")");
       eglDestroyContext(display, context);
       continue;
     }
@@ -172,14 +174,15 @@ EglContext::EglContext(EglPlatform platform) : egl_(std::make_unique<Handles>())
   }
 
   if (egl_->context == EGL_NO_CONTEXT) {
-    std::string message =
-        "cannot create a headless OpenGL ES 3 context with EGL. Tried (" +
-        std::string(ToString(platform)) + "):";
+    std::string message = "cannot create a headless OpenGL ES 3 context with EGL. Tried (" +
+                          std::string(ToString(platform)) + "):";
     for (const auto& t : tried) message += "\n  - " + t;
     if (tried.empty()) message += "\n  - nothing: libEGL offers neither platform";
     message +=
-        "\nInstall Mesa's EGL and software rasteriser (Debian/Ubuntu: apt install libegl1 libegl-mesa0 "
-        "libgl1-mesa-dri libgles2) or the NVIDIA driver's EGL (libEGL_nvidia), or pick a platform with " +
+        "\nInstall Mesa's EGL and software rasteriser (Debian/Ubuntu: apt install libegl1 "
+        "libegl-mesa0 "
+        "libgl1-mesa-dri libgles2) or the NVIDIA driver's EGL (libEGL_nvidia), or pick a platform "
+        "with " +
         std::string(kEglPlatformEnv) + "=device|surfaceless.";
     throw std::runtime_error(message);
   }
@@ -195,8 +198,8 @@ EglContext::EglContext(EglPlatform platform) : egl_(std::make_unique<Handles>())
 }
 
 EglContext::~EglContext() {
-  // The display is left initialised: EGL displays are shared per process and not reference counted, so
-  // terminating it would break any other context on it.
+  // The display is left initialised: EGL displays are shared per process and not reference counted,
+  // so terminating it would break any other context on it.
   if (egl_->context != EGL_NO_CONTEXT) {
     if (eglGetCurrentContext() == egl_->context) {
       eglMakeCurrent(egl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

@@ -8,23 +8,25 @@
 
 namespace airis::engine {
 
-/// Which EGL platform makes the display. kAuto tries, in order: the device platform on a hardware device
-/// (EGL_EXT_platform_device: NVIDIA's EGL, or Mesa on a GPU), Mesa's surfaceless platform
-/// (EGL_MESA_platform_surfaceless: llvmpipe where there is no GPU), then any device (Mesa's software device).
+/// Which EGL platform makes the display. kAuto tries, in order: the device platform on a hardware
+/// device (EGL_EXT_platform_device: NVIDIA's EGL, or Mesa on a GPU), Mesa's surfaceless platform
+/// (EGL_MESA_platform_surfaceless: llvmpipe where there is no GPU), then any device (Mesa's
+/// software device).
 enum class EglPlatform { kAuto, kDevice, kSurfaceless };
 std::span<const EnumName<EglPlatform>> EnumNames(EglPlatform);
 
 /// Environment variable that overrides the platform: "auto", "device" or "surfaceless".
 inline constexpr const char* kEglPlatformEnv = "AIRIS_EGL_PLATFORM";
 
-/// An OpenGL ES 3 context with no window, no surface and no X server (EGL_KHR_surfaceless_context): every
-/// render goes into framebuffer objects. The context is made current on the constructing thread; call
-/// MakeCurrent() before using it from another thread (one thread at a time).
+/// An OpenGL ES 3 context with no window, no surface and no X server (EGL_KHR_surfaceless_context):
+/// every render goes into framebuffer objects. The context is made current on the constructing
+/// thread; call MakeCurrent() before using it from another thread (one thread at a time).
 class EglContext {
  public:
-  /// Creates the display and an ES 3.0+ context. `platform` kAuto defers to $AIRIS_EGL_PLATFORM, then to the
-  /// automatic order. Throws std::runtime_error naming every platform tried, why each failed and what to
-  /// install, when no context can be made; ConfigError on a bad $AIRIS_EGL_PLATFORM.
+  /// Creates the display and an ES 3.0+ context. `platform` kAuto defers to $AIRIS_EGL_PLATFORM,
+  /// then to the automatic order. Throws std::runtime_error naming every platform tried, why each
+  /// failed and what to install, when no context can be made; ConfigError on a bad
+  /// $AIRIS_EGL_PLATFORM.
   explicit EglContext(EglPlatform platform = EglPlatform::kAuto);
   ~EglContext();
   EglContext(const EglContext&) = delete;

@@ -8,7 +8,8 @@ namespace airis::engine {
 
 namespace {
 
-GLuint Compile(GLenum type, std::string_view name, std::string_view body, const std::string& defines) {
+GLuint Compile(GLenum type, std::string_view name, std::string_view body,
+               const std::string& defines) {
   const std::string source = "#version 300 es\n" + defines + std::string(body);
   const GLuint shader = glCreateShader(type);
   const char* text = source.c_str();
@@ -56,7 +57,8 @@ GlProgram::GlProgram(std::string_view name, std::string_view vertex, std::string
     glGetProgramInfoLog(id_, length, nullptr, log.data());
     glDeleteProgram(id_);
     id_ = 0;
-    throw std::runtime_error("shader program " + std::string(name) + " does not link:\n" + log.data());
+    throw std::runtime_error("shader program " + std::string(name) + " does not link:\n" +
+                             log.data());
   }
 }
 

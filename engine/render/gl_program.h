@@ -12,8 +12,8 @@ class GlProgram {
  public:
   GlProgram() = default;
   /// Compiles `vertex` and `fragment` (sources without `#version`), each prefixed with
-  /// "#version 300 es\n" and `defines` (lines like "#define OUT_RGB 1\n"). Throws std::runtime_error with
-  /// the compiler's log and `name` when compiling or linking fails.
+  /// "#version 300 es\n" and `defines` (lines like "#define OUT_RGB 1\n"). Throws
+  /// std::runtime_error with the compiler's log and `name` when compiling or linking fails.
   GlProgram(std::string_view name, std::string_view vertex, std::string_view fragment,
             const std::string& defines);
   ~GlProgram();

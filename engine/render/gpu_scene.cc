@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <cstddef>
+#include <cstring>
 #include <map>
 #include <numeric>
 #include <opencv2/imgcodecs.hpp>
@@ -38,8 +38,8 @@ GLuint UploadTexture(const Material& material, std::size_t index) {
   glBindTexture(GL_TEXTURE_2D, texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   // Image row 0 is texture coordinate v = 0 (the glTF convention).
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, rgba.cols, rgba.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               rgba.ptr());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, rgba.cols, rgba.rows, 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, rgba.ptr());
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -75,8 +75,8 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     glGenBuffers(1, &gpu.index_buffer);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.index_buffer);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                 static_cast<GLsizeiptr>(m.indices.size() * sizeof(std::uint32_t)), m.indices.data(),
-                 GL_STATIC_DRAW);
+                 static_cast<GLsizeiptr>(m.indices.size() * sizeof(std::uint32_t)),
+                 m.indices.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offsetof(Vertex, p)));
@@ -100,8 +100,8 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     const Material& m = scene.materials[i];
     GpuMaterial gpu;
     for (int c = 0; c < 3; ++c) {
-      gpu.base_color_rgba[c] =
-          static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(m.base_color_rgb[c], 0.0f, 1.0f)));
+      gpu.base_color_rgba[c] = static_cast<std::uint8_t>(
+          std::lround(255.0f * std::clamp(m.base_color_rgb[c], 0.0f, 1.0f)));
     }
     gpu.base_color_rgba[3] = 255;
     gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m, i);
@@ -119,8 +119,8 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
       AIRIS_DEMAND(part.mesh < meshes_.size() && material < materials_.size());
       const std::int32_t textured =
           materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
-      auto [it, inserted] = batch_of.try_emplace({part.mesh, textured},
-                                                 static_cast<std::uint32_t>(batches_.size()));
+      auto [it, inserted] =
+          batch_of.try_emplace({part.mesh, textured}, static_cast<std::uint32_t>(batches_.size()));
       if (inserted) {
         batches_.emplace_back();
         batches_.back().mesh = part.mesh;
@@ -225,8 +225,9 @@ void GpuScene::DrawBatch(std::uint32_t b, GLuint instance_buffer, std::uint32_t 
   }
   glVertexAttribIPointer(6, 2, GL_UNSIGNED_INT, sizeof(GpuInstance),
                          reinterpret_cast<const void*>(base + offsetof(GpuInstance, class_id)));
-  glVertexAttribPointer(7, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(GpuInstance),
-                        reinterpret_cast<const void*>(base + offsetof(GpuInstance, base_color_rgba)));
+  glVertexAttribPointer(
+      7, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(GpuInstance),
+      reinterpret_cast<const void*>(base + offsetof(GpuInstance, base_color_rgba)));
   glDrawElementsInstanced(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr,
                           static_cast<GLsizei>(count));
 }

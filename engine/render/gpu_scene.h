@@ -11,8 +11,9 @@
 
 namespace airis::engine {
 
-/// One instance as the vertex shader reads it: rows of T_CO (object -> camera), the labels and the material's
-/// base colour (linear, 8 bits per channel) so that parts differing only in colour share one draw call.
+/// One instance as the vertex shader reads it: rows of T_CO (object -> camera), the labels and the
+/// material's base colour (linear, 8 bits per channel) so that parts differing only in colour share
+/// one draw call.
 struct GpuInstance {
   float T_CO_rows[12];
   std::uint32_t class_id;
@@ -20,7 +21,8 @@ struct GpuInstance {
   std::uint8_t base_color_rgba[4];
 };
 
-/// A frame's visible instances: the instance data (grouped per batch) and one instanced draw per batch.
+/// A frame's visible instances: the instance data (grouped per batch) and one instanced draw per
+/// batch.
 struct VisibleSet {
   struct Draw {
     std::uint32_t batch = 0;
@@ -32,16 +34,17 @@ struct VisibleSet {
   std::size_t triangles = 0;  ///< submitted this frame
 };
 
-/// The static scene on the GPU: every mesh uploaded once (vertex array + index buffer), materials with their
-/// textures, and the placed parts grouped into batches of (mesh, texture) for instanced drawing: untextured
-/// materials differ only in the per-instance colour, so a city of boxes in many colours is one draw call and
-/// its parts can be drawn front to back together. Needs the
-/// GL context current. Object parts keep their pose in double precision; each frame transforms the visible
-/// ones into the camera frame on the CPU (frustum culling and camera-relative precision in one pass).
+/// The static scene on the GPU: every mesh uploaded once (vertex array + index buffer), materials
+/// with their textures, and the placed parts grouped into batches of (mesh, texture) for instanced
+/// drawing: untextured materials differ only in the per-instance colour, so a city of boxes in many
+/// colours is one draw call and its parts can be drawn front to back together. Needs the GL context
+/// current. Object parts keep their pose in double precision; each frame transforms the visible
+/// ones into the camera frame on the CPU (frustum culling and camera-relative precision in one
+/// pass).
 class GpuScene {
  public:
-  /// Uploads `scene`. Throws ConfigError naming the material when a texture image cannot be read, and
-  /// std::runtime_error on a GL failure.
+  /// Uploads `scene`. Throws ConfigError naming the material when a texture image cannot be read,
+  /// and std::runtime_error on a GL failure.
   explicit GpuScene(const StaticScene& scene);
   ~GpuScene();
   GpuScene(const GpuScene&) = delete;
@@ -51,22 +54,24 @@ class GpuScene {
   struct Batch {
     std::uint32_t mesh = 0;
     std::int32_t textured_material = -1;  ///< material whose texture the batch binds, -1 for none
-    bool large = false;  ///< holds a part larger than 100 m (ground): drawn last, after the occluders
-    std::vector<Eigen::Affine3d> T_WP;  ///< part -> world
+    bool large =
+        false;  ///< holds a part larger than 100 m (ground): drawn last, after the occluders
+    std::vector<Eigen::Affine3d> T_WP;      ///< part -> world
     std::vector<Eigen::Vector4d> sphere_W;  ///< bounding sphere: centre (world) and radius (m)
     std::vector<std::uint32_t> class_id;
     std::vector<std::uint32_t> instance_id;
     std::vector<std::uint32_t> material;
   };
 
-  /// Visible parts for a camera at T_WC whose view is bounded by `planes_C` (inward unit normals n and
-  /// offsets d in the camera frame: a point p is inside when n.dot(p) + d >= 0). Sorted front to back within
-  /// each batch (cheap early depth rejection), batches of large parts last.
+  /// Visible parts for a camera at T_WC whose view is bounded by `planes_C` (inward unit normals n
+  /// and offsets d in the camera frame: a point p is inside when n.dot(p) + d >= 0). Sorted front
+  /// to back within each batch (cheap early depth rejection), batches of large parts last.
   void CollectVisible(const Eigen::Isometry3d& T_WC, const std::vector<Eigen::Vector4d>& planes_C,
                       VisibleSet& out) const;
 
-  /// Binds the vertex array of batch `b`'s mesh, points the per-instance attributes at `instance_buffer`
-  /// from instance `first`, binds the batch's texture and issues one glDrawElementsInstanced.
+  /// Binds the vertex array of batch `b`'s mesh, points the per-instance attributes at
+  /// `instance_buffer` from instance `first`, binds the batch's texture and issues one
+  /// glDrawElementsInstanced.
   void DrawBatch(std::uint32_t b, GLuint instance_buffer, std::uint32_t first, std::uint32_t count,
                  GLint has_texture_uniform) const;
 

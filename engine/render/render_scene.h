@@ -8,11 +8,12 @@
 
 namespace airis::engine {
 
-/// What every camera of a simulation shares: the EGL context and the static scene uploaded once. Cameras
-/// hold it by shared_ptr; all use it from one thread (the simulation thread).
+/// What every camera of a simulation shares: the EGL context and the static scene uploaded once.
+/// Cameras hold it by shared_ptr; all use it from one thread (the simulation thread).
 class RenderScene {
  public:
-  /// Creates the context (see EglContext) and uploads `scene`. Throws what EglContext and GpuScene throw.
+  /// Creates the context (see EglContext) and uploads `scene`. Throws what EglContext and GpuScene
+  /// throw.
   explicit RenderScene(const StaticScene& scene, EglPlatform platform = EglPlatform::kAuto)
       : context_(platform), gpu_scene_((context_.MakeCurrent(), scene)) {}
 

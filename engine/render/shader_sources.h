@@ -4,8 +4,9 @@
 
 namespace airis::engine::shaders {
 
-// GLSL ES 3.00 sources from shaders/, compiled into the library at build time (engine/render/CMakeLists.txt).
-// Each lacks its `#version` line: the renderer prepends `#version 300 es` and the `#define`s of a variant.
+// GLSL ES 3.00 sources from shaders/, compiled into the library at build time
+// (engine/render/CMakeLists.txt). Each lacks its `#version` line: the renderer prepends `#version
+// 300 es` and the `#define`s of a variant.
 
 /// shaders/scene.vert: instanced geometry, positions and normals into the camera frame.
 extern const std::string_view k_scene_vert;
@@ -15,7 +16,8 @@ extern const std::string_view k_scene_frag;
 extern const std::string_view k_sky_vert;
 /// shaders/sky.frag: the sky gradient and sun glow behind the geometry.
 extern const std::string_view k_sky_frag;
-/// shaders/remap.frag: applies lens distortion by looking up each output pixel in the undistorted render.
+/// shaders/remap.frag: applies lens distortion by looking up each output pixel in the undistorted
+/// render.
 extern const std::string_view k_remap_frag;
 
 }  // namespace airis::engine::shaders

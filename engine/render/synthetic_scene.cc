@@ -21,8 +21,8 @@ std::uint32_t AddVertex(TriangleMesh& m, const Eigen::Vector3f& p, const Eigen::
   return static_cast<std::uint32_t>(m.positions.size() - 1);
 }
 
-// A square face of half-size 0.5 centred at `centre` with outward normal n: corners counter-clockwise
-// around n (t1 x t2 = n).
+// A square face of half-size 0.5 centred at `centre` with outward normal n: corners
+// counter-clockwise around n (t1 x t2 = n).
 void AddQuad(TriangleMesh& m, const Eigen::Vector3f& centre, const Eigen::Vector3f& n,
              const Eigen::Vector3f& t1) {
   const Eigen::Vector3f t2 = n.cross(t1);
@@ -95,7 +95,8 @@ TriangleMesh MakeUnitCylinderMesh(int segments) {
     const std::uint32_t b = AddVertex(m, 0.5f * n1 + Eigen::Vector3f(0, 0, 0.5f), n1, {u1, 1});
     const std::uint32_t c = AddVertex(m, 0.5f * n1 - Eigen::Vector3f(0, 0, 0.5f), n1, {u1, 0});
     const std::uint32_t d = AddVertex(m, 0.5f * n0 - Eigen::Vector3f(0, 0, 0.5f), n0, {u0, 0});
-    // Seen from outside along n, +angle runs to the right and -z up: (a, d, c) is counter-clockwise.
+    // Seen from outside along n, +angle runs to the right and -z up: (a, d, c) is
+    // counter-clockwise.
     m.indices.insert(m.indices.end(), {a, c, b, a, d, c});
   }
   AddCap(m, segments, 0.5f, 1.0f);
@@ -148,9 +149,9 @@ std::uint32_t AddSinglePartModel(StaticScene& scene, const std::string& name, st
 void AddGround(StaticScene& scene, double size_m, std::uint32_t& next_instance) {
   scene.meshes.push_back(MakeUnitPlaneMesh());
   scene.materials.push_back({"ground", Eigen::Vector3f(0.30f, 0.30f, 0.28f), "", 0.3f, 0.6f});
-  const std::uint32_t model = AddSinglePartModel(
-      scene, "ground", static_cast<std::uint32_t>(scene.meshes.size() - 1),
-      static_cast<std::uint32_t>(scene.materials.size() - 1));
+  const std::uint32_t model =
+      AddSinglePartModel(scene, "ground", static_cast<std::uint32_t>(scene.meshes.size() - 1),
+                         static_cast<std::uint32_t>(scene.materials.size() - 1));
   StaticObject ground;
   ground.model = model;
   ground.T_WO = Eigen::Affine3d(Eigen::Scaling(size_m, size_m, 1.0));
@@ -169,8 +170,8 @@ StaticScene MakeSyntheticCity(int buildings, double extent_m, std::uint32_t seed
   AddGround(scene, 1.2 * extent_m, next_instance);
   scene.meshes.push_back(MakeUnitBoxMesh());
   const auto box = static_cast<std::uint32_t>(scene.meshes.size() - 1);
-  const Eigen::Vector3f facades[] = {{0.62f, 0.58f, 0.52f}, {0.45f, 0.47f, 0.52f},
-                                     {0.70f, 0.66f, 0.60f}, {0.52f, 0.36f, 0.28f}};
+  const Eigen::Vector3f facades[] = {
+      {0.62f, 0.58f, 0.52f}, {0.45f, 0.47f, 0.52f}, {0.70f, 0.66f, 0.60f}, {0.52f, 0.36f, 0.28f}};
   std::vector<std::uint32_t> models;
   for (int i = 0; i < 4; ++i) {
     scene.materials.push_back({"facade" + std::to_string(i), facades[i], "", 0.3f, 0.6f});
@@ -214,16 +215,18 @@ StaticScene MakeSyntheticForest(int trees, double extent_m, std::uint32_t seed) 
   scene.materials.push_back({"bark", Eigen::Vector3f(0.30f, 0.20f, 0.12f), "", 0.3f, 0.6f});
   scene.materials.push_back({"leaves", Eigen::Vector3f(0.12f, 0.32f, 0.10f), "", 0.3f, 0.6f});
   const auto bark = static_cast<std::uint32_t>(scene.materials.size() - 2);
-  // A tree 1 m tall: trunk over the lower third, crown over the upper 80 % (model origin at the ground).
+  // A tree 1 m tall: trunk over the lower third, crown over the upper 80 % (model origin at the
+  // ground).
   Model tree;
   tree.name = "conifer";
-  tree.parts.push_back({trunk_mesh, bark,
-                        Eigen::Affine3f(Eigen::Translation3f(0, 0, -0.15f) *
-                                        Eigen::Scaling(0.05f, 0.05f, 0.3f))});
-  tree.parts.push_back({crown_mesh, bark + 1,
-                        Eigen::Affine3f(Eigen::Translation3f(0, 0, -0.6f) *
-                                        Eigen::Scaling(0.4f, 0.4f, 0.8f))});
-  tree.bounds = Eigen::AlignedBox3f(Eigen::Vector3f(-0.2f, -0.2f, -1.0f), Eigen::Vector3f(0.2f, 0.2f, 0));
+  tree.parts.push_back(
+      {trunk_mesh, bark,
+       Eigen::Affine3f(Eigen::Translation3f(0, 0, -0.15f) * Eigen::Scaling(0.05f, 0.05f, 0.3f))});
+  tree.parts.push_back(
+      {crown_mesh, bark + 1,
+       Eigen::Affine3f(Eigen::Translation3f(0, 0, -0.6f) * Eigen::Scaling(0.4f, 0.4f, 0.8f))});
+  tree.bounds =
+      Eigen::AlignedBox3f(Eigen::Vector3f(-0.2f, -0.2f, -1.0f), Eigen::Vector3f(0.2f, 0.2f, 0));
   scene.models.push_back(tree);
   const auto tree_model = static_cast<std::uint32_t>(scene.models.size() - 1);
   scene.classes.push_back({3, "tree", Eigen::Vector3f(0.2f, 0.7f, 0.2f)});

@@ -18,12 +18,12 @@ enum class CameraAttachment {
 };
 std::span<const engine::EnumName<CameraAttachment>> EnumNames(CameraAttachment);
 
-/// A camera: image size and pinhole intrinsics (from the horizontal field of view, or explicit), clip planes,
-/// Brown-Conrady distortion, outputs, frame rate on the simulated clock and mount.
+/// A camera: image size and pinhole intrinsics (from the horizontal field of view, or explicit),
+/// clip planes, Brown-Conrady distortion, outputs, frame rate on the simulated clock and mount.
 ///
-/// Frames: the sensor frame S of the mount follows the body convention (x forward, y right, z down); the
-/// optical frame C has x right, y down, z forward, so R_SC = [[0,0,1],[1,0,0],[0,1,0]] and a camera whose
-/// mount is the identity looks along body x with image right along body y.
+/// Frames: the sensor frame S of the mount follows the body convention (x forward, y right, z
+/// down); the optical frame C has x right, y down, z forward, so R_SC = [[0,0,1],[1,0,0],[0,1,0]]
+/// and a camera whose mount is the identity looks along body x with image right along body y.
 struct CameraConfig {
   double rate_hz = 20.0;
   int width_px = 640;
@@ -48,7 +48,8 @@ struct CameraConfig {
     v.Field("hfov_deg", hfov_deg, "horizontal field of view (deg), used unless fx_px is given");
     v.Field("fx_px", fx_px, "focal length, horizontal (pixels); overrides hfov_deg");
     v.Field("fy_px", fy_px, "focal length, vertical (pixels); default fx_px");
-    v.Field("cx_px", cx_px, "principal point u (pixels, centre of the top-left pixel = 0); default centre");
+    v.Field("cx_px", cx_px,
+            "principal point u (pixels, centre of the top-left pixel = 0); default centre");
     v.Field("cy_px", cy_px, "principal point v (pixels); default centre");
     v.Field("near_m", near_m, "near clip plane (m)");
     v.Field("far_m", far_m, "far clip plane (m)");
@@ -64,8 +65,8 @@ struct CameraConfig {
   engine::CameraIntrinsics CalcIntrinsics() const;
 };
 
-/// Two identical cameras, the right one `baseline_m` to the right of the left (along the optical x axis),
-/// rendering the same instants. `camera` describes the left one.
+/// Two identical cameras, the right one `baseline_m` to the right of the left (along the optical x
+/// axis), rendering the same instants. `camera` describes the left one.
 struct StereoCameraConfig {
   CameraConfig camera;
   double baseline_m = 0.12;
@@ -73,7 +74,8 @@ struct StereoCameraConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("camera", camera, "the left camera (the right one is identical)");
-    v.Field("baseline_m", baseline_m, "distance from the left to the right camera along image x (m)");
+    v.Field("baseline_m", baseline_m,
+            "distance from the left to the right camera along image x (m)");
   }
   /// Throws InvalidField naming the field (`baseline_m`, `camera.rate_hz`, ...).
   void Validate() const;

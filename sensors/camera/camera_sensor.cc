@@ -29,7 +29,8 @@ Eigen::Isometry3d CalcCameraPose(const CameraConfig& config, const engine::Rigid
 
 std::vector<std::string> CameraPoseColumns(const std::string& prefix) {
   std::vector<std::string> out;
-  for (const char* c : {"p_WC_x_m", "p_WC_y_m", "p_WC_z_m", "q_WC_w", "q_WC_x", "q_WC_y", "q_WC_z"}) {
+  for (const char* c :
+       {"p_WC_x_m", "p_WC_y_m", "p_WC_z_m", "q_WC_w", "q_WC_x", "q_WC_y", "q_WC_z"}) {
     out.push_back(prefix + c);
   }
   return out;

@@ -15,13 +15,13 @@ namespace airis::sensors {
 /// (ignored for world-attached cameras): T_WC = T_WB * T_BS * T_SC (or T_WS * T_SC).
 Eigen::Isometry3d CalcCameraPose(const CameraConfig& config, const engine::RigidBodyState* state);
 
-/// A monocular camera: at each due instant of its own rate (exact on the simulated clock) it renders the
-/// scene from its pose into the outputs it was configured with. Telemetry rows carry the camera pose
-/// (p_WC in metres, q_WC); images are read through latest().
+/// A monocular camera: at each due instant of its own rate (exact on the simulated clock) it
+/// renders the scene from its pose into the outputs it was configured with. Telemetry rows carry
+/// the camera pose (p_WC in metres, q_WC); images are read through latest().
 class CameraSensor : public engine::Sensor {
  public:
-  /// Validates `config` (throws InvalidField) and builds the renderer on `scene`'s context (throws what
-  /// CameraRenderer throws).
+  /// Validates `config` (throws InvalidField) and builds the renderer on `scene`'s context (throws
+  /// what CameraRenderer throws).
   CameraSensor(std::string name, const CameraConfig& config,
                std::shared_ptr<const engine::RenderScene> scene);
 
@@ -45,7 +45,8 @@ class CameraSensor : public engine::Sensor {
   engine::CameraFrame frame_;
 };
 
-/// Column names of a camera pose row with prefix `prefix` ("" or "left_"): p_WC_{x,y,z}_m, q_WC_{w,x,y,z}.
+/// Column names of a camera pose row with prefix `prefix` ("" or "left_"): p_WC_{x,y,z}_m,
+/// q_WC_{w,x,y,z}.
 std::vector<std::string> CameraPoseColumns(const std::string& prefix);
 /// Writes T_WC into 7 numbers in the order of CameraPoseColumns.
 void CopyPose(const Eigen::Isometry3d& T_WC, std::span<double> out);

@@ -7,13 +7,14 @@
 
 namespace airis::sensors {
 
-/// A synchronised stereo pair: two identical cameras, the right one `baseline_m` along the left camera's
-/// image x axis, rendered at the same simulated instant on each due tick. The two frames go through
-/// asynchronous readback so the right image renders while the left one transfers. Telemetry rows carry both
-/// poses (left_..., right_...).
+/// A synchronised stereo pair: two identical cameras, the right one `baseline_m` along the left
+/// camera's image x axis, rendered at the same simulated instant on each due tick. The two frames
+/// go through asynchronous readback so the right image renders while the left one transfers.
+/// Telemetry rows carry both poses (left_..., right_...).
 class StereoCameraSensor : public engine::Sensor {
  public:
-  /// Validates `config` (throws InvalidField) and builds the renderer (throws what CameraRenderer throws).
+  /// Validates `config` (throws InvalidField) and builds the renderer (throws what CameraRenderer
+  /// throws).
   StereoCameraSensor(std::string name, const StereoCameraConfig& config,
                      std::shared_ptr<const engine::RenderScene> scene);
 

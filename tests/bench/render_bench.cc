@@ -1,6 +1,6 @@
-// Camera rendering speed: a drone's view of scenes/city.yaml and scenes/forest.yaml (when the scene loader
-// is built) and of the synthetic city (10,000 buildings over 1 km^2) and forest (5,000 trees), RGB + planar
-// depth + segmentation read back every frame. docs/rendering.md has the table.
+// Camera rendering speed: a drone's view of scenes/city.yaml and scenes/forest.yaml (when the scene
+// loader is built) and of the synthetic city (10,000 buildings over 1 km^2) and forest (5,000
+// trees), RGB + planar depth + segmentation read back every frame. docs/rendering.md has the table.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -40,16 +40,18 @@ struct Flight {
   double pitch_deg;
   double length_m;
 };
-// City: north along the street from the central crossing; forest: east over the crowns (as tools/bench_render).
+// City: north along the street from the central crossing; forest: east over the crowns (as
+// tools/bench_render).
 constexpr Flight kCityFlight{0.0, 30.0, -15.0, 300.0};
 constexpr Flight kForestFlight{90.0, 30.0, -20.0, 150.0};
 
 Eigen::Isometry3d DronePose(int k, const Flight& f) {
   const double s = f.length_m * static_cast<double>(k % 200) / 200.0;
   const double yaw_rad = f.yaw_deg * M_PI / 180.0;
-  const Eigen::Matrix3d R_WS = (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
-                                Eigen::AngleAxisd(f.pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()))
-                                   .toRotationMatrix();
+  const Eigen::Matrix3d R_WS =
+      (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(f.pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
   Eigen::Isometry3d T_WC = Eigen::Isometry3d::Identity();
   T_WC.linear() = R_WS * CalcR_SC();
   T_WC.translation() << s * std::cos(yaw_rad), s * std::sin(yaw_rad), -f.altitude_m;
@@ -72,8 +74,8 @@ void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& fli
     benchmark::DoNotOptimize(frame.rgba.pixels.data());
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                             benchmark::Counter::kIsRate);
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["triangles"] = static_cast<double>(renderer.last_triangles());
 }
 
@@ -84,7 +86,9 @@ BENCHMARK(BM_RenderSyntheticCity)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-void BM_RenderSyntheticForest(benchmark::State& state) { RunRender(state, Forest(), kForestFlight); }
+void BM_RenderSyntheticForest(benchmark::State& state) {
+  RunRender(state, Forest(), kForestFlight);
+}
 BENCHMARK(BM_RenderSyntheticForest)
     ->Args({640, 480})
     ->Args({1280, 720})
@@ -104,13 +108,23 @@ const GpuScene& SceneFile(const char* name) {
   return *slot;
 }
 
-void BM_RenderCity(benchmark::State& state) { RunRender(state, SceneFile("city.yaml"), kCityFlight); }
-BENCHMARK(BM_RenderCity)->Args({640, 480})->Args({1280, 720})->Unit(benchmark::kMillisecond)->UseRealTime();
+void BM_RenderCity(benchmark::State& state) {
+  RunRender(state, SceneFile("city.yaml"), kCityFlight);
+}
+BENCHMARK(BM_RenderCity)
+    ->Args({640, 480})
+    ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_RenderForest(benchmark::State& state) {
   RunRender(state, SceneFile("forest.yaml"), kForestFlight);
 }
-BENCHMARK(BM_RenderForest)->Args({640, 480})->Args({1280, 720})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderForest)
+    ->Args({640, 480})
+    ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 #endif
 
 // The CPU side alone: frustum culling and camera-relative instance transforms of 10,000 buildings.
@@ -122,7 +136,7 @@ void BM_CollectVisibleCity(benchmark::State& state) {
   std::vector<Eigen::Vector4d> planes = {
       Eigen::Vector4d(1, 0, x_edge, 0).normalized(), Eigen::Vector4d(-1, 0, x_edge, 0).normalized(),
       Eigen::Vector4d(0, 1, y_edge, 0).normalized(), Eigen::Vector4d(0, -1, y_edge, 0).normalized(),
-      Eigen::Vector4d(0, 0, 1, -k.near_m), Eigen::Vector4d(0, 0, -1, k.far_m)};
+      Eigen::Vector4d(0, 0, 1, -k.near_m),           Eigen::Vector4d(0, 0, -1, k.far_m)};
   VisibleSet visible;
   int i = 0;
   for (auto _ : state) {

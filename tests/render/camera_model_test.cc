@@ -37,7 +37,8 @@ TEST(CameraModelTest, DistortionMatchesOpenCvFormula) {
 }
 
 TEST(CameraModelTest, UndistortInvertsDistortAcrossTheImage) {
-  // A typical wide lens: the round trip must be exact far below a pixel (1e-10 normalised ~ 3e-8 px).
+  // A typical wide lens: the round trip must be exact far below a pixel (1e-10 normalised ~ 3e-8
+  // px).
   constexpr double kRoundTripTolerance = 1e-10;
   BrownConradyDistortion d{-0.28, 0.07, 0.001, -0.0015, 0.0};
   for (double x = -1.0; x <= 1.0; x += 0.1) {

@@ -17,7 +17,8 @@ using testing::LookPose;
 using testing::MakeEmptyScene;
 using testing::SharedContext;
 
-// Depth is written as float32 from the interpolated camera-frame position: a few units in the last place.
+// Depth is written as float32 from the interpolated camera-frame position: a few units in the last
+// place.
 constexpr double kFloatRelTolerance = 4e-7;  // ~3.4 float ulps (2^-23 = 1.19e-7)
 
 RenderOutputs AllOutputs() {
@@ -28,7 +29,8 @@ RenderOutputs AllOutputs() {
 
 // GIVEN a camera at the origin looking north at a 4 m box whose near face is 8 m away
 // WHEN it renders every output
-// THEN every face pixel has planar depth 8 and perspective depth equal to the ray length, the box's labels
+// THEN every face pixel has planar depth 8 and perspective depth equal to the ray length, the box's
+// labels
 //      and the face normal; every pixel whose ray misses the box is sky (0 labels, infinite depth).
 TEST(CameraRendererTest, BoxFaceDepthsLabelsAndSky) {
   EglContext& context = SharedContext();
@@ -43,7 +45,8 @@ TEST(CameraRendererTest, BoxFaceDepthsLabelsAndSky) {
 
   constexpr double kFaceDistanceM = 8.0;
   constexpr double kHalfSideM = 2.0;
-  constexpr double kEdgeMarginM = 0.05;  // keep pixel centres within ~0.3 px of an edge out of the check
+  constexpr double kEdgeMarginM =
+      0.05;  // keep pixel centres within ~0.3 px of an edge out of the check
   int face_pixels = 0;
   int sky_pixels = 0;
   for (int v = 0; v < k.height_px; ++v) {
@@ -56,7 +59,8 @@ TEST(CameraRendererTest, BoxFaceDepthsLabelsAndSky) {
         ++face_pixels;
         EXPECT_EQ(frame.class_id.at(u, v), 7) << u << "," << v;
         EXPECT_EQ(frame.instance_id.at(u, v), 4242) << u << "," << v;
-        EXPECT_NEAR(frame.depth_planar_m.at(u, v), kFaceDistanceM, kFaceDistanceM * kFloatRelTolerance);
+        EXPECT_NEAR(frame.depth_planar_m.at(u, v), kFaceDistanceM,
+                    kFaceDistanceM * kFloatRelTolerance);
         const double range = kFaceDistanceM * std::sqrt(1.0 + x * x + y * y);
         EXPECT_NEAR(frame.depth_perspective_m.at(u, v), range, range * kFloatRelTolerance)
             << u << "," << v;
@@ -80,8 +84,8 @@ TEST(CameraRendererTest, BoxFaceDepthsLabelsAndSky) {
   EXPECT_EQ(frame.rgba.at(0, 0, 3), 255);
 }
 
-// Stereo: a right camera displaced by baseline B along the image x axis sees a feature at depth Z shifted
-// left by f B / Z pixels. Measured as the shift of a vertical bar's pixel columns.
+// Stereo: a right camera displaced by baseline B along the image x axis sees a feature at depth Z
+// shifted left by f B / Z pixels. Measured as the shift of a vertical bar's pixel columns.
 double MeasureBarDisparity(double depth_m, double baseline_m, const CameraIntrinsics& k) {
   EglContext& context = SharedContext();
   StaticScene scene = MakeEmptyScene();
@@ -121,7 +125,8 @@ double MeasureBarDisparity(double depth_m, double baseline_m, const CameraIntrin
 
 TEST(CameraRendererTest, StereoDisparityIsFocalTimesBaselineOverDepth) {
   const CameraIntrinsics k = CameraIntrinsics::FromHorizontalFov(160, 120, 90.0, 0.1, 100.0);
-  // fx = 80 px, B = 0.5 m, Z = 4 m: exactly 10 px, so the bar's pixel set shifts by exactly 10 columns.
+  // fx = 80 px, B = 0.5 m, Z = 4 m: exactly 10 px, so the bar's pixel set shifts by exactly 10
+  // columns.
   EXPECT_NEAR(MeasureBarDisparity(4.0, 0.5, k), 80.0 * 0.5 / 4.0, 1e-9);
   // Z = 7 m: 5.714 px; the centroid of whole pixels is within half a pixel of it.
   constexpr double kQuantisationPx = 0.5;
@@ -154,8 +159,9 @@ Eigen::Vector2d RenderMarkerCentroid(const CameraIntrinsics& k, const Eigen::Vec
   return sum / std::max(n, 1);
 }
 
-// The centroid of a ~6 px blob of whole pixels and the projection of its centre agree to a fraction of a
-// pixel (pixel quantisation; perspective shifts a 0.1 m cube's image centre by < 0.01 px here).
+// The centroid of a ~6 px blob of whole pixels and the projection of its centre agree to a fraction
+// of a pixel (pixel quantisation; perspective shifts a 0.1 m cube's image centre by < 0.01 px
+// here).
 constexpr double kCentroidTolerancePx = 0.35;
 
 TEST(CameraRendererTest, PointLandsOnThePinholePixel) {
@@ -175,7 +181,8 @@ TEST(CameraRendererTest, PointLandsOnTheDistortedPixel) {
   const Eigen::Vector2d expected = *k.Project(p_C);
   CameraIntrinsics pinhole = k;
   pinhole.distortion = {};
-  // The lens moves this point by many pixels, so ignoring the distortion would fail the check below.
+  // The lens moves this point by many pixels, so ignoring the distortion would fail the check
+  // below.
   ASSERT_GT((*pinhole.Project(p_C) - expected).norm(), 10.0);
   const Eigen::Vector2d measured = RenderMarkerCentroid(k, p_C);
   EXPECT_LT((measured - expected).norm(), kCentroidTolerancePx) << measured.transpose();
@@ -209,9 +216,9 @@ TEST(CameraRendererTest, SameFrameRendersBitIdentically) {
     EXPECT_EQ(a.rgba.pixels, f->rgba.pixels);
     EXPECT_EQ(0, std::memcmp(a.depth_planar_m.pixels.data(), f->depth_planar_m.pixels.data(),
                              a.depth_planar_m.pixels.size() * sizeof(float)));
-    EXPECT_EQ(0, std::memcmp(a.depth_perspective_m.pixels.data(),
-                             f->depth_perspective_m.pixels.data(),
-                             a.depth_perspective_m.pixels.size() * sizeof(float)));
+    EXPECT_EQ(0,
+              std::memcmp(a.depth_perspective_m.pixels.data(), f->depth_perspective_m.pixels.data(),
+                          a.depth_perspective_m.pixels.size() * sizeof(float)));
     EXPECT_EQ(a.class_id.pixels, f->class_id.pixels);
     EXPECT_EQ(a.instance_id.pixels, f->instance_id.pixels);
     EXPECT_EQ(0, std::memcmp(a.normal_C.pixels.data(), f->normal_C.pixels.data(),

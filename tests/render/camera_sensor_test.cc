@@ -56,7 +56,7 @@ TEST(CameraSensorTest, IdentityMountLooksAlongBodyX) {
 
 TEST(CameraSensorTest, MountPitchedDownSeesTheGroundAtTheHeight) {
   CameraConfig config = SmallCamera();
-  config.mount.pitch_deg = -90.0;           // looking straight down
+  config.mount.pitch_deg = -90.0;             // looking straight down
   config.mount.position_m = {0.0, 0.0, 0.5};  // 0.5 m below the centre of mass
   CameraSensor camera("down", config, BoxesScene());
   RigidBodyState state;
@@ -125,7 +125,8 @@ TEST(StereoCameraSensorTest, PairIsSynchronisedWithTheBaselineAlongImageRight) {
   ASSERT_TRUE(stereo.Update(context));
   EXPECT_EQ(stereo.left().time_ns, stereo.right().time_ns);
   // Right camera = left + baseline along body y (image right) rotated into the world.
-  const Eigen::Vector3d offset_W = stereo.right().T_WC.translation() - stereo.left().T_WC.translation();
+  const Eigen::Vector3d offset_W =
+      stereo.right().T_WC.translation() - stereo.left().T_WC.translation();
   EXPECT_LT((offset_W - state.q_WB * Eigen::Vector3d(0.0, 0.25, 0.0)).norm(), 1e-12);
   EXPECT_TRUE(stereo.right().T_WC.linear().isApprox(stereo.left().T_WC.linear()));
   // Both see the north box; the right camera sees it further left.

@@ -39,8 +39,8 @@ TEST(EglContextTest, UnknownPlatformInEnvironmentIsAConfigError) {
 }
 
 TEST(EglContextTest, ExplicitPlatformIsHonoured) {
-  // Mesa offers the surfaceless platform with llvmpipe; an NVIDIA-only libEGL offers the device platform.
-  // Whichever the automatic choice used, asking for it by name must give the same kind.
+  // Mesa offers the surfaceless platform with llvmpipe; an NVIDIA-only libEGL offers the device
+  // platform. Whichever the automatic choice used, asking for it by name must give the same kind.
   const std::string automatic = testing::SharedContext().platform();
   const EglPlatform kind =
       automatic == "surfaceless" ? EglPlatform::kSurfaceless : EglPlatform::kDevice;

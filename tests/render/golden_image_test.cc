@@ -13,7 +13,8 @@
 namespace airis::engine {
 namespace {
 
-// A small lit scene: ground, three coloured boxes (one textured with a checkerboard), sun, sky and fog.
+// A small lit scene: ground, three coloured boxes (one textured with a checkerboard), sun, sky and
+// fog.
 StaticScene MakeGoldenScene(const std::string& texture_path) {
   StaticScene scene = testing::MakeEmptyScene();
   testing::AddGround(scene, 400.0, 1);
@@ -39,10 +40,10 @@ std::string WriteCheckerTexture() {
   return path;
 }
 
-// llvmpipe is deterministic, but LLVM or Mesa updates may round shading differently: allow a small mean
-// difference and a few outliers, far below what a changed light, colour or geometry produces.
-constexpr double kMeanAbsToleranceLevels = 1.0;    // per channel, 8-bit levels
-constexpr double kOutlierFraction = 0.01;          // pixels with a channel off by more than kOutlierLevels
+// llvmpipe is deterministic, but LLVM or Mesa updates may round shading differently: allow a small
+// mean difference and a few outliers, far below what a changed light, colour or geometry produces.
+constexpr double kMeanAbsToleranceLevels = 1.0;  // per channel, 8-bit levels
+constexpr double kOutlierFraction = 0.01;  // pixels with a channel off by more than kOutlierLevels
 constexpr int kOutlierLevels = 16;
 
 TEST(GoldenImageTest, LitSceneMatchesTheGoldenImage) {

@@ -24,8 +24,8 @@ void AddBox(StaticScene& scene, const Eigen::Vector3d& centre_W, const Eigen::Ve
             std::uint8_t class_id, std::uint32_t instance_id, const Eigen::Vector3f& color) {
   scene.materials.push_back({"box" + std::to_string(instance_id), color, "", 0.3f, 0.6f});
   Model model;
-  model.parts.push_back({0, static_cast<std::uint32_t>(scene.materials.size() - 1),
-                         Eigen::Affine3f::Identity()});
+  model.parts.push_back(
+      {0, static_cast<std::uint32_t>(scene.materials.size() - 1), Eigen::Affine3f::Identity()});
   model.bounds = scene.meshes[0].bounds;
   scene.models.push_back(model);
   StaticObject object;
@@ -39,8 +39,8 @@ void AddBox(StaticScene& scene, const Eigen::Vector3d& centre_W, const Eigen::Ve
 void AddGround(StaticScene& scene, double size_m, std::uint32_t instance_id) {
   scene.materials.push_back({"ground", Eigen::Vector3f(0.35f, 0.33f, 0.3f), "", 0.3f, 0.6f});
   Model model;
-  model.parts.push_back({1, static_cast<std::uint32_t>(scene.materials.size() - 1),
-                         Eigen::Affine3f::Identity()});
+  model.parts.push_back(
+      {1, static_cast<std::uint32_t>(scene.materials.size() - 1), Eigen::Affine3f::Identity()});
   model.bounds = scene.meshes[1].bounds;
   scene.models.push_back(model);
   StaticObject object;
