@@ -118,5 +118,35 @@ TEST(CollisionWorldTest, StaticTriangleMeshAndHullCollide) {
   }
 }
 
+TEST(CollisionWorldTest, CylinderHasAFlatTopOfItsRadius) {
+  // Unit cylinder: axis along z, diameter 1, flat ends at z = -0.5 and +0.5.
+  SceneBuilder b;
+  b.scene().meshes[0].primitive = Primitive::kCylinder;
+  b.AddBox("post", Vec3::Zero(), Vec3::Ones());
+  CollisionWorld world(b.scene());
+  const int body = world.AddBody(kQuadBox);
+  std::vector<Contact> contacts;
+  // The box's near edge 0.36 m from the axis: on the flat top (radius 0.5).
+  world.FindContacts(body, Vec3(0.45, 0.0, -0.519), Quat::Identity(), 0.0, contacts);
+  ASSERT_FALSE(contacts.empty());
+  EXPECT_NEAR(contacts[0].normal_W.z(), -1.0, 1e-4);
+  // Its near edge 0.51 m from the axis: beside the cylinder, not on it.
+  world.FindContacts(body, Vec3(0.6, 0.0, -0.519), Quat::Identity(), 0.0, contacts);
+  EXPECT_TRUE(contacts.empty());
+}
+
+TEST(CollisionWorldTest, BoxShapeIsTheModelsOrientedBoundingBox) {
+  // A sphere model forced to CollisionShape::kBox collides as its 1 x 1 x 1 bounding box: a corner
+  // region that the sphere leaves empty is solid.
+  SceneBuilder b;
+  b.scene().meshes[0].primitive = Primitive::kSphere;
+  b.AddBox("ball-as-box", Vec3::Zero(), Vec3::Ones(), -1, CollisionShape::kBox);
+  CollisionWorld world(b.scene());
+  const int body = world.AddBody(kQuadBox);
+  std::vector<Contact> contacts;
+  world.FindContacts(body, Vec3(0.45, 0.45, -0.519), Quat::Identity(), 0.0, contacts);
+  EXPECT_FALSE(contacts.empty());
+}
+
 }  // namespace
 }  // namespace airis::engine
