@@ -149,23 +149,29 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
     cached_dt_s_ = dt;
   }
   const double rho = context.air_density_kg_m3;
-  engine::Wrench wrench;
-  for (std::size_t i = 0; i < rotors_.size(); ++i) {
+  // Accumulated in two local vectors (kept in registers), written once.
+  Vec3 force_B = Vec3::Zero(), torque_B = Vec3::Zero();
+  const double* commands = commands_.data();
+  const std::size_t count = rotors_.size();
+  for (std::size_t i = 0; i < count; ++i) {
     Rotor& r = rotors_[i];
     if (r.tilt_channel >= 0) {
-      const double target = commands_[static_cast<std::size_t>(r.tilt_channel)] * r.max_tilt_rad;
+      const double target = commands[r.tilt_channel] * r.max_tilt_rad;
       const double limit = r.tilt_rate_rad_s * dt;
       const double step = std::clamp(target - r.tilt_rad, -limit, limit);
       if (step != 0.0) ApplyTilt(r, r.tilt_rad + step);
     }
-    const double command = commands_[i];
+    const double command = commands[i];
     const double offset = r.u - command;
     const double u_mean = command + offset * r.lag_mean;  // the lag's exact mean over the step
     r.u = command + offset * r.lag_decay;
     const double scale = rho * u_mean;
-    wrench.force_B += scale * r.force_per_density_B;
-    wrench.torque_B += scale * r.torque_per_density_B;
+    force_B += scale * r.force_per_density_B;
+    torque_B += scale * r.torque_per_density_B;
   }
+  engine::Wrench wrench;
+  wrench.force_B = force_B;
+  wrench.torque_B = torque_B;
   return wrench;
 }
 
