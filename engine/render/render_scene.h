@@ -17,6 +17,11 @@ class RenderScene {
   explicit RenderScene(const StaticScene& scene, EglPlatform platform = EglPlatform::kAuto)
       : context_(platform), gpu_scene_((context_.MakeCurrent(), scene)) {}
 
+  /// Makes the context current so the scene's GL objects are deleted in it.
+  ~RenderScene() { context_.MakeCurrent(); }
+  RenderScene(const RenderScene&) = delete;
+  RenderScene& operator=(const RenderScene&) = delete;
+
   const EglContext& context() const { return context_; }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
 
