@@ -56,6 +56,23 @@ void BM_GenerateForest10k(benchmark::State& state) {
 }
 BENCHMARK(BM_GenerateForest10k)->Unit(benchmark::kMillisecond);
 
+// The Poisson-disc sampling alone (Bridson, r = 3 m over 36 ha, before thinning to the density).
+void BM_PoissonDisc36ha(benchmark::State& state) {
+  std::size_t points = 0;
+  {
+    engine::RandomStream warm(1);
+    points = PoissonDiscSample(Eigen::Vector2d(-300, -300), Eigen::Vector2d(300, 300), 3.0, warm).size();
+  }
+  for (auto _ : state) {
+    engine::RandomStream stream(1);
+    auto p = PoissonDiscSample(Eigen::Vector2d(-300, -300), Eigen::Vector2d(300, 300), 3.0, stream);
+    benchmark::DoNotOptimize(p.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(points));
+  state.counters["points"] = static_cast<double>(points);
+}
+BENCHMARK(BM_PoissonDisc36ha)->Unit(benchmark::kMillisecond);
+
 void BM_GenerateCity10k(benchmark::State& state) {
   const CityConfig config = TenThousandObjectCity();
   auto run = [&] {
@@ -83,7 +100,7 @@ void BM_LoadForestScene10k(benchmark::State& state) {
       "  - forest: {area: {size_m: [600, 600]}, density_per_ha: 280, clearings: [{center_m: [0, "
       "0], radius_m: 10}]}\n"
       "vehicles:\n"
-      "  - {name: d, preset: quadrotor, start: {position_m: [0, 0, -0.2]}}\n";
+      "  - {name: d, preset: quad_x, start: {position_m: [0, 0, -0.2]}}\n";
   const Scene warm = LoadSceneFromString(text, "bench.yaml");
   for (auto _ : state) {
     Scene s = LoadSceneFromString(text, "bench.yaml");
