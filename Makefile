@@ -19,9 +19,12 @@ build: configure
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS)
 
-# The main job: environment at the default point (replaced by the demo mission and dataset as they land).
+# The main job: fly the city survey and write a small labeled dataset (about 100 frames of RGB, depth,
+# segmentation and COCO annotations) into out/demo_dataset, then print where its contact sheet is.
+DEMO_OUT ?= out/demo_dataset
 demo: build
-	./$(BUILD)/airis env
+	rm -rf $(DEMO_OUT)
+	./$(BUILD)/airis dataset scenes/city.yaml --mission scenes/missions/city_survey.yaml --out $(DEMO_OUT)
 
 # Every Google Benchmark program under tests/bench/.
 bench: build

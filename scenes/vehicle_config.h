@@ -11,6 +11,7 @@
 
 #include "engine/core/config.h"
 #include "sensors/barometer.h"
+#include "sensors/camera/camera_config.h"
 #include "sensors/gps.h"
 #include "sensors/imu.h"
 #include "sensors/lidar.h"
@@ -29,6 +30,8 @@ struct SensorEntryConfig {
   std::optional<sensors::GpsConfig> gps;
   std::optional<sensors::RangefinderConfig> rangefinder;
   std::optional<sensors::LidarConfig> lidar;
+  std::optional<sensors::CameraConfig> camera;
+  std::optional<sensors::StereoCameraConfig> stereo_camera;
 
   template <class V>
   void Visit(V& v) {
@@ -39,6 +42,8 @@ struct SensorEntryConfig {
     v.Field("gps", gps, "GPS receiver");
     v.Field("rangefinder", rangefinder, "single-beam rangefinder");
     v.Field("lidar", lidar, "scanning lidar");
+    v.Field("camera", camera, "camera rendering RGB, depth, segmentation (docs/rendering.md)");
+    v.Field("stereo_camera", stereo_camera, "synchronised stereo pair of cameras");
   }
   /// Throws InvalidField unless exactly one kind is given.
   void Validate() const;
@@ -47,7 +52,8 @@ struct SensorEntryConfig {
 /// A sensor's config, by kind.
 using SensorConfig =
     std::variant<sensors::ImuConfig, sensors::BarometerConfig, sensors::MagnetometerConfig,
-                 sensors::GpsConfig, sensors::RangefinderConfig, sensors::LidarConfig>;
+                 sensors::GpsConfig, sensors::RangefinderConfig, sensors::LidarConfig,
+                 sensors::CameraConfig, sensors::StereoCameraConfig>;
 
 /// The file spelling of the kind held by `config` ("imu", "barometer", ...).
 std::string SensorKindName(const SensorConfig& config);

@@ -2,7 +2,10 @@
 
 #include "engine/core/random.h"
 #include "engine/world/embree_ray_caster.h"
+#include "engine/render/render_scene.h"
 #include "sensors/barometer.h"
+#include "sensors/camera/camera_sensor.h"
+#include "sensors/camera/stereo_camera_sensor.h"
 #include "sensors/gps.h"
 #include "sensors/imu.h"
 #include "sensors/lidar.h"
@@ -14,9 +17,15 @@ namespace airis::scenes {
 
 namespace {
 
-/// The engine Sensor for `description`, with its own random stream.
-std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d,
-                                           engine::RandomStream stream) {
+/// The engine Sensor for `description`, with its own random stream. Cameras share one GPU copy of the
+/// static scene, made on first use (so scenes without cameras need no EGL display).
+std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d, engine::RandomStream stream,
+                                           const engine::StaticScene& scene,
+                                           std::shared_ptr<const engine::RenderScene>& render) {
+  auto render_scene = [&] {
+    if (!render) render = std::make_shared<const engine::RenderScene>(scene);
+    return render;
+  };
   return std::visit(
       [&](const auto& config) -> std::unique_ptr<engine::Sensor> {
         using T = std::decay_t<decltype(config)>;
@@ -30,6 +39,10 @@ std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d,
           return std::make_unique<sensors::Gps>(d.name, config, std::move(stream));
         } else if constexpr (std::is_same_v<T, sensors::RangefinderConfig>) {
           return std::make_unique<sensors::Rangefinder>(d.name, config, std::move(stream));
+        } else if constexpr (std::is_same_v<T, sensors::CameraConfig>) {
+          return std::make_unique<sensors::CameraSensor>(d.name, config, render_scene());
+        } else if constexpr (std::is_same_v<T, sensors::StereoCameraConfig>) {
+          return std::make_unique<sensors::StereoCameraSensor>(d.name, config, render_scene());
         } else {
           return std::make_unique<sensors::Lidar>(d.name, config, std::move(stream));
         }
@@ -47,6 +60,7 @@ std::unique_ptr<engine::World> BuildWorld(const Scene& scene,
                                   streams.Stream("environment/wind"));
   auto world = std::make_unique<engine::World>(static_scene, std::move(environment), physics);
   world->set_ray_caster(std::make_unique<engine::EmbreeRayCaster>(*static_scene));
+  std::shared_ptr<const engine::RenderScene> render;  // made by the first camera
   for (const VehicleDescription& v : scene.vehicles) {
     try {
       auto vehicle = std::make_unique<vehicles::Multirotor>(v.name, v.airframe);
@@ -54,7 +68,8 @@ std::unique_ptr<engine::World> BuildWorld(const Scene& scene,
       vehicle->state().q_WB = engine::QuatFromEuler({0.0, 0.0, v.yaw_rad});
       const std::size_t index = world->AddVehicle(std::move(vehicle));
       for (const SensorDescription& s : v.sensors) {
-        world->AddSensor(index, MakeSensor(s, streams.Stream("vehicles/" + v.name + "/" + s.name)));
+        world->AddSensor(index, MakeSensor(s, streams.Stream("vehicles/" + v.name + "/" + s.name),
+                                           *static_scene, render));
       }
     } catch (const engine::InvalidField& e) {
       throw engine::ConfigError(v.where, v.key_path + "." + e.field(), e.problem());

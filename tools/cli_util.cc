@@ -25,6 +25,10 @@ int RunReportingErrors(const std::function<int()>& body) {
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
+  } catch (const std::exception& e) {
+    // Everything else users meet (a full disk, no EGL display) carries its own clear message.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
   }
 }
 

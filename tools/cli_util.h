@@ -10,7 +10,8 @@
 namespace airis::tools {
 
 /// Runs a command body and turns the errors users can cause into one clear line on stderr and exit code 2
-/// (ConfigError, std::out_of_range and std::invalid_argument from models, SimulationError: exit code 3).
+/// (ConfigError, std::out_of_range and std::invalid_argument from models; SimulationError: exit code 3; any other
+/// std::exception, such as a full disk or no EGL display: exit code 1, its message).
 /// Returns the body's exit code otherwise. No stack traces, no noise.
 int RunReportingErrors(const std::function<int()>& body);
 

@@ -10,5 +10,6 @@ void AddEnvCommand(CLI::App& app, int& exit_code);
 void AddSceneCommand(CLI::App& app, int& exit_code);
 void AddRunCommand(CLI::App& app, int& exit_code);
 void AddBenchCommand(CLI::App& app, int& exit_code);
+void AddDatasetCommand(CLI::App& app, int& exit_code);
 
 }  // namespace airis::tools

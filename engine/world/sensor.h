@@ -47,6 +47,11 @@ class Sensor {
     listeners_.push_back(std::move(listener));
   }
 
+  /// A disabled sensor keeps its schedule (its rate stays exact) but takes no samples: cameras are switched
+  /// off while nothing records them. Enabled by default.
+  void set_enabled(bool enabled) { enabled_ = enabled; }
+  bool enabled() const { return enabled_; }
+
   const std::string& name() const { return name_; }
   const RateSchedule& schedule() const { return schedule_; }
   /// Simulated time of the last sample (-1 before the first).
@@ -60,6 +65,7 @@ class Sensor {
   std::string name_;
   RateSchedule schedule_;
   TimeNs last_sample_ns_ = -1;
+  bool enabled_ = true;
   std::vector<std::function<void(const Sensor&)>> listeners_;
 };
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "engine/dataset/image_encoding.h"
+#include "engine/dataset/sha256.h"
 #include "tests/dataset/test_frames.h"
 
 namespace airis::engine {
@@ -78,6 +79,21 @@ TEST(ImageEncodingTest, LabelAndColourPngsRoundTripExactly) {
   EXPECT_EQ(DecodeRgbPng(EncodeRgbPng(frame->rgba)).pixels, frame->rgba.pixels);
   // Fixed settings: the same image gives the same bytes.
   EXPECT_EQ(EncodeRgbPng(frame->rgba), EncodeRgbPng(frame->rgba));
+}
+
+}  // namespace
+}  // namespace airis::engine
+
+namespace airis::engine {
+namespace {
+
+TEST(Sha256Test, MatchesFips180Vectors) {
+  // FIPS 180-4 / NIST example values.
+  EXPECT_EQ(Sha256Hex(std::string("abc")),
+            "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(Sha256Hex(std::string("")), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(Sha256Hex(std::string("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq")),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 }
 
 }  // namespace

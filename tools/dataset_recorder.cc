@@ -1,0 +1,238 @@
+#include "tools/dataset_recorder.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.h"
+#include "engine/dataset/coco_json.h"
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/image_encoding.h"
+#include "engine/render/colorize.h"
+#include "sensors/camera/camera_sensor.h"
+#include "sensors/camera/stereo_camera_sensor.h"
+
+namespace airis::tools {
+namespace {
+
+std::string FrameFile(const char* kind, std::int64_t index, const char* ext) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%s/%06lld%s", kind, static_cast<long long>(index), ext);
+  return buf;
+}
+
+nlohmann::json MountJson(const engine::MountConfig& m) {
+  return {{"position_m", {m.position_m.x(), m.position_m.y(), m.position_m.z()}},
+          {"roll_deg", m.roll_deg},
+          {"pitch_deg", m.pitch_deg},
+          {"yaw_deg", m.yaw_deg}};
+}
+
+// The outputs a camera can give to a dataset: what the user asked for, of what the camera renders.
+engine::DatasetOutputs OutputsFor(const engine::DatasetOutputs& wanted, const engine::RenderOutputs& has) {
+  engine::DatasetOutputs o = wanted;
+  o.rgb = wanted.rgb && has.rgb;
+  o.depth_png = wanted.depth_png && has.depth_planar;
+  o.depth_npy = wanted.depth_npy && has.depth_planar;
+  o.segmentation = wanted.segmentation && has.segmentation;
+  o.normals = wanted.normals && has.normals;
+  return o;
+}
+
+// Nearest-neighbour copy of `src` (RGB8 or RGBA8) into `dst` (RGB8) at (x0, y0), shrunk by `step`.
+void Blit(const engine::Image<std::uint8_t>& src, int step, engine::Image<std::uint8_t>& dst, int x0, int y0) {
+  for (int v = 0; v * step < src.height; ++v) {
+    for (int u = 0; u * step < src.width; ++u) {
+      for (int c = 0; c < 3; ++c) dst.at(x0 + u, y0 + v, c) = src.at(u * step, v * step, c);
+    }
+  }
+}
+
+}  // namespace
+
+struct DatasetRecorder::Recording {
+  int writer_camera = 0;
+  engine::DatasetOutputs outputs;
+  std::unique_ptr<engine::CsvWriter> poses;
+  std::vector<engine::CocoImage> images;
+  std::int64_t next_frame = 0;
+  std::optional<engine::RateSchedule> capture_schedule;
+};
+
+DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
+    : world_(world), options_(options), writer_(options.root, options.writer) {
+  auto wanted = [&](const std::string& name) {
+    return options_.cameras.empty() ||
+           std::find(options_.cameras.begin(), options_.cameras.end(), name) != options_.cameras.end();
+  };
+  auto add = [&](const std::string& name, const std::string& vehicle, const engine::CameraIntrinsics& k,
+                 double rate_hz, nlohmann::json mount, const engine::RenderOutputs& has) -> std::size_t {
+    auto rec = std::make_unique<Recording>();
+    rec->outputs = OutputsFor(options_.outputs, has);
+    rec->writer_camera = writer_.AddCamera(name, rec->outputs);
+    const std::vector<std::string> columns = {"time_ns", "time_s", "frame", "p_n_m", "p_e_m", "p_d_m",
+                                              "q_w", "q_x", "q_y", "q_z", "latitude_deg", "longitude_deg",
+                                              "altitude_m"};
+    rec->poses = std::make_unique<engine::CsvWriter>(options_.root / name / "poses.csv", columns);
+    recordings_.push_back(std::move(rec));
+    info_.push_back({name, vehicle, k, rate_hz, std::move(mount), 0});
+    return recordings_.size() - 1;
+  };
+  std::vector<std::string> found;
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    const std::string& vehicle = world.vehicle(v).name();
+    for (const auto& sensor : world.sensors(v)) {
+      if (auto* mono = dynamic_cast<sensors::CameraSensor*>(sensor.get())) {
+        found.push_back(mono->name());
+        if (!wanted(mono->name())) continue;
+        const std::size_t i = add(mono->name(), vehicle, mono->intrinsics(), mono->config().rate_hz,
+                                  MountJson(mono->config().mount), mono->config().outputs);
+        mono->AddListener([this, i, mono](const engine::Sensor&) { OnFrame(i, mono->latest()); });
+      } else if (auto* stereo = dynamic_cast<sensors::StereoCameraSensor*>(sensor.get())) {
+        const std::string base = stereo->name();
+        found.push_back(base + "_left");
+        found.push_back(base + "_right");
+        if (!wanted(base + "_left") && !wanted(base + "_right") && !wanted(base)) continue;
+        nlohmann::json mount = MountJson(stereo->config().camera.mount);
+        mount["baseline_m"] = stereo->config().baseline_m;
+        const auto& c = stereo->config().camera;
+        const std::size_t l = add(base + "_left", vehicle, stereo->intrinsics(), c.rate_hz, mount, c.outputs);
+        const std::size_t r = add(base + "_right", vehicle, stereo->intrinsics(), c.rate_hz, mount, c.outputs);
+        stereo->AddListener([this, l, r, stereo](const engine::Sensor&) {
+          OnFrame(l, stereo->left());
+          OnFrame(r, stereo->right());
+        });
+      }
+    }
+  }
+  for (const std::string& name : options_.cameras) {
+    const bool known = std::find(found.begin(), found.end(), name) != found.end() ||
+                       std::find(found.begin(), found.end(), name + "_left") != found.end();
+    if (!known) {
+      std::string all;
+      for (const auto& f : found) all += (all.empty() ? "" : ", ") + f;
+      throw engine::ConfigError({}, "--cameras",
+                                "no camera '" + name + "' in the scene (it has " + (all.empty() ? "none" : all) + ")");
+    }
+  }
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    for (const auto& sensor : world.sensors(v)) {
+      if (dynamic_cast<sensors::CameraSensor*>(sensor.get()) || dynamic_cast<sensors::StereoCameraSensor*>(sensor.get())) {
+        camera_sensors_.push_back(sensor.get());
+        sensor->set_enabled(false);  // until a capture step starts recording
+      }
+    }
+  }
+  if (recordings_.empty()) {
+    throw engine::ConfigError({}, "scene", "the scene has no camera to record (add a 'camera' sensor to a vehicle)");
+  }
+}
+
+DatasetRecorder::~DatasetRecorder() = default;
+
+void DatasetRecorder::SetCapture(const engine::CaptureStep& capture) {
+  recording_ = capture.enabled;
+  // Cameras render only while recording.
+  for (engine::Sensor* camera : camera_sensors_) camera->set_enabled(capture.enabled);
+  only_ = capture.cameras;
+  capture_rate_hz_ = capture.rate_hz;
+  for (auto& rec : recordings_) {
+    rec->capture_schedule.reset();
+    if (capture.enabled && capture.rate_hz > 0.0) rec->capture_schedule.emplace(capture.rate_hz, 0);
+  }
+}
+
+void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& frame) {
+  if (!recording_) return;
+  const std::string& name = info_[camera].name;
+  if (!only_.empty() && std::find(only_.begin(), only_.end(), name) == only_.end()) return;
+  Recording& rec = *recordings_[camera];
+  if (rec.capture_schedule && rec.capture_schedule->ConsumeDue(frame.time_ns) == 0) return;
+  const std::int64_t index = rec.next_frame++;
+  if (options_.resume && writer_.FrameComplete(rec.writer_camera, index)) {
+    writer_.Adopt(rec.writer_camera, index);
+  } else {
+    writer_.Submit(rec.writer_camera, index, std::make_shared<engine::CameraFrame>(frame));
+  }
+  const Eigen::Vector3d p = frame.T_WC.translation();
+  const engine::Quat q(frame.T_WC.rotation());
+  const engine::GeodeticPosition g = world_.environment().frame().ToGeodetic(p);
+  engine::CsvWriter& out = *rec.poses;
+  out.Add(static_cast<std::int64_t>(frame.time_ns)).Add(engine::ToSeconds(frame.time_ns)).Add(index);
+  out.Add(p.x()).Add(p.y()).Add(p.z()).Add(q.w()).Add(q.x()).Add(q.y()).Add(q.z());
+  out.Add(engine::RadToDeg(g.latitude_rad)).Add(engine::RadToDeg(g.longitude_rad)).Add(g.altitude_m);
+  out.EndRow();
+  const engine::CameraIntrinsics& k = info_[camera].intrinsics;
+  rec.images.push_back({index, rec.outputs.rgb ? FrameFile("rgb", index, ".png") : "", k.width_px, k.height_px});
+  ++info_[camera].frames;
+}
+
+std::int64_t DatasetRecorder::frames_written() const { return writer_.frames_written(); }
+
+void DatasetRecorder::Finish() {
+  writer_.Flush();
+  for (std::size_t i = 0; i < recordings_.size(); ++i) {
+    Recording& rec = *recordings_[i];
+    rec.poses->Close();
+    if (rec.outputs.segmentation) {
+      const nlohmann::json coco =
+          engine::BuildCocoJson(rec.images, writer_.annotations(rec.writer_camera), world_.scene().classes);
+      engine::WriteFileAtomically(options_.root / info_[i].name / "coco_instances.json", coco.dump(1));
+    }
+  }
+  WriteLabels();
+  WritePreview();
+}
+
+void DatasetRecorder::WriteLabels() const {
+  const engine::StaticScene& scene = world_.scene();
+  nlohmann::json labels;
+  nlohmann::json& classes = labels["classes"] = nlohmann::json::array();
+  for (const auto& c : scene.classes) {
+    classes.push_back({{"id", c.id},
+                       {"name", c.name},
+                       {"color", {std::lround(c.color_rgb.x() * 255), std::lround(c.color_rgb.y() * 255),
+                                  std::lround(c.color_rgb.z() * 255)}}});
+  }
+  nlohmann::json& instances = labels["instances"] = nlohmann::json::array();
+  for (const auto& o : scene.objects) {
+    instances.push_back({{"id", o.instance_id}, {"class_id", o.class_id}, {"name", o.name}});
+  }
+  engine::WriteFileAtomically(options_.root / "labels.json", labels.dump(1));
+}
+
+void DatasetRecorder::WritePreview() const {
+  // Contact sheet of the first camera with colour, depth and labels: up to 4 frames spread over the run,
+  // one row each: RGB | colourised depth | colourised segmentation, shrunk to at most 480 px wide panels.
+  for (std::size_t i = 0; i < recordings_.size(); ++i) {
+    const Recording& rec = *recordings_[i];
+    if (!rec.outputs.rgb || !rec.outputs.depth_png || !rec.outputs.segmentation || rec.images.empty()) continue;
+    const engine::CameraIntrinsics& k = info_[i].intrinsics;
+    const int step = std::max(1, (k.width_px + 479) / 480);
+    const int pw = (k.width_px + step - 1) / step, ph = (k.height_px + step - 1) / step;
+    const int rows = static_cast<int>(std::min<std::size_t>(4, rec.images.size()));
+    engine::Image<std::uint8_t> sheet;
+    sheet.Resize(3 * pw, rows * ph, 4);
+    std::fill(sheet.pixels.begin(), sheet.pixels.end(), 255);
+    const std::filesystem::path dir = options_.root / info_[i].name;
+    for (int r = 0; r < rows; ++r) {
+      const std::int64_t index =
+          rec.images[static_cast<std::size_t>(r) * (rec.images.size() - 1) / std::max(1, rows - 1)].frame_index;
+      const auto rgba = engine::DecodeRgbPng(engine::ReadFileBytes(dir / FrameFile("rgb", index, ".png")));
+      const auto mm = engine::DecodePng16(engine::ReadFileBytes(dir / FrameFile("depth", index, ".png")));
+      engine::Image<float> depth;
+      depth.Resize(mm.width, mm.height, 1);
+      for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
+        depth.pixels[p] = mm.pixels[p] == 0 ? engine::kSkyDepthM : mm.pixels[p] * 1e-3f;
+      }
+      const auto cls = engine::DecodePng8(engine::ReadFileBytes(dir / FrameFile("seg_class", index, ".png")));
+      const auto ins = engine::DecodePng16(engine::ReadFileBytes(dir / FrameFile("seg_instance", index, ".png")));
+      Blit(rgba, step, sheet, 0, r * ph);
+      Blit(engine::ColorizeDepth(depth, static_cast<float>(k.near_m), 65.535f), step, sheet, pw, r * ph);
+      Blit(engine::ColorizeSegmentation(cls, ins, world_.scene().classes), step, sheet, 2 * pw, r * ph);
+    }
+    engine::WriteFileAtomically(options_.root / "preview.png", engine::EncodeRgbPng(sheet));
+    return;
+  }
+}
+
+}  // namespace airis::tools

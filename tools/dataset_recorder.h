@@ -1,0 +1,73 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/core/clock.h"
+#include "engine/dataset/csv_writer.h"
+#include "engine/dataset/dataset_writer.h"
+#include "engine/mission/mission.h"
+#include "engine/render/camera_model.h"
+#include "engine/world/world.h"
+
+namespace airis::tools {
+
+/// Records the frames of a world's cameras into a dataset folder while a mission runs
+/// (docs/dataset-format.md): frames go to a DatasetWriter (worker threads, bounded queue), poses to
+/// <camera>/poses.csv; Finish writes coco_instances.json per camera, labels.json and preview.png. A stereo
+/// camera records as two dataset cameras, <name>_left and <name>_right. Recording is on between the
+/// mission's capture steps.
+class DatasetRecorder {
+ public:
+  struct Options {
+    std::filesystem::path root;
+    bool resume = false;                   ///< adopt frames an interrupted run already wrote
+    std::vector<std::string> cameras;      ///< record only these (empty: all)
+    engine::DatasetOutputs outputs;        ///< which files per frame
+    engine::DatasetWriter::Options writer;
+  };
+  /// A dataset camera as the manifest describes it.
+  struct CameraInfo {
+    std::string name;
+    std::string vehicle;
+    engine::CameraIntrinsics intrinsics;
+    double rate_hz = 0.0;
+    nlohmann::json mount;
+    std::int64_t frames = 0;
+  };
+
+  /// Subscribes to the cameras. Throws ConfigError("--cameras") naming an unknown camera.
+  DatasetRecorder(engine::World& world, const Options& options);
+  ~DatasetRecorder();
+
+  /// Starts or stops recording (mission capture step); rate_hz > 0 subsamples the cameras' frames.
+  void SetCapture(const engine::CaptureStep& capture);
+  /// Waits for every frame, writes the per-camera COCO files, labels.json and preview.png.
+  void Finish();
+
+  std::int64_t frames_written() const;
+  const std::vector<CameraInfo>& cameras() const { return info_; }
+
+ private:
+  struct Recording;
+  void OnFrame(std::size_t camera, const engine::CameraFrame& frame);
+  void WritePreview() const;
+  void WriteLabels() const;
+
+  engine::World& world_;
+  Options options_;
+  engine::DatasetWriter writer_;
+  std::vector<CameraInfo> info_;
+  std::vector<std::unique_ptr<Recording>> recordings_;
+  std::vector<engine::Sensor*> camera_sensors_;  // every camera of the world (switched with recording)
+  bool recording_ = false;
+  std::vector<std::string> only_;  // capture-step camera filter (empty: all)
+  double capture_rate_hz_ = 0.0;
+};
+
+}  // namespace airis::tools
