@@ -3,6 +3,7 @@
 #include "engine/core/random.h"
 #include "engine/world/embree_ray_caster.h"
 #include "engine/render/render_scene.h"
+#include "engine/world/simulation.h"
 #include "sensors/barometer.h"
 #include "sensors/camera/camera_sensor.h"
 #include "sensors/camera/stereo_camera_sensor.h"
@@ -29,6 +30,10 @@ std::unique_ptr<engine::Sensor> MakeSensor(const SensorDescription& d, engine::R
   return std::visit(
       [&](const auto& config) -> std::unique_ptr<engine::Sensor> {
         using T = std::decay_t<decltype(config)>;
+        // A sensor cannot sample faster than the physics ticks (default 1 kHz), and some need its period.
+        if constexpr (requires { config.ValidateForPhysicsRate(1.0); }) {
+          config.ValidateForPhysicsRate(engine::SimulationConfig{}.physics_rate_hz);
+        }
         if constexpr (std::is_same_v<T, sensors::ImuConfig>) {
           return std::make_unique<sensors::Imu>(d.name, config, std::move(stream));
         } else if constexpr (std::is_same_v<T, sensors::BarometerConfig>) {
@@ -67,9 +72,16 @@ std::unique_ptr<engine::World> BuildWorld(const Scene& scene,
       vehicle->state().p_W = v.p_W;
       vehicle->state().q_WB = engine::QuatFromEuler({0.0, 0.0, v.yaw_rad});
       const std::size_t index = world->AddVehicle(std::move(vehicle));
-      for (const SensorDescription& s : v.sensors) {
-        world->AddSensor(index, MakeSensor(s, streams.Stream("vehicles/" + v.name + "/" + s.name),
-                                           *static_scene, render));
+      for (std::size_t i = 0; i < v.sensors.size(); ++i) {
+        const SensorDescription& s = v.sensors[i];
+        try {
+          world->AddSensor(index, MakeSensor(s, streams.Stream("vehicles/" + v.name + "/" + s.name),
+                                             *static_scene, render));
+        } catch (const engine::InvalidField& e) {
+          throw engine::InvalidField("sensors[" + std::to_string(i) + "]." + SensorKindName(s.config) + "." +
+                                         e.field(),
+                                     e.problem());
+        }
       }
     } catch (const engine::InvalidField& e) {
       throw engine::ConfigError(v.where, v.key_path + "." + e.field(), e.problem());

@@ -1,16 +1,22 @@
-// `airis scene check|stats|schema`: validate a scene file, summarise it, print the format's key
-// tables.
+// `airis scene check|stats|schema|preview`: validate a scene file, summarise it, print the format's key
+// tables, render a preview image.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "scenes/scene.h"
 #include "scenes/scene_schema.h"
 #include "scenes/scene_stats.h"
+#include "sensors/camera/camera_sensor.h"
 #include "tools/cli_util.h"
+#include "tools/preview_render.h"
 #include "tools/commands.h"
 
 namespace airis::tools {
@@ -19,6 +25,9 @@ namespace {
 struct SceneOptions {
   std::string file;
   bool json = false;
+  std::string camera;  // preview: a vehicle camera's name
+  std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
+  std::string out = "preview.png";
 };
 
 struct Loaded {
@@ -129,6 +138,55 @@ int RunSchema() {
   return 0;
 }
 
+int RunPreview(const SceneOptions& o) {
+  const scenes::Scene scene = scenes::LoadScene(o.file);
+  PreviewOptions preview;
+  if (!o.camera.empty() && !o.pose.empty()) {
+    throw engine::ConfigError({}, "--camera", "give --camera or --pose, not both");
+  }
+  if (!o.pose.empty()) {
+    std::vector<double> v;
+    std::string item;
+    std::stringstream in(o.pose);
+    while (std::getline(in, item, ',')) v.push_back(ParseFiniteNumber("pose", item));
+    if (v.size() != 5) throw engine::ConfigError({}, "--pose", "expected n,e,d,yaw_deg,pitch_deg (got '" + o.pose + "')");
+    preview.camera_position_m = Eigen::Vector3d(v[0], v[1], v[2]);
+    preview.yaw_deg = v[3];
+    preview.pitch_deg = v[4];
+  }
+  if (!o.camera.empty()) {
+    // The camera as mounted on its vehicle at the vehicle's start pose.
+    std::string names;
+    for (const auto& vehicle : scene.vehicles) {
+      for (const auto& sensor : vehicle.sensors) {
+        const auto* config = std::get_if<sensors::CameraConfig>(&sensor.config);
+        if (!config) continue;
+        names += (names.empty() ? "" : ", ") + sensor.name;
+        if (sensor.name != o.camera) continue;
+        engine::RigidBodyState state;
+        state.p_W = vehicle.p_W;
+        state.q_WB = engine::QuatFromEuler({0.0, 0.0, vehicle.yaw_rad});
+        const Eigen::Isometry3d T_WC = sensors::CalcCameraPose(*config, &state);
+        const Eigen::Vector3d forward = T_WC.rotation() * Eigen::Vector3d::UnitZ();  // optical axis
+        preview.camera_position_m = T_WC.translation();
+        preview.yaw_deg = engine::RadToDeg(std::atan2(forward.y(), forward.x()));
+        preview.pitch_deg = engine::RadToDeg(std::asin(std::clamp(-forward.z(), -1.0, 1.0)));
+        preview.width_px = config->width_px;
+        preview.height_px = config->height_px;
+        preview.hfov_deg = config->hfov_deg;
+      }
+    }
+    if (!preview.camera_position_m) {
+      throw engine::ConfigError({}, "--camera", "no camera '" + o.camera + "' in " + o.file + " (it has " +
+                                                    (names.empty() ? "none" : names) + ")");
+    }
+  }
+  const PreviewResult r = RenderPreviewPng(scene.static_scene, preview, o.out);
+  std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n", o.out.c_str(),
+              r.triangles, r.gl_renderer.c_str());
+  return 0;
+}
+
 }  // namespace
 
 void AddSceneCommand(CLI::App& app, int& exit_code) {
@@ -154,6 +212,16 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   CLI::App* schema =
       cmd->add_subcommand("schema", "Print every key of the scene format as Markdown tables");
   schema->callback([&exit_code] { exit_code = RunReportingErrors([] { return RunSchema(); }); });
+
+  CLI::App* preview = cmd->add_subcommand(
+      "preview", "Render RGB | depth | segmentation side by side from a camera, a pose or above");
+  preview->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  preview->add_option("--camera", options->camera, "a camera of the scene's vehicles, at its start pose");
+  preview->add_option("--pose", options->pose, "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
+  preview->add_option("--out", options->out, "PNG to write (default preview.png)");
+  preview->callback([options, &exit_code] {
+    exit_code = RunReportingErrors([&] { return RunPreview(*options); });
+  });
 }
 
 }  // namespace airis::tools

@@ -103,8 +103,7 @@ TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
                     "    sensors:\n"
                     "      - {name: x}\n"),
             "scenes/v.yaml:5:9: vehicles[0].sensors[0].imu: expected one sensor: imu, barometer, "
-            "magnetometer, gps, "
-            "rangefinder or lidar");
+            "magnetometer, gps, rangefinder, lidar, camera or stereo_camera");
 }
 
 TEST(VehiclesSectionTest, BuildWorldPlacesVehiclesAndMountsSensors) {
@@ -130,6 +129,39 @@ TEST(VehiclesSectionTest, BuildWorldPlacesVehiclesAndMountsSensors) {
   EXPECT_EQ(world->vehicle(1).actuator_count(), 8);
   EXPECT_EQ(world->scene().objects.size(), 2u);
   ASSERT_NE(world->ray_caster(), nullptr);
+}
+
+TEST(VehiclesSectionTest, SensorFasterThanThePhysicsIsRejectedNamingIt) {
+  const Scene s = LoadSceneFromString(
+      "vehicles:\n"
+      "  - name: a\n"
+      "    preset: quad_x\n"
+      "    start: {position_m: [0, 0, -0.2]}\n"
+      "    sensors: [{barometer: {}}, {imu: {rate_hz: 2000}}]\n",
+      "scenes/v.yaml");
+  try {
+    BuildWorld(s);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("scenes/v.yaml:2:5: vehicles[0].sensors[1].imu.rate_hz:"), std::string::npos) << what;
+  }
+}
+
+TEST(VehiclesSectionTest, CamerasAreBuiltOnOneSharedRenderScene) {
+  const Scene s = LoadSceneFromString(
+      "vehicles:\n"
+      "  - name: a\n"
+      "    preset: quad_x\n"
+      "    start: {position_m: [0, 0, -0.2]}\n"
+      "    sensors:\n"
+      "      - {name: front, camera: {rate_hz: 10, width_px: 64, height_px: 48}}\n"
+      "      - {name: pair, stereo_camera: {camera: {rate_hz: 5, width_px: 32, height_px: 24}}}\n",
+      "scenes/v.yaml");
+  const auto world = BuildWorld(s);
+  ASSERT_EQ(world->sensors(0).size(), 2u);
+  EXPECT_EQ(world->sensors(0)[0]->name(), "front");
+  EXPECT_EQ(world->sensors(0)[1]->name(), "pair");
 }
 
 }  // namespace

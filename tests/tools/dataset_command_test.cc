@@ -13,6 +13,7 @@
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "tests/tools/run_airis.h"
 #include "tools/commands.h"
 
 namespace airis::tools {
@@ -20,27 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
+using Result = testing::CommandResult;
 
-Result RunAiris(const std::string& args) {
-  CLI::App app{"airis"};
-  app.require_subcommand(1);
-  Result r;
-  AddDatasetCommand(app, r.exit_code);
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  try {
-    app.parse(args, false);
-  } catch (const CLI::ParseError& e) {
-    r.exit_code = app.exit(e);
-  }
-  r.out = testing::internal::GetCapturedStdout();
-  r.err = testing::internal::GetCapturedStderr();
-  return r;
-}
+Result RunAiris(const std::string& args) { return testing::RunAiris(&AddDatasetCommand, args); }
 
 std::string Bytes(const fs::path& p) {
   const auto b = engine::ReadFileBytes(p);

@@ -11,33 +11,15 @@
 #include "engine/environment/gravity.h"
 #include "engine/environment/tilted_dipole.h"
 #include "engine/environment/world_magnetic_model.h"
+#include "tests/tools/run_airis.h"
 #include "tools/commands.h"
 
 namespace airis::tools {
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
+using Result = testing::CommandResult;
 
-// Runs `airis <args>` in-process.
-Result RunAiris(const std::string& args) {
-  CLI::App app{"airis"};
-  app.require_subcommand(1);
-  Result r;
-  AddEnvCommand(app, r.exit_code);
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  try {
-    app.parse(args, false);
-  } catch (const CLI::ParseError& e) {
-    r.exit_code = app.exit(e);
-  }
-  r.out = testing::internal::GetCapturedStdout();
-  r.err = testing::internal::GetCapturedStderr();
-  return r;
-}
+Result RunAiris(const std::string& args) { return testing::RunAiris(&AddEnvCommand, args); }
 
 const std::set<std::string> kKeys = {"gravity_m_s2",    "temperature_k",      "pressure_pa",
                                      "density_kg_m3",   "speed_of_sound_m_s", "mag_north_nt",

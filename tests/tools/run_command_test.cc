@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "tests/tools/run_airis.h"
 #include "tools/commands.h"
 
 namespace airis::tools {
@@ -13,27 +14,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
+using Result = testing::CommandResult;
 
-Result RunAiris(const std::string& args) {
-  CLI::App app{"airis"};
-  app.require_subcommand(1);
-  Result r;
-  AddRunCommand(app, r.exit_code);
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  try {
-    app.parse(args, false);
-  } catch (const CLI::ParseError& e) {
-    r.exit_code = app.exit(e);
-  }
-  r.out = testing::internal::GetCapturedStdout();
-  r.err = testing::internal::GetCapturedStderr();
-  return r;
-}
+Result RunAiris(const std::string& args) { return testing::RunAiris(&AddRunCommand, args); }
 
 fs::path FreshDir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("airis_run_" + name);
