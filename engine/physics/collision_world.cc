@@ -150,10 +150,19 @@ struct CollisionWorld::Bullet {
     std::vector<double> sorted = widths;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
     const double median = sorted[n / 2];
-    // Objects wider than 16 median objects (ground planes, terrain) are tested one by one.
+    // Objects whose footprint covers more than a quarter of everything's (ground planes, terrain) are tested
+    // one by one; everything else, long thin streets and walls included, goes into the grid, where a query
+    // sees only the cells around the vehicle.
+    Eigen::AlignedBox2d everything;
+    for (std::size_t i = 0; i < n; ++i) {
+      everything.extend(aabbs[i].lo.head<2>());
+      everything.extend(aabbs[i].hi.head<2>());
+    }
+    const double everything_area = everything.sizes().prod();
     std::vector<std::uint32_t> gridded;
     for (std::size_t i = 0; i < n; ++i) {
-      if (widths[i] > 16.0 * median) {
+      const double area = (aabbs[i].hi - aabbs[i].lo).head<2>().prod();
+      if (area > 0.25 * everything_area) {
         large.push_back(static_cast<std::uint32_t>(i));
       } else {
         gridded.push_back(static_cast<std::uint32_t>(i));
