@@ -89,10 +89,15 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
     const auto ins = engine::DecodePng16(engine::ReadFileBytes(dir / "front/seg_instance" / (std::string(name) + ".png")));
     for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
       // Depth PNG = float depth to 1 mm (0 = no return); labels agree with labels.json; sky is 0 in both maps.
-      if (mm.pixels[p] != 0) ASSERT_LE(std::abs(mm.pixels[p] * 1e-3 - m.pixels[p]), 0.5e-3 + 1e-6);
-      if (mm.pixels[p] == 0) ASSERT_TRUE(std::isinf(m.pixels[p]) || m.pixels[p] > 65.5f);
+      if (mm.pixels[p] != 0) {
+        ASSERT_LE(std::abs(mm.pixels[p] * 1e-3 - m.pixels[p]), 0.5e-3 + 1e-6);
+      } else {
+        ASSERT_TRUE(std::isinf(m.pixels[p]) || m.pixels[p] > 65.5f);
+      }
       ASSERT_EQ(ins.pixels[p] == 0, cls.pixels[p] == 0);
-      if (ins.pixels[p] != 0) ASSERT_EQ(class_of.at(ins.pixels[p]), cls.pixels[p]);
+      if (ins.pixels[p] != 0) {
+        ASSERT_EQ(class_of.at(ins.pixels[p]), cls.pixels[p]);
+      }
     }
     // COCO boxes and areas equal the instance masks' bounds and pixel counts.
     const auto expected = engine::ExtractInstanceAnnotations(ins, cls);
