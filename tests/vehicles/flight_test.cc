@@ -125,6 +125,45 @@ TEST(FlightTest, YawStepSettlesWithBoundedOvershoot) {
   EXPECT_LT(worst_m, 0.05);
 }
 
+TEST(FlightTest, VelocityStepSettlesWithBoundedOvershoot) {
+  // From hover, 5 m/s north. Bound: overshoot below 5% (0.25 m/s); within 0.05 m/s after 4 s; height held.
+  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, -20));
+  VehicleCommand c;
+  c.mode = CommandMode::kVelocity;
+  c.velocity_W = Vec3(5, 0, 0);
+  f.vehicle->SetCommand(c);
+  double max_speed = 0.0;
+  for (int i = 0; i < 4000; ++i) {
+    f.sim->Step();
+    max_speed = std::max(max_speed, f.vehicle->state().v_W.x());
+  }
+  EXPECT_LT(max_speed - 5.0, 0.25);
+  EXPECT_LT((f.vehicle->state().v_W - Vec3(5, 0, 0)).norm(), 0.05);
+  EXPECT_NEAR(f.vehicle->state().p_W.z(), -20.0, 0.1);
+}
+
+TEST(FlightTest, RateStepSettlesWithBoundedOvershoot) {
+  // Body yaw rate step to 1 rad/s at hover thrust. Bound: overshoot below 10%. The PI loop's integral tail
+  // decays with time constant about K_p / K_i = 10 / 4 = 2.5 s (yaw defaults): within 2% after 3 s, within
+  // 0.5% after 10 s.
+  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, -20));
+  VehicleCommand c;
+  c.mode = CommandMode::kRatesThrust;
+  c.rates_B = Vec3(0, 0, 1.0);
+  c.thrust_fraction = f.vehicle->CalcHoverCommand(1.225, 9.80665);
+  f.vehicle->SetCommand(c);
+  double max_rate = 0.0;
+  for (int i = 0; i < 3000; ++i) {
+    f.sim->Step();
+    max_rate = std::max(max_rate, f.vehicle->state().w_B.z());
+  }
+  EXPECT_LT(max_rate - 1.0, 0.1);
+  EXPECT_NEAR(f.vehicle->state().w_B.z(), 1.0, 0.02);
+  f.sim->RunFor(7.0);
+  EXPECT_NEAR(f.vehicle->state().w_B.z(), 1.0, 0.005);
+  EXPECT_LT(f.vehicle->state().w_B.head<2>().norm(), 0.01);
+}
+
 TEST(FlightTest, TakeoffAndLandCycleLandsDisarmedWithoutBounce) {
   // The quad starts at rest on the ground (box bottom at z = 0), climbs 5 m, lands.
   const double rest_z = -0.5 * QuadXConfig().box_size_m.z();
