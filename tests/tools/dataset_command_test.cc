@@ -79,7 +79,7 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
   for (const auto& a : coco["annotations"]) anns_of[a["image_id"].get<std::int64_t>() - 1].push_back(a);
 
   for (std::int64_t f = 0; f < frames; ++f) {
-    char name[16];
+    char name[24];  // room for any 64-bit frame index
     std::snprintf(name, sizeof(name), "%06lld", static_cast<long long>(f));
     const auto rgb = engine::DecodeRgbPng(engine::ReadFileBytes(dir / "front/rgb" / (std::string(name) + ".png")));
     EXPECT_EQ(rgb.width, 640);
