@@ -38,6 +38,8 @@ struct ControlContext {
   const RigidBodyAccelerations* accelerations = nullptr; ///< over the step, contacts included
   const Environment* environment = nullptr;
   std::span<const std::unique_ptr<Sensor>> sensors;      ///< this vehicle's sensors, sampled this tick
+  double air_density_kg_m3 = 0.0;  ///< at the vehicle now (the World's cached local model, as physics uses)
+  double gravity_m_s2 = 0.0;       ///< at the vehicle now, along world +z
 };
 
 /// A vehicle of the paper's model (3.1): a rigid body (mass, inertia, body box for drag, collision and

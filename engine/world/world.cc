@@ -97,6 +97,20 @@ void World::StepPhysics(TimeNs now_ns, double dt_s) {
   }
 }
 
+void World::CalcLocalConditions(std::size_t i, double* air_density_kg_m3, double* gravity_m_s2) const {
+  const Slot& slot = slots_[i];
+  const Vec3& p_W = slot.vehicle->state().p_W;
+  const LocalEnvironment& local = slot.local;
+  const double dh = environment_.AltitudeOf(p_W) - local.altitude_m;
+  if (!(std::abs(dh) <= kEnvironmentRefresh_m)) {  // not stepped yet (NaN), or moved by hand
+    *air_density_kg_m3 = environment_.CalcAir(p_W).density_kg_m3;
+    *gravity_m_s2 = environment_.CalcGravity_m_s2(p_W);
+    return;
+  }
+  *air_density_kg_m3 = local.density_kg_m3 + local.density_slope_kg_m4 * dh;
+  *gravity_m_s2 = local.gravity_m_s2 + local.gravity_slope_1_s2 * dh;
+}
+
 void World::SetHeld(std::size_t i, bool held) {
   Slot& slot = slots_[i];
   slot.held = held;

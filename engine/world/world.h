@@ -85,6 +85,9 @@ class World {
   /// step random_poses).
   void SetHeld(std::size_t i, bool held);
   bool held(std::size_t i) const { return slots_[i].held; }
+  /// Air density (kg/m^3) and gravity (m/s^2) at vehicle `i`'s current position, from the same cached local
+  /// model the physics step uses (no atmosphere evaluation unless the vehicle has not been stepped yet).
+  void CalcLocalConditions(std::size_t i, double* air_density_kg_m3, double* gravity_m_s2) const;
   /// Accelerations of vehicle `i` over the last step (contacts included).
   const RigidBodyAccelerations& accelerations(std::size_t i) const {
     return slots_[i].accelerations;

@@ -82,10 +82,10 @@ void Multirotor::UpdateControl(const engine::ControlContext& context) {
     controller_->SetActuators(CalcActuatorEffects(kReferenceDensity_kg_m3));
     for (std::size_t i = 0; i < rotors_.size(); ++i) allocated_tilt_rad_[i] = rotors_[i].tilt_rad;
   }
-  const double rho = context.environment->CalcAir(state.p_W).density_kg_m3;
-  const double g = context.environment->CalcGravity_m_s2(state.p_W);
+  // Air and gravity from the World's cached local model (the atmosphere is not evaluated again here).
   const std::span<double> motors(control_u_.data(), rotors_.size());
-  controller_->Update(context.dt_s, state, g, rho / kReferenceDensity_kg_m3, motors);
+  controller_->Update(context.dt_s, state, context.gravity_m_s2,
+                      context.air_density_kg_m3 / kReferenceDensity_kg_m3, motors);
   std::copy(motors.begin(), motors.end(), commands_.begin());
 }
 
