@@ -63,16 +63,17 @@ void RemoveUnfinishedFiles(const fs::path& root) {
   for (const auto& p : doomed) fs::remove(p);
 }
 
-std::string RendererString(const engine::World& world, const char* which) {
+// The GL strings of the context the cameras render with (all cameras of a world share one), or empty strings.
+nlohmann::json RendererJson(const engine::World& world) {
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& s : world.sensors(v)) {
       if (const auto* cam = dynamic_cast<const sensors::CameraSensor*>(s.get())) {
         const auto& ctx = cam->render_scene().context();
-        return std::string(which) == "vendor" ? ctx.gl_vendor() : std::string(which) == "version" ? ctx.gl_version() : ctx.gl_renderer();
+        return {{"gl_vendor", ctx.gl_vendor()}, {"gl_renderer", ctx.gl_renderer()}, {"gl_version", ctx.gl_version()}};
       }
     }
   }
-  return "";
+  return {{"gl_vendor", ""}, {"gl_renderer", ""}, {"gl_version", ""}};
 }
 
 nlohmann::json Manifest(const DatasetOptions& o, const scenes::Scene& scene, const engine::Mission& mission,
@@ -85,9 +86,7 @@ nlohmann::json Manifest(const DatasetOptions& o, const scenes::Scene& scene, con
   m["complete"] = complete;
   m["scene"] = {{"file", o.scene}, {"sha256", FileHash(o.scene)}, {"name", scene.name}, {"seed", scene.seed}};
   m["mission"] = {{"file", o.mission}, {"sha256", FileHash(o.mission)}, {"name", mission.name}};
-  m["renderer"] = {{"gl_vendor", RendererString(world, "vendor")},
-                   {"gl_renderer", RendererString(world, "renderer")},
-                   {"gl_version", RendererString(world, "version")}};
+  m["renderer"] = RendererJson(world);
   nlohmann::json& cams = m["cameras"] = nlohmann::json::array();
   std::int64_t frames = 0;
   for (const auto& c : recorder.cameras()) {

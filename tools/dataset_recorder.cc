@@ -81,6 +81,10 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     const std::string& vehicle = world.vehicle(v).name();
     for (const auto& sensor : world.sensors(v)) {
+      if (sensors::IsCamera(*sensor)) {
+        camera_sensors_.push_back(sensor.get());
+        sensor->set_enabled(false);  // until a capture step starts recording
+      }
       if (auto* mono = dynamic_cast<sensors::CameraSensor*>(sensor.get())) {
         found.push_back(mono->name());
         if (!wanted(mono->name())) continue;
@@ -112,14 +116,6 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
       for (const auto& f : found) all += (all.empty() ? "" : ", ") + f;
       throw engine::ConfigError({}, "--cameras",
                                 "no camera '" + name + "' in the scene (it has " + (all.empty() ? "none" : all) + ")");
-    }
-  }
-  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
-    for (const auto& sensor : world.sensors(v)) {
-      if (dynamic_cast<sensors::CameraSensor*>(sensor.get()) || dynamic_cast<sensors::StereoCameraSensor*>(sensor.get())) {
-        camera_sensors_.push_back(sensor.get());
-        sensor->set_enabled(false);  // until a capture step starts recording
-      }
     }
   }
   if (recordings_.empty()) {

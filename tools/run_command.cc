@@ -19,7 +19,6 @@
 #include "tools/cli_util.h"
 #include "tools/commands.h"
 #include "sensors/camera/camera_sensor.h"
-#include "sensors/camera/stereo_camera_sensor.h"
 #include "tools/realtime_pacer.h"
 
 namespace airis::tools {
@@ -35,10 +34,6 @@ struct RunOptions {
   std::string until;
   std::string truth_rate = "100";
 };
-
-bool IsCamera(const engine::Sensor& s) {
-  return dynamic_cast<const sensors::CameraSensor*>(&s) || dynamic_cast<const sensors::StereoCameraSensor*>(&s);
-}
 
 // One line, rewritten in place, when stderr is a terminal.
 class ProgressLine {
@@ -76,7 +71,7 @@ int Run(const RunOptions& o) {
   // `run` records no images: cameras stay off (their poses are in truth.csv; `airis dataset` records them).
   for (std::size_t v = 0; v < world->vehicle_count(); ++v) {
     for (const auto& sensor : world->sensors(v)) {
-      if (IsCamera(*sensor)) sensor->set_enabled(false);
+      if (sensors::IsCamera(*sensor)) sensor->set_enabled(false);
     }
   }
 

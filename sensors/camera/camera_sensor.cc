@@ -1,5 +1,7 @@
 #include "sensors/camera/camera_sensor.h"
 
+#include "sensors/camera/stereo_camera_sensor.h"
+
 #include "engine/core/error.h"
 
 namespace airis::sensors {
@@ -68,6 +70,11 @@ void CameraSensor::CopyLatestRow(std::span<double> out) const {
 void CameraSensor::Sample(const engine::SensorContext& context) {
   renderer_.Render(scene_->gpu_scene(), CalcCameraPose(config_, context.state), context.now_ns,
                    frame_);
+}
+
+bool IsCamera(const engine::Sensor& sensor) {
+  return dynamic_cast<const CameraSensor*>(&sensor) != nullptr ||
+         dynamic_cast<const StereoCameraSensor*>(&sensor) != nullptr;
 }
 
 }  // namespace airis::sensors

@@ -45,6 +45,9 @@ class CameraSensor : public engine::Sensor {
   engine::CameraFrame frame_;
 };
 
+/// True for the sensors that render: a CameraSensor or a StereoCameraSensor.
+bool IsCamera(const engine::Sensor& sensor);
+
 /// Column names of a camera pose row with prefix `prefix` ("" or "left_"): p_WC_{x,y,z}_m,
 /// q_WC_{w,x,y,z}.
 std::vector<std::string> CameraPoseColumns(const std::string& prefix);
