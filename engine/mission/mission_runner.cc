@@ -1,5 +1,6 @@
 #include "engine/mission/mission_runner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -56,6 +57,11 @@ std::string MissionRunner::StepLabel(int index) const {
   std::string label = where.empty() ? "" : where + ": ";
   label += "step " + std::to_string(index + 1) + " (" + std::string(StepKindName(step.spec)) + ")";
   return label;
+}
+
+std::string MissionRunner::DescribeCurrentStep() const {
+  const int last = static_cast<int>(mission_.steps.size()) - 1;
+  return StepLabel(std::min(step_index_, last));
 }
 
 void MissionRunner::Fail(TimeNs now_ns, const std::string& why) {

@@ -81,6 +81,8 @@ class MissionRunner {
   /// Why the mission failed: "missions/x.yaml:12: step 3 (goto): timed out after 40 s, 12.3 m from target".
   const std::string& failure() const { return failure_; }
   int current_step() const { return step_index_; }
+  /// "missions/x.yaml:12: step 3 (goto)" for the step running now (the last one once the mission ended).
+  std::string DescribeCurrentStep() const;
   const Mission& mission() const { return mission_; }
   const std::vector<MissionEvent>& events() const { return events_; }
   /// Largest distance between the vehicle and the reference point of path-following steps (path, survey,

@@ -41,8 +41,7 @@ MissionRunner::State MissionSession::Run(TimeNs until_ns) {
     try {
       sim_.Step();
     } catch (const SimulationError& e) {
-      throw SimulationError("during mission step " + std::to_string(runner_.current_step() + 1) + ": " +
-                            e.what());
+      throw SimulationError(runner_.DescribeCurrentStep() + ": " + e.what());
     }
     distance_m_ += (vehicle.state().p_W - before).norm();
     if (callbacks_.after_tick) callbacks_.after_tick(sim_.clock().now_ns());

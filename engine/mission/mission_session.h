@@ -26,7 +26,8 @@ class MissionSession final : public MissionHost {
                  Callbacks callbacks);
 
   /// Runs until the mission succeeds or fails, or the clock reaches `until_ns` (the mission is then still
-  /// running). Throws SimulationError from the physics, its message prefixed with the current step.
+  /// running). Throws SimulationError from the physics, its message prefixed with the current step and its
+  /// line ("missions/x.yaml:12: step 3 (goto): vehicle 'drone1' at t = ...").
   MissionRunner::State Run(TimeNs until_ns);
 
   const MissionRunner& runner() const { return runner_; }

@@ -172,6 +172,14 @@ TEST(MissionRunnerTest, AutomaticTimeoutScalesWithTheStep) {
   EXPECT_NEAR(ToSeconds(t), 90.0, 0.01);
 }
 
+TEST(MissionRunnerTest, DescribesTheCurrentStepWithItsLine) {
+  Mission m;
+  m.file = "missions/test.yaml";
+  m.steps = {Step(TakeoffStep{10.0}, 7), Step(HoverStep{1.0}, 9)};
+  MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
+  EXPECT_EQ(runner.DescribeCurrentStep(), "missions/test.yaml:7: step 1 (takeoff)");
+}
+
 TEST(MissionRunnerTest, CollisionFailsWhenAbortOnCollision) {
   Mission m;
   m.steps = {Step(HoverStep{10.0}, 4)};

@@ -49,7 +49,11 @@ TEST_P(ExampleMissionTest, FliesToTheEnd) {
 INSTANTIATE_TEST_SUITE_P(Missions, ExampleMissionTest,
                          ::testing::Values(std::pair{"city.yaml", "city_survey.yaml"},
                                            std::pair{"city.yaml", "city_orbit.yaml"},
-                                           std::pair{"forest.yaml", "forest_path.yaml"}));
+                                           std::pair{"forest.yaml", "forest_path.yaml"}),
+                         [](const auto& info) {
+                           const std::string mission = info.param.second;
+                           return mission.substr(0, mission.find('.'));  // city_survey, ...
+                         });
 
 TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
   const fs::path a = FreshDir("a"), b = FreshDir("b");
