@@ -6,6 +6,7 @@ Sensor::Sensor(std::string name, double rate_hz) : name_(std::move(name)), sched
 
 bool Sensor::Update(const SensorContext& context) {
   if (schedule_.ConsumeDue(context.now_ns) == 0 || !enabled_) return false;
+  if (gate_ && !gate_(context.now_ns)) return false;
   last_sample_ns_ = context.now_ns;
   Sample(context);
   for (const auto& listener : listeners_) listener(*this);

@@ -52,6 +52,10 @@ class Sensor {
   void set_enabled(bool enabled) { enabled_ = enabled; }
   bool enabled() const { return enabled_; }
 
+  /// When set, a due sample of an enabled sensor is taken only if `gate(now_ns)` returns true; the schedule
+  /// advances either way. A dataset shard uses it to skip the camera frames other shards render.
+  void set_sample_gate(std::function<bool(TimeNs)> gate) { gate_ = std::move(gate); }
+
   const std::string& name() const { return name_; }
   const RateSchedule& schedule() const { return schedule_; }
   /// Simulated time of the last sample (-1 before the first).
@@ -66,6 +70,7 @@ class Sensor {
   RateSchedule schedule_;
   TimeNs last_sample_ns_ = -1;
   bool enabled_ = true;
+  std::function<bool(TimeNs)> gate_;
   std::vector<std::function<void(const Sensor&)>> listeners_;
 };
 

@@ -1,0 +1,62 @@
+// The generic Sensor contract: exact schedule, enable switch, and the sample gate.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "engine/world/sensor.h"
+
+namespace airis::engine {
+namespace {
+
+class TimeSensor final : public Sensor {
+ public:
+  using Sensor::Sensor;
+  std::span<const std::string> columns() const override { return columns_; }
+  void CopyLatestRow(std::span<double> out) const override { out[0] = static_cast<double>(times.back()); }
+  std::vector<TimeNs> times;
+
+ protected:
+  void Sample(const SensorContext& context) override { times.push_back(context.now_ns); }
+
+ private:
+  std::vector<std::string> columns_{"t_ns"};
+};
+
+void Tick(Sensor& sensor, TimeNs from_ns, TimeNs to_ns) {
+  for (TimeNs t = from_ns; t <= to_ns; t += 1'000'000) sensor.Update(SensorContext{t});
+}
+
+TEST(SensorTest, GateSkipsSamplesWithoutShiftingTheSchedule) {
+  TimeSensor gated("cam", 10.0);  // due every 100 ms
+  std::vector<TimeNs> asked;
+  gated.set_sample_gate([&](TimeNs t) {
+    asked.push_back(t);
+    return asked.size() % 2 == 0;  // every other due sample
+  });
+  int notified = 0;
+  gated.AddListener([&](const Sensor&) { ++notified; });
+  Tick(gated, 0, 1'000'000'000);
+  // Due at 0, 100, ..., 1000 ms: 11 asked, the 2nd, 4th, ... taken, at their exact due times.
+  ASSERT_EQ(asked.size(), 11u);
+  EXPECT_EQ(gated.times, (std::vector<TimeNs>{100'000'000, 300'000'000, 500'000'000, 700'000'000, 900'000'000}));
+  EXPECT_EQ(notified, 5);
+  EXPECT_EQ(gated.last_sample_ns(), 900'000'000);
+}
+
+TEST(SensorTest, DisabledSensorIsNotAskedAndKeepsItsPhase) {
+  TimeSensor sensor("cam", 10.0);
+  int asked = 0;
+  sensor.set_sample_gate([&](TimeNs) { return ++asked > 0; });
+  sensor.set_enabled(false);
+  Tick(sensor, 0, 250'000'000);
+  EXPECT_EQ(asked, 0);
+  EXPECT_TRUE(sensor.times.empty());
+  sensor.set_enabled(true);
+  Tick(sensor, 251'000'000, 500'000'000);
+  EXPECT_EQ(sensor.times, (std::vector<TimeNs>{300'000'000, 400'000'000, 500'000'000}));
+  EXPECT_EQ(asked, 3);
+}
+
+}  // namespace
+}  // namespace airis::engine
