@@ -128,6 +128,9 @@ struct CollisionWorld::Bullet {
   std::vector<std::uint32_t> cell_items;
   std::vector<double> cell_top_z;  // per cell: the highest point (least z) of its colliders
   double grid_top_z = std::numeric_limits<double>::infinity();  // the same over the whole grid
+  // The highest point (least z) of every collider, large ones included: a body whose bounding
+  // sphere is wholly above it touches nothing (open air), and its query ends there.
+  double top_z = std::numeric_limits<double>::infinity();
   std::vector<std::uint32_t> stamp;  // per collider: last query that saw it (dedupe across cells)
   std::uint32_t query = 0;
   double cell_m = 1.0;
@@ -145,6 +148,7 @@ struct CollisionWorld::Bullet {
       const Vec3 reach = bounds[i].R_WL.cwiseAbs() * bounds[i].half_m;
       aabbs[i] = Aabb{bounds[i].centre_W - reach, bounds[i].centre_W + reach};
       widths.push_back(2.0 * reach.head<2>().maxCoeff());
+      top_z = std::min(top_z, aabbs[i].lo.z());
     }
     if (n == 0) return;
     std::vector<double> sorted = widths;
@@ -453,6 +457,9 @@ void CollisionWorld::FindContacts(int body, const Vec3& p_W, const Quat& q_WB, d
   Bullet& b = *bullet_;
   contacts.clear();
   const auto index = static_cast<std::size_t>(body);
+  // Open air (the common case: flying above the ground and every roof): the body's bounding sphere
+  // is above every collider's bounds, so nothing is near; no rotation, bounds or grid needed.
+  if (p_W.z() + b.body_radius_m[index] + margin_m < b.top_z) return;
   // Broadphase: the body's world AABB (|R| half-extents) against both trees of the DBVT broadphase
   // (statics never move, so they stay where they were inserted), then the exact bounding-sphere
   // test.
@@ -486,6 +493,8 @@ double CollisionWorld::Sweep(int body, const Quat& q_WB, const Vec3& from_W, con
   Bullet& b = *bullet_;
   if ((to_W - from_W).squaredNorm() == 0.0) return 1.0;
   const auto index = static_cast<std::size_t>(body);
+  // Open air along the whole path (see FindContacts).
+  if (std::max(from_W.z(), to_W.z()) + b.body_radius_m[index] < b.top_z) return 1.0;
   const Mat3 R = q_WB.toRotationMatrix();
   // Nothing near the swept segment: no sweep (the common case, and Bullet's sweep is costly).
   const Vec3 reach = R.cwiseAbs() * b.body_half_m[index];

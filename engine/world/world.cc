@@ -174,7 +174,8 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   const Vec3 motion = state.p_W - p0;
   Contact swept_hit;
   bool swept = false;
-  if (motion.squaredNorm() > std::pow(physics_.sweep_fraction * body.min_half_extent_m(), 2)) {
+  const double sweep_beyond_m = physics_.sweep_fraction * body.min_half_extent_m();
+  if (motion.squaredNorm() > sweep_beyond_m * sweep_beyond_m) {
     const double fraction = collision_.Sweep(slot.body, state.q_WB, p0, state.p_W, &swept_hit);
     if (fraction < 1.0) {
       state.p_W = p0 + fraction * motion;
