@@ -1,6 +1,7 @@
 #include "engine/physics/collision_world.h"
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
 #include <btBulletCollisionCommon.h>
@@ -67,6 +68,31 @@ class ContactCollector : public btManifoldResult {
  private:
   double margin_m_;
   std::uint32_t collider_index_;
+  std::vector<Contact>& out_;
+};
+
+// Collects the box-box detector's points between two bodies computed about b's centre `origin_W`
+// (Bullet reports the normal on b pointing toward a, the point on b and the signed distance).
+class BodyPairCollector : public btDiscreteCollisionDetectorInterface::Result {
+ public:
+  BodyPairCollector(const Vec3& origin_W, std::uint32_t b, std::vector<Contact>& out)
+      : origin_W_(origin_W), b_(b), out_(out) {}
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3& normal_on_b, const btVector3& point_on_b,
+                       btScalar distance) override {
+    if (!(distance < 0.0f)) return;  // touching only: nothing to resolve
+    Contact c;
+    c.normal_W = FromBt(normal_on_b).normalized();
+    c.point_W = origin_W_ + FromBt(point_on_b);
+    c.depth_m = -distance;
+    c.collider = b_;
+    out_.push_back(c);
+  }
+
+ private:
+  Vec3 origin_W_;
+  std::uint32_t b_;
   std::vector<Contact>& out_;
 };
 
@@ -486,6 +512,23 @@ void CollisionWorld::FindContacts(int body, const Vec3& p_W, const Quat& q_WB, d
     algorithm->~btCollisionAlgorithm();
     b.dispatcher.freeCollisionAlgorithm(algorithm);
   }
+}
+
+void CollisionWorld::FindBodyContacts(int a, const Vec3& p_a_W, const Quat& q_a_WB, int b,
+                                      const Vec3& p_b_W, const Quat& q_b_WB,
+                                      std::vector<Contact>& contacts) {
+  Bullet& bt = *bullet_;
+  contacts.clear();
+  const auto* box_a =
+      static_cast<const btBoxShape*>(bt.bodies[static_cast<std::size_t>(a)]->getCollisionShape());
+  const auto* box_b =
+      static_cast<const btBoxShape*>(bt.bodies[static_cast<std::size_t>(b)]->getCollisionShape());
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_transformA = ToBt(q_a_WB.toRotationMatrix(), p_a_W - p_b_W);
+  input.m_transformB = ToBt(q_b_WB.toRotationMatrix(), Vec3::Zero());
+  BodyPairCollector collector(p_b_W, static_cast<std::uint32_t>(b), contacts);
+  btBoxBoxDetector detector(box_a, box_b);
+  detector.getClosestPoints(input, collector, nullptr);
 }
 
 double CollisionWorld::Sweep(int body, const Quat& q_WB, const Vec3& from_W, const Vec3& to_W,

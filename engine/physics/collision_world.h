@@ -27,7 +27,9 @@ struct Contact {
   Vec3 point_W = Vec3::Zero();    ///< on the collider's surface, world NED (m)
   Vec3 normal_W = Vec3::UnitZ();  ///< unit, from the collider toward the body
   double depth_m = 0.0;           ///< penetration depth (m), > 0 when overlapping
-  std::uint32_t collider = 0;     ///< index into CollisionWorld::colliders()
+  /// Index into CollisionWorld::colliders() (the other body's handle for
+  /// CollisionWorld::FindBodyContacts).
+  std::uint32_t collider = 0;
 };
 
 /// The collision world (Bullet's btCollisionWorld with a dynamic AABB tree broadphase; Bullet's
@@ -64,6 +66,15 @@ class CollisionWorld {
   /// Allocation-free once `contacts` has grown to the largest count seen.
   void FindContacts(int body, const Vec3& p_W, const Quat& q_WB, double margin_m,
                     std::vector<Contact>& contacts);
+
+  /// Replaces `contacts` with the contact points between two moving bodies, `a` at (p_a_W, q_a_WB)
+  /// and `b` at (p_b_W, q_b_WB): Bullet's box-box algorithm (exact for boxes, up to four points
+  /// over the overlap), computed about b's centre so that single precision costs nothing far from
+  /// the origin. Each contact has its normal unit from b toward a, its point on b's surface, its
+  /// depth (> 0, overlapping boxes only: boxes that are apart or merely touch give no points) and
+  /// `collider` = `b`. Allocation-free once `contacts` has grown.
+  void FindBodyContacts(int a, const Vec3& p_a_W, const Quat& q_a_WB, int b, const Vec3& p_b_W,
+                        const Quat& q_b_WB, std::vector<Contact>& contacts);
 
   /// Sweeps body `body` with fixed attitude q_WB from `from_W` to `to_W` and returns the fraction
   /// of the way at which it first touches a collider it moves into (1 when nothing is in the way);

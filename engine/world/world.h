@@ -12,6 +12,7 @@
 #include "engine/core/clock.h"
 #include "engine/core/static_scene.h"
 #include "engine/environment/environment.h"
+#include "engine/physics/body_contact_solver.h"
 #include "engine/physics/collision_world.h"
 #include "engine/physics/contact_solver.h"
 #include "engine/world/ray_caster.h"
@@ -20,16 +21,19 @@
 
 namespace airis::engine {
 
-/// A vehicle touching a static object it was not touching the tick before.
+/// A vehicle touching a static object, or another vehicle, that it was not touching the tick
+/// before. When two vehicles meet, each of them gets an event naming the other.
 struct CollisionEvent {
   TimeNs time_ns = 0;       ///< end of the tick in which the contact began
   std::size_t vehicle = 0;  ///< index in the world
   std::string vehicle_name;
-  std::string object_name;           ///< the static object's name
-  std::uint8_t class_id = kNoClass;  ///< its semantic label
-  std::uint32_t instance_id = kNoInstance;
-  Vec3 point_W = Vec3::Zero();    ///< contact point on the object, world NED (m)
-  Vec3 normal_W = Vec3::UnitZ();  ///< unit, from the object toward the vehicle
+  std::string object_name;           ///< the static object's name, or the other vehicle's
+  std::uint8_t class_id = kNoClass;  ///< the object's semantic label (kNoClass for a vehicle)
+  std::uint32_t instance_id = kNoInstance;  ///< the object's (kNoInstance for a vehicle)
+  /// Index in the world of the other vehicle for a vehicle-vehicle contact; -1 for a static object.
+  int other_vehicle = -1;
+  Vec3 point_W = Vec3::Zero();    ///< contact point on the object (or other vehicle), world NED (m)
+  Vec3 normal_W = Vec3::UnitZ();  ///< unit, from the object (or other vehicle) toward the vehicle
   double impulse_Ns = 0.0;        ///< magnitude of the contact impulse applied in that tick
 };
 
@@ -85,15 +89,20 @@ class World {
   /// step random_poses).
   void SetHeld(std::size_t i, bool held);
   bool held(std::size_t i) const { return slots_[i].held; }
-  /// Air density (kg/m^3) and gravity (m/s^2) at vehicle `i`'s current position, from the same cached local
-  /// model the physics step uses (no atmosphere evaluation unless the vehicle has not been stepped yet).
+  /// Air density (kg/m^3) and gravity (m/s^2) at vehicle `i`'s current position, from the same
+  /// cached local model the physics step uses (no atmosphere evaluation unless the vehicle has not
+  /// been stepped yet).
   void CalcLocalConditions(std::size_t i, double* air_density_kg_m3, double* gravity_m_s2) const;
   /// Accelerations of vehicle `i` over the last step (contacts included).
   const RigidBodyAccelerations& accelerations(std::size_t i) const {
     return slots_[i].accelerations;
   }
-  /// Contacts of vehicle `i` found in the last step (after the sweep, before their resolution).
+  /// Contacts of vehicle `i` with the static scene found in the last step (after the sweep, before
+  /// their resolution).
   std::span<const Contact> contacts(std::size_t i) const { return slots_[i].contacts; }
+  /// Vehicle-vehicle contacts found in the last step, before their resolution: `a` and `b` are
+  /// vehicle indices (a < b), the normal points from b toward a.
+  std::span<const BodyContact> vehicle_contacts() const { return vehicle_contacts_; }
   std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const {
     return slots_[i].sensors;
   }
@@ -109,9 +118,11 @@ class World {
   }
 
   /// Moves every vehicle over one step [now_ns, now_ns + dt]: actuators -> integrator -> swept and
-  /// discrete collision detection -> contact response. Throws SimulationError naming the vehicle,
-  /// the time and the cause when a state becomes non-finite or absurd, or a body leaves the
-  /// atmosphere model's range.
+  /// discrete collision detection -> contact response, each vehicle against the static scene; then,
+  /// with several vehicles, contacts between vehicles (swept when they close fast) resolved
+  /// together with those vehicles' static contacts. Throws SimulationError naming the vehicle, the
+  /// time and the cause when a state becomes non-finite or absurd, or a body leaves the atmosphere
+  /// model's range.
   void StepPhysics(TimeNs now_ns, double dt_s);
 
   const StaticScene& scene() const { return *scene_; }
@@ -140,21 +151,44 @@ class World {
     std::vector<Contact> contacts;
     std::vector<std::uint32_t> touching;       // colliders in contact in the last tick
     std::vector<std::uint32_t> touching_next;  // scratch
+    Vec3 p_start_W = Vec3::Zero();  // position at the start of the tick (several vehicles)
+  };
+  // The vehicle-vehicle contacts of one pair of vehicles in vehicle_contacts_.
+  struct VehiclePair {
+    std::size_t a, b;          // vehicle indices, a < b
+    std::size_t first, count;  // range in vehicle_contacts_
   };
   void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
   void RefreshLocalEnvironment(Slot& slot, TimeNs now_ns, const Vec3& p_W) const;
   [[noreturn]] void Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const;
   void ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
                          const ContactResolution& resolution);
+  // Finds the contacts between vehicles i < j (sweeping when they close fast) into
+  // vehicle_contacts_; returns their number.
+  std::size_t FindVehiclePairContacts(std::size_t i, std::size_t j);
+  void ResolveVehicleContacts(TimeNs now_ns, double dt_s);
+  void ReportNewVehicleContacts(TimeNs end_ns);
 
   std::shared_ptr<const StaticScene> scene_;
   Environment environment_;
   PhysicsConfig physics_;
   CollisionWorld collision_;
   ContactSolver solver_;
+  BodyContactSolver body_solver_;
   std::vector<Slot> slots_;
   std::unique_ptr<RayCaster> ray_caster_;
   std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
+  // Vehicle-vehicle contact state (used only with several vehicles).
+  std::vector<BodyContact> vehicle_contacts_;
+  std::vector<VehiclePair> pairs_;                                   // touching pairs of this tick
+  std::vector<std::pair<std::size_t, std::size_t>> touching_pairs_;  // of the last tick
+  std::vector<std::pair<std::size_t, std::size_t>> touching_pairs_next_;
+  std::vector<Contact> pair_scratch_;
+  std::vector<BodyContact> solve_contacts_;
+  std::vector<ContactBody> solve_bodies_;
+  std::vector<std::size_t> solve_vehicles_;    // vehicle index of each of solve_bodies_
+  std::vector<int> solve_index_;               // per vehicle: index in solve_bodies_, or -1
+  std::vector<Vec3> v_before_W_, w_before_B_;  // per solve body
 };
 
 }  // namespace airis::engine

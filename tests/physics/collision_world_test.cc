@@ -148,5 +148,37 @@ TEST(CollisionWorldTest, BoxShapeIsTheModelsOrientedBoundingBox) {
   EXPECT_FALSE(contacts.empty());
 }
 
+TEST(CollisionWorldTest, TwoBodiesFarFromTheOriginHaveExactFaceContacts) {
+  // GIVEN two quad boxes 1 km from the origin, a's rear face 5 mm into b's front face
+  CollisionWorld world(SceneBuilder().scene());
+  const int a = world.AddBody(kQuadBox);
+  const int b = world.AddBody(kQuadBox);
+  const Vec3 p_b(1000.0, -800.0, -50.0);
+  const Vec3 p_a = p_b + Vec3(0.18 - 0.005, 0.0, 0.0);
+  std::vector<Contact> contacts;
+  world.FindBodyContacts(a, p_a, Quat::Identity(), b, p_b, Quat::Identity(), contacts);
+  // THEN the four corners of the overlap, pushing a away from b (+x), 5 mm deep, on b's face. The
+  // boxes are compared about b's centre, so single precision costs ~1e-7 of the box size there,
+  // not of the 1 km: 1e-6 m.
+  constexpr double kSinglePrecision_m = 1e-6;
+  ASSERT_EQ(contacts.size(), 4u);
+  for (const Contact& c : contacts) {
+    EXPECT_NEAR((c.normal_W - Vec3::UnitX()).norm(), 0.0, kSinglePrecision_m);
+    EXPECT_NEAR(c.depth_m, 0.005, kSinglePrecision_m);
+    EXPECT_NEAR(c.point_W.x(), p_b.x() + 0.09, kSinglePrecision_m);
+    EXPECT_NEAR(std::abs(c.point_W.y() - p_b.y()), 0.055, kSinglePrecision_m);
+    EXPECT_NEAR(std::abs(c.point_W.z() - p_b.z()), 0.02, kSinglePrecision_m);
+    EXPECT_EQ(c.collider, static_cast<std::uint32_t>(b));
+  }
+  // Swapped, the normal turns around (from a toward b).
+  world.FindBodyContacts(b, p_b, Quat::Identity(), a, p_a, Quat::Identity(), contacts);
+  ASSERT_EQ(contacts.size(), 4u);
+  EXPECT_NEAR((contacts[0].normal_W + Vec3::UnitX()).norm(), 0.0, kSinglePrecision_m);
+  // 1 mm apart: nothing.
+  world.FindBodyContacts(a, p_b + Vec3(0.181, 0.0, 0.0), Quat::Identity(), b, p_b,
+                         Quat::Identity(), contacts);
+  EXPECT_TRUE(contacts.empty());
+}
+
 }  // namespace
 }  // namespace airis::engine
