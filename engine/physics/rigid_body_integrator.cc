@@ -20,7 +20,7 @@ struct Derivative {
 // The right-hand side at the stage state (v, q, w) whose height is z0 + dz (only the height
 // matters for the position: gravity follows it through its gradient). Forced inline: called out of
 // line, its four stages run one after another through memory; inlined, the compiler overlaps them
-// (measured: the tick 25% faster).
+// (measured: the whole tick a fifth faster).
 template <bool kPrincipalAxes>
 [[gnu::always_inline]] inline Derivative Evaluate(const RigidBodyModel& body, const StepForcing& f,
                                                   double dz, const Vec3& v, const Vec4& q_coeffs,
