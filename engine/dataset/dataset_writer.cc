@@ -38,8 +38,9 @@ DatasetWriter::~DatasetWriter() {
   for (auto& t : workers_) t.join();
 }
 
-int DatasetWriter::AddCamera(const std::string& name, const DatasetOutputs& outputs) {
-  Camera cam{name, outputs, {}};
+int DatasetWriter::AddCamera(const std::string& name, const DatasetOutputs& outputs,
+                             const TartanAirSlot& tartanair) {
+  Camera cam{name, outputs, tartanair, {}};
   const std::filesystem::path dir = root_ / name;
   if (outputs.rgb) CreateFolder(dir / "rgb");
   if (outputs.depth_png || outputs.depth_npy) CreateFolder(dir / "depth");
@@ -48,6 +49,12 @@ int DatasetWriter::AddCamera(const std::string& name, const DatasetOutputs& outp
     CreateFolder(dir / "seg_instance");
   }
   if (outputs.normals) CreateFolder(dir / "normals");
+  if (outputs.tartanair) {
+    AIRIS_DEMAND(!tartanair.trajectory.empty() && !tartanair.side.empty());
+    for (const char* kind : {"image", "depth", "seg"}) {
+      CreateFolder(TartanAirFramePath(root_, tartanair, kind, 0).parent_path());
+    }
+  }
   cameras_.push_back(std::move(cam));
   return static_cast<int>(cameras_.size()) - 1;
 }
@@ -58,14 +65,20 @@ std::filesystem::path DatasetWriter::FramePath(int camera, const char* kind, std
 }
 
 bool DatasetWriter::FrameComplete(int camera, std::int64_t index) const {
-  const DatasetOutputs& o = cameras_[static_cast<std::size_t>(camera)].outputs;
+  const Camera& cam = cameras_[static_cast<std::size_t>(camera)];
+  const DatasetOutputs& o = cam.outputs;
   auto exists = [&](const char* kind, const char* ext) {
     return std::filesystem::exists(FramePath(camera, kind, index, ext));
+  };
+  auto tartan_exists = [&](const char* kind) {
+    return std::filesystem::exists(TartanAirFramePath(root_, cam.tartanair, kind, index));
   };
   return (!o.rgb || exists("rgb", ".png")) && (!o.depth_png || exists("depth", ".png")) &&
          (!o.depth_npy || exists("depth", ".npy")) &&
          (!o.segmentation || (exists("seg_class", ".png") && exists("seg_instance", ".png"))) &&
-         (!o.normals || exists("normals", ".npy"));
+         (!o.normals || exists("normals", ".npy")) &&
+         (!o.tartanair ||
+          (tartan_exists("image") && tartan_exists("depth") && tartan_exists("seg")));
 }
 
 void DatasetWriter::Adopt(int camera, std::int64_t index) {
@@ -80,7 +93,8 @@ void DatasetWriter::Adopt(int camera, std::int64_t index) {
   cam.annotations[index] = std::move(anns);
 }
 
-void DatasetWriter::Submit(int camera, std::int64_t index, std::shared_ptr<const CameraFrame> frame) {
+void DatasetWriter::Submit(int camera, std::int64_t index,
+                           std::shared_ptr<const CameraFrame> frame) {
   std::unique_lock lock(mutex_);
   space_ready_.wait(lock, [&] {
     return error_ || static_cast<int>(queue_.size()) < options_.max_pending_frames;
@@ -140,11 +154,23 @@ void DatasetWriter::WorkerLoop() {
 
 void DatasetWriter::WriteFrame(const Job& job) {
   const CameraFrame& f = *job.frame;
-  const DatasetOutputs& o = cameras_[static_cast<std::size_t>(job.camera)].outputs;
+  const Camera& cam = cameras_[static_cast<std::size_t>(job.camera)];
+  const DatasetOutputs& o = cam.outputs;
   auto write = [&](const char* kind, const char* ext, const std::vector<std::uint8_t>& bytes) {
     WriteFileAtomically(FramePath(job.camera, kind, job.index, ext), bytes);
   };
-  if (o.rgb) write("rgb", ".png", EncodeRgbPng(f.rgba));
+  if (o.tartanair) {
+    // Its image is the same PNG as rgb/ (encoded once when both are written).
+    const std::vector<std::uint8_t> png = EncodeRgbPng(f.rgba);
+    if (o.rgb) write("rgb", ".png", png);
+    WriteFileAtomically(TartanAirFramePath(root_, cam.tartanair, "image", job.index), png);
+    WriteFileAtomically(TartanAirFramePath(root_, cam.tartanair, "depth", job.index),
+                        EncodeNpy(ToTartanAirDepth(f.depth_planar_m)));
+    WriteFileAtomically(TartanAirFramePath(root_, cam.tartanair, "seg", job.index),
+                        EncodeNpy(f.class_id));
+  } else if (o.rgb) {
+    write("rgb", ".png", EncodeRgbPng(f.rgba));
+  }
   if (o.depth_png) write("depth", ".png", EncodeDepthMmPng(f.depth_planar_m));
   if (o.depth_npy) write("depth", ".npy", EncodeNpy(f.depth_planar_m));
   if (o.normals) write("normals", ".npy", EncodeNpy(f.normal_C));

@@ -57,11 +57,18 @@ std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path) {
   return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
-std::vector<std::uint8_t> EncodeNpy(const Image<float>& image) {
-  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" +
-                       std::to_string(image.height) + ", " + std::to_string(image.width) +
+namespace {
+
+// Format 1.0 with `descr` ('<f4', '|u1'); x86-64 is little-endian, so pixels are copied as they
+// are.
+template <typename T>
+std::vector<std::uint8_t> EncodeNpyOf(const Image<T>& image, const char* descr) {
+  std::string header = std::string("{'descr': '") + descr +
+                       "', 'fortran_order': False, 'shape': (" + std::to_string(image.height) +
+                       ", " + std::to_string(image.width) +
                        (image.channels > 1 ? ", " + std::to_string(image.channels) : "") + "), }";
-  // Magic (6) + version (2) + header length (2) + header, padded with spaces to a multiple of 64, ending '\n'.
+  // Magic (6) + version (2) + header length (2) + header, padded with spaces to a multiple of 64,
+  // ending '\n'.
   const std::size_t unpadded = 10 + header.size() + 1;
   header.append((64 - unpadded % 64) % 64, ' ');
   header.push_back('\n');
@@ -70,12 +77,22 @@ std::vector<std::uint8_t> EncodeNpy(const Image<float>& image) {
   out.push_back(static_cast<std::uint8_t>(header.size() >> 8));
   out.insert(out.end(), header.begin(), header.end());
   const auto* data = reinterpret_cast<const std::uint8_t*>(image.pixels.data());
-  out.insert(out.end(), data, data + image.pixels.size() * sizeof(float));  // x86-64 is little-endian
+  out.insert(out.end(), data, data + image.pixels.size() * sizeof(T));
   return out;
 }
 
+}  // namespace
+
+std::vector<std::uint8_t> EncodeNpy(const Image<float>& image) { return EncodeNpyOf(image, "<f4"); }
+
+std::vector<std::uint8_t> EncodeNpy(const Image<std::uint8_t>& image) {
+  return EncodeNpyOf(image, "|u1");
+}
+
 Image<float> DecodeNpy(std::span<const std::uint8_t> bytes, const std::string& name) {
-  auto fail = [&](const char* why) -> Image<float> { throw DatasetIoError(name + ": not an airis .npy file (" + why + ")"); };
+  auto fail = [&](const char* why) -> Image<float> {
+    throw DatasetIoError(name + ": not an airis .npy file (" + why + ")");
+  };
   if (bytes.size() < 10 || bytes[0] != 0x93 || bytes[6] != 1) return fail("bad magic");
   const std::size_t header_len = bytes[8] | (static_cast<std::size_t>(bytes[9]) << 8);
   if (bytes.size() < 10 + header_len) return fail("short header");

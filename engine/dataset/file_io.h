@@ -18,17 +18,19 @@ class DatasetIoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Writes `bytes` to `path` crash-safely: to a temporary file beside it, flushed, then renamed over `path`, so a
-/// reader never sees a partial file. Throws DatasetIoError.
+/// Writes `bytes` to `path` crash-safely: to a temporary file beside it, flushed, then renamed over
+/// `path`, so a reader never sees a partial file. Throws DatasetIoError.
 void WriteFileAtomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
 
 /// Reads a whole file. Throws DatasetIoError.
 std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path);
 
-/// A NumPy .npy (format 1.0) file of a float32 image: shape (height, width) or (height, width, channels),
-/// little-endian '<f4', C order.
+/// A NumPy .npy (format 1.0) file of a float32 image: shape (height, width) or (height, width,
+/// channels), little-endian '<f4', C order.
 std::vector<std::uint8_t> EncodeNpy(const Image<float>& image);
+/// The same for an 8-bit image ('|u1'), e.g. TartanAir's class-id maps.
+std::vector<std::uint8_t> EncodeNpy(const Image<std::uint8_t>& image);
 
 /// The image in a .npy file written by EncodeNpy (for tests and resume). Throws DatasetIoError.
 Image<float> DecodeNpy(std::span<const std::uint8_t> bytes, const std::string& name);

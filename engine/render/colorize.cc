@@ -47,11 +47,8 @@ Image<std::uint8_t> ColorizeDepth(const Image<float>& depth_m, float near_m, flo
   return out;
 }
 
-Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
-                                         const Image<std::uint16_t>& instance_id,
-                                         std::span<const SemanticClass> classes) {
-  AIRIS_DEMAND(class_id.width == instance_id.width && class_id.height == instance_id.height);
-  std::array<std::array<std::uint8_t, 3>, 256> palette{};
+SegmentationPalette CalcSegmentationPalette(std::span<const SemanticClass> classes) {
+  SegmentationPalette palette{};
   for (int id = 1; id < 256; ++id) {
     // Golden-angle hues for classes missing from the table.
     cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar((id * 137) % 180, 200, 230));
@@ -64,6 +61,19 @@ Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
     if (c.id == kNoClass) continue;
     palette[c.id] = {ToByte(c.color_rgb.x()), ToByte(c.color_rgb.y()), ToByte(c.color_rgb.z())};
   }
+  return palette;
+}
+
+Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
+                                         const Image<std::uint16_t>& instance_id,
+                                         std::span<const SemanticClass> classes) {
+  return ColorizeSegmentation(class_id, instance_id, CalcSegmentationPalette(classes));
+}
+
+Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
+                                         const Image<std::uint16_t>& instance_id,
+                                         const SegmentationPalette& palette) {
+  AIRIS_DEMAND(class_id.width == instance_id.width && class_id.height == instance_id.height);
   Image<std::uint8_t> out;
   out.Resize(class_id.width, class_id.height, 3);
   for (std::size_t i = 0; i < class_id.pixels.size(); ++i) {

@@ -1,0 +1,67 @@
+#include "engine/dataset/contact_sheet.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/image_encoding.h"
+#include "engine/render/colorize.h"
+
+namespace airis::engine {
+namespace {
+
+std::filesystem::path FramePath(const std::filesystem::path& dir, const char* kind,
+                                std::int64_t index) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "%06lld.png", static_cast<long long>(index));
+  return dir / kind / name;
+}
+
+// Nearest-neighbour copy of the colour of `src` (RGB8 or RGBA8) into `dst` (RGBA8) at (x0, y0),
+// shrunk by `step`.
+void Blit(const Image<std::uint8_t>& src, int step, Image<std::uint8_t>& dst, int x0, int y0) {
+  for (int v = 0; v * step < src.height; ++v) {
+    for (int u = 0; u * step < src.width; ++u) {
+      for (int c = 0; c < 3; ++c) dst.at(x0 + u, y0 + v, c) = src.at(u * step, v * step, c);
+    }
+  }
+}
+
+}  // namespace
+
+void WriteContactSheet(const std::filesystem::path& camera_dir,
+                       std::span<const std::int64_t> frames, float near_m,
+                       const SegmentationPalette& palette, const std::filesystem::path& out_png) {
+  AIRIS_DEMAND(!frames.empty());
+  const int rows = static_cast<int>(std::min<std::size_t>(4, frames.size()));
+  Image<std::uint8_t> sheet;
+  int step = 1, pw = 0, ph = 0;
+  for (int r = 0; r < rows; ++r) {
+    const std::int64_t index =
+        frames[static_cast<std::size_t>(r) * (frames.size() - 1) / std::max(1, rows - 1)];
+    const auto rgba = DecodeRgbPng(ReadFileBytes(FramePath(camera_dir, "rgb", index)));
+    if (r == 0) {
+      step = std::max(1, (rgba.width + 479) / 480);
+      pw = (rgba.width + step - 1) / step;
+      ph = (rgba.height + step - 1) / step;
+      sheet.Resize(3 * pw, rows * ph, 4);  // RGBA, alpha left opaque
+      std::fill(sheet.pixels.begin(), sheet.pixels.end(), 255);
+    }
+    const auto mm = DecodePng16(ReadFileBytes(FramePath(camera_dir, "depth", index)));
+    Image<float> depth;
+    depth.Resize(mm.width, mm.height, 1);
+    for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
+      depth.pixels[p] = mm.pixels[p] == 0 ? kSkyDepthM : mm.pixels[p] * 1e-3f;
+    }
+    const auto cls = DecodePng8(ReadFileBytes(FramePath(camera_dir, "seg_class", index)));
+    const auto ins = DecodePng16(ReadFileBytes(FramePath(camera_dir, "seg_instance", index)));
+    Blit(rgba, step, sheet, 0, r * ph);
+    Blit(ColorizeDepth(depth, near_m, 65.535f), step, sheet, pw, r * ph);
+    Blit(ColorizeSegmentation(cls, ins, palette), step, sheet, 2 * pw, r * ph);
+  }
+  WriteFileAtomically(out_png, EncodeRgbPng(sheet));
+}
+
+}  // namespace airis::engine

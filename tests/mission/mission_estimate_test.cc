@@ -1,0 +1,59 @@
+#include "engine/mission/mission_estimate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace airis::engine {
+namespace {
+
+MissionStep Step(MissionStepSpec spec) { return {std::move(spec), {}}; }
+
+const LocalNedFrame kFrame(GeodeticPosition{DegToRad(47.0), DegToRad(8.0), 400.0});
+
+// GIVEN a mission of every kind of leg with round numbers WHEN its nominal duration is estimated
+// THEN it is the sum of the legs' closed forms: climbs and descents at 1 m/s, distance / speed,
+// circumference x turns / speed, the hold times.
+TEST(MissionEstimateTest, SumsTheClosedFormOfEachLeg) {
+  Mission m;
+  TakeoffStep takeoff;
+  takeoff.altitude_m = 10.0;  // 10 s at 1 m/s
+  GotoStep go;
+  go.position_ned_m = Vec3(30.0, 40.0, -10.0);  // 50 m at 5 m/s: 10 s
+  go.speed_m_s = 5.0;
+  HoverStep hover;
+  hover.duration_s = 3.0;
+  OrbitStep orbit;
+  orbit.radius_m = 10.0;
+  orbit.speed_m_s = 2.0 * std::numbers::pi;  // 10 s a turn
+  orbit.turns = 1.5;
+  PathStep path;
+  path.waypoints_ned_m = {Vec3(30.0, 60.0, -10.0)};  // 20 m east at 4 m/s: 5 s (one leg, no corner)
+  path.speed_m_s = 4.0;
+  WaitStep wait;
+  wait.duration_s = 2.0;
+  m.steps = {Step(takeoff), Step(go),   Step(hover),     Step(orbit),
+             Step(path),    Step(wait), Step(LandStep{})};
+  constexpr double kExpected_s = 10 + 10 + 3 + 15 + 5 + 2 + 10;  // land: 10 m down at 1 m/s
+  EXPECT_NEAR(EstimateMissionDuration_s(m, Vec3::Zero(), kFrame), kExpected_s, 1e-9);
+}
+
+// GIVEN a goto to a geodetic target WHEN estimated THEN the leg is its local NED distance over the
+// speed.
+TEST(MissionEstimateTest, GeodeticTargetsAreFlownInTheLocalFrame) {
+  Mission m;
+  GotoStep go;
+  const GeodeticPosition target = kFrame.ToGeodetic(Vec3(0.0, 100.0, -20.0));
+  go.geodetic =
+      Vec3(RadToDeg(target.latitude_rad), RadToDeg(target.longitude_rad), target.altitude_m);
+  go.speed_m_s = 10.0;
+  m.steps = {Step(go)};
+  // 100 m east and 20 m up from a start at the origin: sqrt(100^2 + 20^2) / 10; the geodetic round
+  // trip is good to micrometres.
+  EXPECT_NEAR(EstimateMissionDuration_s(m, Vec3::Zero(), kFrame), std::hypot(100.0, 20.0) / 10.0,
+              1e-6);
+}
+
+}  // namespace
+}  // namespace airis::engine
