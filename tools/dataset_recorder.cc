@@ -5,9 +5,8 @@
 
 #include "engine/core/error.h"
 #include "engine/dataset/coco_json.h"
+#include "engine/dataset/contact_sheet.h"
 #include "engine/dataset/file_io.h"
-#include "engine/dataset/image_encoding.h"
-#include "engine/render/colorize.h"
 #include "sensors/camera/camera_sensor.h"
 #include "sensors/camera/stereo_camera_sensor.h"
 
@@ -28,53 +27,51 @@ nlohmann::json MountJson(const engine::MountConfig& m) {
 }
 
 // The outputs a camera can give to a dataset: what the user asked for, of what the camera renders.
-engine::DatasetOutputs OutputsFor(const engine::DatasetOutputs& wanted, const engine::RenderOutputs& has) {
+engine::DatasetOutputs OutputsFor(const engine::DatasetOutputs& wanted,
+                                  const engine::RenderOutputs& has) {
   engine::DatasetOutputs o = wanted;
   o.rgb = wanted.rgb && has.rgb;
   o.depth_png = wanted.depth_png && has.depth_planar;
   o.depth_npy = wanted.depth_npy && has.depth_planar;
   o.segmentation = wanted.segmentation && has.segmentation;
   o.normals = wanted.normals && has.normals;
+  o.tartanair =
+      wanted.tartanair && has.rgb && has.depth_planar && has.segmentation;  // all three or none
   return o;
-}
-
-// Nearest-neighbour copy of `src` (RGB8 or RGBA8) into `dst` (RGB8) at (x0, y0), shrunk by `step`.
-void Blit(const engine::Image<std::uint8_t>& src, int step, engine::Image<std::uint8_t>& dst, int x0, int y0) {
-  for (int v = 0; v * step < src.height; ++v) {
-    for (int u = 0; u * step < src.width; ++u) {
-      for (int c = 0; c < 3; ++c) dst.at(x0 + u, y0 + v, c) = src.at(u * step, v * step, c);
-    }
-  }
 }
 
 }  // namespace
 
 struct DatasetRecorder::Recording {
   int writer_camera = 0;
-  engine::DatasetOutputs outputs;
   std::unique_ptr<engine::CsvWriter> poses;
   std::vector<engine::CocoImage> images;
-  std::int64_t next_frame = 0;
+  std::int64_t next_frame = 0;  // index of the next recorded frame (of every shard)
+  std::int64_t pending = -1;    // index of the frame being rendered for this run, -1 if none
   std::optional<engine::RateSchedule> capture_schedule;
 };
 
 DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
     : world_(world), options_(options), writer_(options.root, options.writer) {
+  AIRIS_DEMAND(options_.shard_count >= 1 && options_.shard_index >= 0 &&
+               options_.shard_index < options_.shard_count);
   auto wanted = [&](const std::string& name) {
-    return options_.cameras.empty() ||
-           std::find(options_.cameras.begin(), options_.cameras.end(), name) != options_.cameras.end();
+    return options_.cameras.empty() || std::find(options_.cameras.begin(), options_.cameras.end(),
+                                                 name) != options_.cameras.end();
   };
-  auto add = [&](const std::string& name, const std::string& vehicle, const engine::CameraIntrinsics& k,
-                 double rate_hz, nlohmann::json mount, const engine::RenderOutputs& has) -> std::size_t {
+  auto add = [&](const std::string& name, const std::string& vehicle,
+                 const engine::CameraIntrinsics& k, double rate_hz, nlohmann::json mount,
+                 const engine::RenderOutputs& has,
+                 const engine::TartanAirSlot& tartanair) -> std::size_t {
     auto rec = std::make_unique<Recording>();
-    rec->outputs = OutputsFor(options_.outputs, has);
-    rec->writer_camera = writer_.AddCamera(name, rec->outputs);
-    const std::vector<std::string> columns = {"time_ns", "time_s", "frame", "p_n_m", "p_e_m", "p_d_m",
-                                              "q_w", "q_x", "q_y", "q_z", "latitude_deg", "longitude_deg",
-                                              "altitude_m"};
+    const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, has);
+    rec->writer_camera = writer_.AddCamera(name, outputs, tartanair);
+    const std::vector<std::string> columns = {
+        "time_ns", "time_s", "frame", "p_n_m",        "p_e_m",         "p_d_m",     "q_w",
+        "q_x",     "q_y",    "q_z",   "latitude_deg", "longitude_deg", "altitude_m"};
     rec->poses = std::make_unique<engine::CsvWriter>(options_.root / name / "poses.csv", columns);
     recordings_.push_back(std::move(rec));
-    info_.push_back({name, vehicle, k, rate_hz, std::move(mount), 0});
+    info_.push_back({name, vehicle, k, rate_hz, std::move(mount), outputs, tartanair, 0});
     return recordings_.size() - 1;
   };
   std::vector<std::string> found;
@@ -87,20 +84,34 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
       }
       if (auto* mono = dynamic_cast<sensors::CameraSensor*>(sensor.get())) {
         found.push_back(mono->name());
-        if (!wanted(mono->name())) continue;
-        const std::size_t i = add(mono->name(), vehicle, mono->intrinsics(), mono->config().rate_hz,
-                                  MountJson(mono->config().mount), mono->config().outputs);
+        if (!wanted(mono->name())) {
+          mono->set_sample_gate([](engine::TimeNs) { return false; });  // nothing records it
+          continue;
+        }
+        const std::size_t i =
+            add(mono->name(), vehicle, mono->intrinsics(), mono->config().rate_hz,
+                MountJson(mono->config().mount), mono->config().outputs, {mono->name(), "left"});
+        mono->set_sample_gate([this, i](engine::TimeNs now_ns) { return TakeFrame(i, now_ns); });
         mono->AddListener([this, i, mono](const engine::Sensor&) { OnFrame(i, mono->latest()); });
       } else if (auto* stereo = dynamic_cast<sensors::StereoCameraSensor*>(sensor.get())) {
         const std::string base = stereo->name();
         found.push_back(base + "_left");
         found.push_back(base + "_right");
-        if (!wanted(base + "_left") && !wanted(base + "_right") && !wanted(base)) continue;
+        if (!wanted(base + "_left") && !wanted(base + "_right") && !wanted(base)) {
+          stereo->set_sample_gate([](engine::TimeNs) { return false; });
+          continue;
+        }
         nlohmann::json mount = MountJson(stereo->config().camera.mount);
         mount["baseline_m"] = stereo->config().baseline_m;
         const auto& c = stereo->config().camera;
-        const std::size_t l = add(base + "_left", vehicle, stereo->intrinsics(), c.rate_hz, mount, c.outputs);
-        const std::size_t r = add(base + "_right", vehicle, stereo->intrinsics(), c.rate_hz, mount, c.outputs);
+        const std::size_t l = add(base + "_left", vehicle, stereo->intrinsics(), c.rate_hz, mount,
+                                  c.outputs, {base, "left"});
+        const std::size_t r = add(base + "_right", vehicle, stereo->intrinsics(), c.rate_hz, mount,
+                                  c.outputs, {base, "right"});
+        stereo->set_sample_gate([this, l, r](engine::TimeNs now_ns) {
+          const bool left = TakeFrame(l, now_ns);
+          return TakeFrame(r, now_ns) || left;  // both eyes are numbered, whichever this run writes
+        });
         stereo->AddListener([this, l, r, stereo](const engine::Sensor&) {
           OnFrame(l, stereo->left());
           OnFrame(r, stereo->right());
@@ -114,12 +125,14 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
     if (!known) {
       std::string all;
       for (const auto& f : found) all += (all.empty() ? "" : ", ") + f;
-      throw engine::ConfigError({}, "--cameras",
-                                "no camera '" + name + "' in the scene (it has " + (all.empty() ? "none" : all) + ")");
+      throw engine::ConfigError(
+          {}, "--cameras",
+          "no camera '" + name + "' in the scene (it has " + (all.empty() ? "none" : all) + ")");
     }
   }
   if (recordings_.empty()) {
-    throw engine::ConfigError({}, "scene", "the scene has no camera to record (add a 'camera' sensor to a vehicle)");
+    throw engine::ConfigError(
+        {}, "scene", "the scene has no camera to record (add a 'camera' sensor to a vehicle)");
   }
 }
 
@@ -137,13 +150,24 @@ void DatasetRecorder::SetCapture(const engine::CaptureStep& capture) {
   }
 }
 
-void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& frame) {
-  if (!recording_) return;
-  const std::string& name = info_[camera].name;
-  if (!only_.empty() && std::find(only_.begin(), only_.end(), name) == only_.end()) return;
+bool DatasetRecorder::TakeFrame(std::size_t camera, engine::TimeNs now_ns) {
   Recording& rec = *recordings_[camera];
-  if (rec.capture_schedule && rec.capture_schedule->ConsumeDue(frame.time_ns) == 0) return;
+  rec.pending = -1;
+  if (!recording_) return false;
+  const std::string& name = info_[camera].name;
+  if (!only_.empty() && std::find(only_.begin(), only_.end(), name) == only_.end()) return false;
+  if (rec.capture_schedule && rec.capture_schedule->ConsumeDue(now_ns) == 0) return false;
   const std::int64_t index = rec.next_frame++;
+  if (index % options_.shard_count != options_.shard_index) return false;  // another shard's frame
+  rec.pending = index;
+  return true;
+}
+
+void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& frame) {
+  Recording& rec = *recordings_[camera];
+  if (rec.pending < 0) return;  // the other eye of a stereo frame this run does not write
+  const std::int64_t index = rec.pending;
+  rec.pending = -1;
   if (options_.resume && writer_.FrameComplete(rec.writer_camera, index)) {
     writer_.Adopt(rec.writer_camera, index);
   } else {
@@ -153,12 +177,17 @@ void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& fra
   const engine::Quat q(frame.T_WC.rotation());
   const engine::GeodeticPosition g = world_.environment().frame().ToGeodetic(p);
   engine::CsvWriter& out = *rec.poses;
-  out.Add(static_cast<std::int64_t>(frame.time_ns)).Add(engine::ToSeconds(frame.time_ns)).Add(index);
+  out.Add(static_cast<std::int64_t>(frame.time_ns))
+      .Add(engine::ToSeconds(frame.time_ns))
+      .Add(index);
   out.Add(p.x()).Add(p.y()).Add(p.z()).Add(q.w()).Add(q.x()).Add(q.y()).Add(q.z());
-  out.Add(engine::RadToDeg(g.latitude_rad)).Add(engine::RadToDeg(g.longitude_rad)).Add(g.altitude_m);
+  out.Add(engine::RadToDeg(g.latitude_rad))
+      .Add(engine::RadToDeg(g.longitude_rad))
+      .Add(g.altitude_m);
   out.EndRow();
   const engine::CameraIntrinsics& k = info_[camera].intrinsics;
-  rec.images.push_back({index, rec.outputs.rgb ? FrameFile("rgb", index, ".png") : "", k.width_px, k.height_px});
+  rec.images.push_back({index, info_[camera].outputs.rgb ? FrameFile("rgb", index, ".png") : "",
+                        k.width_px, k.height_px});
   ++info_[camera].frames;
 }
 
@@ -169,10 +198,15 @@ void DatasetRecorder::Finish() {
   for (std::size_t i = 0; i < recordings_.size(); ++i) {
     Recording& rec = *recordings_[i];
     rec.poses->Close();
-    if (rec.outputs.segmentation) {
-      const nlohmann::json coco =
-          engine::BuildCocoJson(rec.images, writer_.annotations(rec.writer_camera), world_.scene().classes);
-      engine::WriteFileAtomically(options_.root / info_[i].name / "coco_instances.json", coco.dump(1));
+    const CameraInfo& info = info_[i];
+    if (info.outputs.segmentation) {
+      const nlohmann::json coco = engine::BuildCocoJson(
+          rec.images, writer_.annotations(rec.writer_camera), world_.scene().classes);
+      engine::WriteFileAtomically(options_.root / info.name / "coco_instances.json", coco.dump(1));
+    }
+    if (info.outputs.tartanair) {
+      engine::WriteTartanAirPoses(rec.poses->path(),
+                                  engine::TartanAirPosePath(options_.root, info.tartanair));
     }
   }
   WriteLabels();
@@ -183,11 +217,10 @@ void DatasetRecorder::WriteLabels() const {
   const engine::StaticScene& scene = world_.scene();
   nlohmann::json labels;
   nlohmann::json& classes = labels["classes"] = nlohmann::json::array();
+  const engine::SegmentationPalette palette = engine::CalcSegmentationPalette(scene.classes);
   for (const auto& c : scene.classes) {
-    classes.push_back({{"id", c.id},
-                       {"name", c.name},
-                       {"color", {std::lround(c.color_rgb.x() * 255), std::lround(c.color_rgb.y() * 255),
-                                  std::lround(c.color_rgb.z() * 255)}}});
+    const auto& rgb = palette[c.id];  // the colour of the previews, so a merge redraws them exactly
+    classes.push_back({{"id", c.id}, {"name", c.name}, {"color", {rgb[0], rgb[1], rgb[2]}}});
   }
   nlohmann::json& instances = labels["instances"] = nlohmann::json::array();
   for (const auto& o : scene.objects) {
@@ -197,36 +230,16 @@ void DatasetRecorder::WriteLabels() const {
 }
 
 void DatasetRecorder::WritePreview() const {
-  // Contact sheet of the first camera with colour, depth and labels: up to 4 frames spread over the run,
-  // one row each: RGB | colourised depth | colourised segmentation, shrunk to at most 480 px wide panels.
+  // The contact sheet of the first camera with colour, depth and labels.
   for (std::size_t i = 0; i < recordings_.size(); ++i) {
+    const engine::DatasetOutputs& o = info_[i].outputs;
     const Recording& rec = *recordings_[i];
-    if (!rec.outputs.rgb || !rec.outputs.depth_png || !rec.outputs.segmentation || rec.images.empty()) continue;
-    const engine::CameraIntrinsics& k = info_[i].intrinsics;
-    const int step = std::max(1, (k.width_px + 479) / 480);
-    const int pw = (k.width_px + step - 1) / step, ph = (k.height_px + step - 1) / step;
-    const int rows = static_cast<int>(std::min<std::size_t>(4, rec.images.size()));
-    engine::Image<std::uint8_t> sheet;
-    sheet.Resize(3 * pw, rows * ph, 4);
-    std::fill(sheet.pixels.begin(), sheet.pixels.end(), 255);
-    const std::filesystem::path dir = options_.root / info_[i].name;
-    for (int r = 0; r < rows; ++r) {
-      const std::int64_t index =
-          rec.images[static_cast<std::size_t>(r) * (rec.images.size() - 1) / std::max(1, rows - 1)].frame_index;
-      const auto rgba = engine::DecodeRgbPng(engine::ReadFileBytes(dir / FrameFile("rgb", index, ".png")));
-      const auto mm = engine::DecodePng16(engine::ReadFileBytes(dir / FrameFile("depth", index, ".png")));
-      engine::Image<float> depth;
-      depth.Resize(mm.width, mm.height, 1);
-      for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
-        depth.pixels[p] = mm.pixels[p] == 0 ? engine::kSkyDepthM : mm.pixels[p] * 1e-3f;
-      }
-      const auto cls = engine::DecodePng8(engine::ReadFileBytes(dir / FrameFile("seg_class", index, ".png")));
-      const auto ins = engine::DecodePng16(engine::ReadFileBytes(dir / FrameFile("seg_instance", index, ".png")));
-      Blit(rgba, step, sheet, 0, r * ph);
-      Blit(engine::ColorizeDepth(depth, static_cast<float>(k.near_m), 65.535f), step, sheet, pw, r * ph);
-      Blit(engine::ColorizeSegmentation(cls, ins, world_.scene().classes), step, sheet, 2 * pw, r * ph);
-    }
-    engine::WriteFileAtomically(options_.root / "preview.png", engine::EncodeRgbPng(sheet));
+    if (!o.rgb || !o.depth_png || !o.segmentation || rec.images.empty()) continue;
+    std::vector<std::int64_t> frames;
+    for (const auto& image : rec.images) frames.push_back(image.frame_index);
+    engine::WriteContactSheet(
+        options_.root / info_[i].name, frames, static_cast<float>(info_[i].intrinsics.near_m),
+        engine::CalcSegmentationPalette(world_.scene().classes), options_.root / "preview.png");
     return;
   }
 }

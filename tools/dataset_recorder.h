@@ -2,11 +2,10 @@
 
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "engine/core/clock.h"
 #include "engine/dataset/csv_writer.h"
@@ -19,17 +18,21 @@ namespace airis::tools {
 
 /// Records the frames of a world's cameras into a dataset folder while a mission runs
 /// (docs/dataset-format.md): frames go to a DatasetWriter (worker threads, bounded queue), poses to
-/// <camera>/poses.csv; Finish writes coco_instances.json per camera, labels.json and preview.png. A stereo
-/// camera records as two dataset cameras, <name>_left and <name>_right. Recording is on between the
-/// mission's capture steps.
+/// <camera>/poses.csv; Finish writes coco_instances.json per camera, labels.json and preview.png. A
+/// stereo camera records as two dataset cameras, <name>_left and <name>_right. Recording is on
+/// between the mission's capture steps. Cameras render only the frames this run records: a shard (K
+/// of N) records frame indices i with i % N == K - 1 of every camera, and skips rendering the
+/// others.
 class DatasetRecorder {
  public:
   struct Options {
     std::filesystem::path root;
-    bool resume = false;                   ///< adopt frames an interrupted run already wrote
-    std::vector<std::string> cameras;      ///< record only these (empty: all)
-    engine::DatasetOutputs outputs;        ///< which files per frame
+    bool resume = false;               ///< adopt frames an interrupted run already wrote
+    std::vector<std::string> cameras;  ///< record only these (empty: all)
+    engine::DatasetOutputs outputs;    ///< which files per frame
     engine::DatasetWriter::Options writer;
+    int shard_index = 0;  ///< 0-based: this run records frames i % shard_count == shard_index
+    int shard_count = 1;
   };
   /// A dataset camera as the manifest describes it.
   struct CameraInfo {
@@ -38,6 +41,9 @@ class DatasetRecorder {
     engine::CameraIntrinsics intrinsics;
     double rate_hz = 0.0;
     nlohmann::json mount;
+    engine::DatasetOutputs outputs;  ///< the files it writes per frame
+    engine::TartanAirSlot
+        tartanair;  ///< its place in the TartanAir layout (when outputs.tartanair)
     std::int64_t frames = 0;
   };
 
@@ -55,6 +61,9 @@ class DatasetRecorder {
 
  private:
   struct Recording;
+  /// Before camera `camera` renders at `now_ns`: numbers the frame if it is recorded; true when
+  /// this run writes it.
+  bool TakeFrame(std::size_t camera, engine::TimeNs now_ns);
   void OnFrame(std::size_t camera, const engine::CameraFrame& frame);
   void WritePreview() const;
   void WriteLabels() const;
@@ -64,7 +73,8 @@ class DatasetRecorder {
   engine::DatasetWriter writer_;
   std::vector<CameraInfo> info_;
   std::vector<std::unique_ptr<Recording>> recordings_;
-  std::vector<engine::Sensor*> camera_sensors_;  // every camera of the world (switched with recording)
+  std::vector<engine::Sensor*>
+      camera_sensors_;  // every camera of the world (switched with recording)
   bool recording_ = false;
   std::vector<std::string> only_;  // capture-step camera filter (empty: all)
   double capture_rate_hz_ = 0.0;

@@ -1,5 +1,6 @@
-// `airis dataset` end to end on the city scene: files agree with each other, runs are byte-identical, an
-// interrupted run resumed equals an uninterrupted one. Runs from the repository root.
+// `airis dataset` end to end on the city scene: files agree with each other, runs are
+// byte-identical, an interrupted run resumed equals an uninterrupted one. Runs from the repository
+// root.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "tests/tools/dataset_test_util.h"
 #include "tests/tools/run_airis.h"
 #include "tools/commands.h"
 
@@ -22,13 +24,10 @@ namespace {
 namespace fs = std::filesystem;
 
 using Result = testing::CommandResult;
+using testing::AllFiles;
+using testing::Bytes;
 
 Result RunAiris(const std::string& args) { return testing::RunAiris(&AddDatasetCommand, args); }
-
-std::string Bytes(const fs::path& p) {
-  const auto b = engine::ReadFileBytes(p);
-  return std::string(b.begin(), b.end());
-}
 
 // A short mission: climb over the central crossing, record while turning, stop.
 std::string MissionFile() {
@@ -47,18 +46,10 @@ steps:
 fs::path MakeDataset(const std::string& name, const std::string& extra = "") {
   const fs::path dir = fs::temp_directory_path() / ("airis_dataset_" + name);
   fs::remove_all(dir);
-  const Result r = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " + dir.string() +
-                            " --formats npy " + extra);
+  const Result r = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " +
+                            dir.string() + " --formats npy " + extra);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   return dir;
-}
-
-std::map<std::string, std::string> AllFiles(const fs::path& root) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(root)) {
-    if (e.is_regular_file()) files[fs::relative(e.path(), root).string()] = Bytes(e.path());
-  }
-  return files;
 }
 
 TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
@@ -76,19 +67,25 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
   const auto coco = nlohmann::json::parse(Bytes(dir / "front/coco_instances.json"));
   EXPECT_EQ(coco["images"].size(), static_cast<std::size_t>(frames));
   std::map<std::int64_t, std::vector<nlohmann::json>> anns_of;
-  for (const auto& a : coco["annotations"]) anns_of[a["image_id"].get<std::int64_t>() - 1].push_back(a);
+  for (const auto& a : coco["annotations"])
+    anns_of[a["image_id"].get<std::int64_t>() - 1].push_back(a);
 
   for (std::int64_t f = 0; f < frames; ++f) {
-    char name[24];  // room for any 64-bit frame index
-    std::snprintf(name, sizeof(name), "%06lld", static_cast<long long>(f));
-    const auto rgb = engine::DecodeRgbPng(engine::ReadFileBytes(dir / "front/rgb" / (std::string(name) + ".png")));
+    const std::string name = testing::FrameName(f);
+    const auto rgb =
+        engine::DecodeRgbPng(engine::ReadFileBytes(dir / "front/rgb" / (name + ".png")));
     EXPECT_EQ(rgb.width, 640);
-    const auto mm = engine::DecodePng16(engine::ReadFileBytes(dir / "front/depth" / (std::string(name) + ".png")));
-    const auto m = engine::DecodeNpy(engine::ReadFileBytes(dir / "front/depth" / (std::string(name) + ".npy")), name);
-    const auto cls = engine::DecodePng8(engine::ReadFileBytes(dir / "front/seg_class" / (std::string(name) + ".png")));
-    const auto ins = engine::DecodePng16(engine::ReadFileBytes(dir / "front/seg_instance" / (std::string(name) + ".png")));
+    const auto mm =
+        engine::DecodePng16(engine::ReadFileBytes(dir / "front/depth" / (name + ".png")));
+    const auto m =
+        engine::DecodeNpy(engine::ReadFileBytes(dir / "front/depth" / (name + ".npy")), name);
+    const auto cls =
+        engine::DecodePng8(engine::ReadFileBytes(dir / "front/seg_class" / (name + ".png")));
+    const auto ins =
+        engine::DecodePng16(engine::ReadFileBytes(dir / "front/seg_instance" / (name + ".png")));
     for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
-      // Depth PNG = float depth to 1 mm (0 = no return); labels agree with labels.json; sky is 0 in both maps.
+      // Depth PNG = float depth to 1 mm (0 = no return); labels agree with labels.json; sky is 0 in
+      // both maps.
       if (mm.pixels[p] != 0) {
         ASSERT_LE(std::abs(mm.pixels[p] * 1e-3 - m.pixels[p]), 0.5e-3 + 1e-6);
       } else {
@@ -129,20 +126,21 @@ TEST(DatasetCommandTest, SameInputsGiveByteIdenticalDatasets) {
 
 TEST(DatasetCommandTest, ResumedRunEqualsUninterruptedRun) {
   const auto full = AllFiles(MakeDataset("full"));
-  // Simulate a run killed half-way: the later frames, the final CSVs, COCO, labels and preview are missing,
-  // a temporary file is left behind, and the manifest says incomplete.
+  // Simulate a run killed half-way: the later frames, the final CSVs, COCO, labels and preview are
+  // missing, a temporary file is left behind, and the manifest says incomplete.
   const fs::path dir = MakeDataset("killed");
   for (const char* kind : {"rgb", "depth", "seg_class", "seg_instance"}) {
     for (const auto& e : fs::directory_iterator(dir / "front" / kind)) {
       if (e.path().filename().string() >= "000003") fs::remove(e.path());
     }
   }
-  for (const char* f : {"front/coco_instances.json", "labels.json", "preview.png", "truth.csv", "front/poses.csv"}) {
+  for (const char* f : {"front/coco_instances.json", "labels.json", "preview.png", "truth.csv",
+                        "front/poses.csv"}) {
     fs::remove(dir / f);
   }
   std::ofstream(dir / "front/rgb/000003.png.tmp") << "partial";
-  const Result r = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " + dir.string() +
-                            " --formats npy --resume");
+  const Result r = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " +
+                            dir.string() + " --formats npy --resume");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const auto resumed = AllFiles(dir);
   ASSERT_EQ(resumed.size(), full.size());
@@ -154,14 +152,16 @@ TEST(DatasetCommandTest, ExistingNonEmptyFolderIsNeverOverwritten) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "mine.txt") << "keep";
-  const Result r = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " + dir.string());
+  const Result r =
+      RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " + dir.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("is not empty; nothing is overwritten"), std::string::npos) << r.err;
   EXPECT_EQ(Bytes(dir / "mine.txt"), "keep");
   const Result bad = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " +
                               (dir / "new").string() + " --cameras rear");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("no camera 'rear' in the scene (it has front)"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("no camera 'rear' in the scene (it has front)"), std::string::npos)
+      << bad.err;
 }
 
 }  // namespace

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace airis::tools {
+
+/// What MergeDatasetShards joined.
+struct MergeSummary {
+  int shards = 0;
+  std::int64_t frames = 0;
+};
+
+/// Joins the folders of `airis dataset --shard K/N` runs (all N of one dataset, complete) into
+/// `out`, an existing empty folder, so that it holds what the unsharded run writes
+/// (docs/dataset-format.md, "Shards"): frame files copied; poses.csv and camera streams joined in
+/// time order; each camera's COCO file joined with annotation ids renumbered in frame order;
+/// TartanAir pose files and preview.png made again; the manifest (written last) without the shard
+/// entry and with the summed frame counts. Throws DatasetIoError naming the shard folder and the
+/// problem when a shard is missing, repeated, incomplete, or made from a different scene, mission,
+/// seed or version.
+MergeSummary MergeDatasetShards(const std::vector<std::filesystem::path>& shards,
+                                const std::filesystem::path& out);
+
+}  // namespace airis::tools
