@@ -1,8 +1,10 @@
-// `airis bench [physics|sensors|render] [--json]`: the benchmark tables for users, measured on their machine.
+// `airis bench [physics|sensors|render|dataset] [--json]`: the benchmark tables for users, measured
+// on their machine.
 #include <cstdio>
 #include <memory>
 #include <string>
 
+#include "tools/bench_dataset.h"
 #include "tools/bench_physics.h"
 #include "tools/bench_render.h"
 #include "tools/bench_sensors.h"
@@ -31,7 +33,8 @@ void Print(const std::string& title, const nlohmann::json& results, bool json) {
 
 void AddBenchCommand(CLI::App& app, int& exit_code) {
   auto json = std::make_shared<bool>(false);
-  CLI::App* cmd = app.add_subcommand("bench", "measure physics, sensor and rendering speed on this machine");
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "measure physics, sensor, rendering and dataset speed on this machine");
   cmd->require_subcommand(1);
   struct Entry {
     const char* name;
@@ -39,12 +42,18 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
     nlohmann::json (*run)();
   };
   static const Entry kEntries[] = {
-      {"physics", "ticks per second of the reference quad: empty world, 10,000 boxes, Bullet's own world",
+      {"physics",
+       "ticks per second of the reference quad: empty world, 10,000 boxes, Bullet's own world",
        [] { return RunPhysicsBench(); }},
       {"sensors", "reference quad tick with and without its sensors; lidar rays per second",
        [] { return RunSensorBenchmarks(); }},
-      {"render", "camera frames per second (RGB + depth + segmentation read back) in the city and forest",
+      {"render",
+       "camera frames per second (RGB + depth + segmentation read back) in the city and forest",
        [] { return RunRenderBenchmark(); }},
+      {"dataset",
+       "labeled frames per second of the README demo (city survey, 640x480 RGB + depth + "
+       "segmentation)",
+       [] { return RunDatasetBenchmark(); }},
   };
   for (const Entry& e : kEntries) {
     CLI::App* sub = cmd->add_subcommand(e.name, e.help);
