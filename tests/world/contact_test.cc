@@ -69,11 +69,39 @@ TEST(ContactTest, BounceSpeedIsRestitutionTimesImpactSpeed) {
   EXPECT_NEAR(impact, std::sqrt(2.0 * kG * (1.0 - kHalfHeight_m)), 0.02);
   EXPECT_LT(s.w_B.norm(), 1e-6);
   ASSERT_EQ(rig->events.size(), 1u);
+  EXPECT_EQ(rig->events[0].time_ns, rig->sim->clock().now_ns());  // the end of the tick that hit
   EXPECT_EQ(rig->events[0].object_name, "ground");
+  EXPECT_EQ(rig->events[0].class_id, 1);
+  EXPECT_EQ(rig->events[0].instance_id, 1u);
+  EXPECT_EQ(rig->events[0].other_vehicle, -1);
   EXPECT_EQ(rig->events[0].vehicle_name, "quad");
   EXPECT_NEAR(rig->events[0].normal_W.z(), -1.0, 1e-6);
   EXPECT_NEAR(rig->events[0].impulse_Ns, 1.0 * 1.5 * impact, 1e-3);
   EXPECT_NEAR(rig->events[0].point_W.z(), 0.0, 1e-4);
+}
+
+TEST(ContactTest, PenetrationIsRemovedWithoutLaunchingTheBody) {
+  // GIVEN a body at rest with its bottom 5 mm into the ground (as a scene may place it)
+  SceneBuilder scene;
+  scene.AddGround(0.0, 100.0);
+  auto rig = MakeRig(scene, NoDrag(QuadBody(0.55, 0.5)));
+  RigidBodyState& s = rig->body->state();
+  s.p_W = Vec3(0.0, 0.0, -kHalfHeight_m + 0.005);
+  // WHEN one tick runs
+  rig->sim->Step();
+  // THEN it stands on the surface, at most the slop (1e-4 m) deep, and the projection moved only
+  // its position: it is no faster than one tick of gravity (4.9 um of fall; 1 um of margin for the
+  // solver's rounding)
+  const double depth_m = s.p_W.z() + kHalfHeight_m;
+  EXPECT_LE(depth_m, 1e-4 + 1e-6);
+  EXPECT_GE(depth_m, -1e-6);
+  EXPECT_LT(s.v_W.norm(), kG * 1e-3);
+  ASSERT_EQ(rig->events.size(), 1u);
+  EXPECT_EQ(rig->events[0].time_ns, 1'000'000);
+  // AND it then rests there: after 1 s it has not crept out or sunk back in
+  for (int i = 0; i < 1000; ++i) rig->sim->Step();
+  EXPECT_NEAR(s.p_W.z() + kHalfHeight_m, depth_m, 1e-4);
+  EXPECT_LT(s.v_W.norm(), 1e-3);
 }
 
 TEST(ContactTest, SlidingDeceleratesAtFrictionTimesGravity) {
