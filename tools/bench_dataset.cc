@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
 #include "tools/dataset_job.h"
 
@@ -37,6 +38,14 @@ class TemporaryFolder {
 }  // namespace
 
 nlohmann::json RunDatasetBenchmark(const DatasetBenchOptions& options) {
+  for (const std::string& file : {options.scene, options.mission}) {
+    if (!fs::exists(file)) {
+      throw engine::ConfigError(
+          {}, "bench dataset",
+          "'" + file +
+              "' not found: run it from the airis repository root (it flies the README demo)");
+    }
+  }
   const TemporaryFolder folder;
   DatasetJobOptions job;
   job.scene = options.scene;

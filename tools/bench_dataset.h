@@ -18,8 +18,8 @@ struct DatasetBenchOptions {
 /// JSON: city_640x480_frames_per_s (labeled frames written per wall second, end to end: loading the
 /// scene, flying the mission, rendering, encoding, COCO, the contact sheet), frames, wall_s,
 /// simulated_s, the frame size, the scene and mission files, workers and the renderer strings.
-/// Throws ConfigError for a bad scene or mission, std::runtime_error when the mission does not fly
-/// to its end.
+/// Throws ConfigError for a bad scene or mission, or a missing one (the default paths are relative:
+/// run from the repository root), std::runtime_error when the mission does not fly to its end.
 nlohmann::json RunDatasetBenchmark(const DatasetBenchOptions& options = {});
 
 }  // namespace airis::tools
