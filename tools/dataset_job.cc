@@ -1,6 +1,7 @@
 #include "tools/dataset_job.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -59,17 +60,26 @@ nlohmann::json RendererJson(const engine::World& world) {
   return {{"gl_vendor", ""}, {"gl_renderer", ""}, {"gl_version", ""}};
 }
 
-nlohmann::json OutputsJson(const engine::DatasetOutputs& o) {
+// The names of the outputs that are on, in DatasetOutputs order (rgb, depth_png, depth_npy,
+// segmentation, normals, tartanair), from `names` in that order.
+nlohmann::json NamesOf(const engine::DatasetOutputs& o, const std::array<const char*, 6>& names) {
+  const bool on[] = {o.rgb, o.depth_png, o.depth_npy, o.segmentation, o.normals, o.tartanair};
   nlohmann::json list = nlohmann::json::array();
-  for (const auto& [on, name] : {std::pair{o.rgb, "rgb"},
-                                 {o.depth_png, "depth_png"},
-                                 {o.depth_npy, "depth_npy"},
-                                 {o.segmentation, "segmentation"},
-                                 {o.normals, "normals"},
-                                 {o.tartanair, "tartanair"}}) {
-    if (on) list.push_back(name);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (on[i]) list.push_back(names[i]);
   }
   return list;
+}
+
+// A camera's outputs as the manifest lists them, and the dataset's file formats.
+nlohmann::json OutputsJson(const engine::DatasetOutputs& o) {
+  return NamesOf(o, {"rgb", "depth_png", "depth_npy", "segmentation", "normals", "tartanair"});
+}
+nlohmann::json FormatsJson(const engine::DatasetOutputs& o) {
+  nlohmann::json formats =
+      NamesOf(o, {"rgb_png", "depth_png_mm", "depth_npy_m", "seg_png", "normals_npy", "tartanair"});
+  formats.push_back("coco_instances");
+  return formats;
 }
 
 nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
@@ -125,18 +135,7 @@ nlohmann::json Manifest(const DatasetJobOptions& o, const scenes::Scene& scene,
   }
   m["streams"] = streams;
   m["counts"] = {{"frames", frames}, {"simulated_time_s", sim_s}};
-  const engine::DatasetOutputs& out = o.outputs;
-  nlohmann::json formats = nlohmann::json::array();
-  for (const auto& [on, name] : {std::pair{out.rgb, "rgb_png"},
-                                 {out.depth_png, "depth_png_mm"},
-                                 {out.depth_npy, "depth_npy_m"},
-                                 {out.segmentation, "seg_png"},
-                                 {out.normals, "normals_npy"},
-                                 {out.tartanair, "tartanair"}}) {
-    if (on) formats.push_back(name);
-  }
-  formats.push_back("coco_instances");
-  m["formats"] = formats;
+  m["formats"] = FormatsJson(o.outputs);
   if (o.shard.count > 1) m["shard"] = {{"index", o.shard.index}, {"count", o.shard.count}};
   nlohmann::json classes = nlohmann::json::array();
   for (const auto& c : world.scene().classes) classes.push_back({{"id", c.id}, {"name", c.name}});

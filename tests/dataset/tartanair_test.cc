@@ -81,25 +81,20 @@ TEST(TartanAirTest, PoseFileHasOneLinePerFrameAndMalformedCsvNamesTheLine) {
   EXPECT_EQ(v[2], -10.0);
   EXPECT_NEAR(Quat(v[6], v[3], v[4], v[5]).norm(), 1.0, 1e-15);
 
-  std::ofstream(dir / "bad.csv") << header << "0,0,0,1.5,-2,-10,1,0,0,0\n"
-                                 << "5,5e-9,1,north,-2,-10,0,1,0,0\n";
-  try {
-    WriteTartanAirPoses(dir / "bad.csv", dir / "pose_bad.txt");
-    FAIL() << "a malformed poses.csv was accepted";
-  } catch (const DatasetIoError& e) {
-    EXPECT_NE(std::string(e.what()).find("bad.csv:3: column 4: 'north' is not a number"),
-              std::string::npos)
-        << e.what();
-  }
-  std::ofstream(dir / "short.csv") << "time_ns,frame\n0,0\n";
-  try {
-    WriteTartanAirPoses(dir / "short.csv", dir / "pose_short.txt");
-    FAIL() << "a poses.csv without positions was accepted";
-  } catch (const DatasetIoError& e) {
-    EXPECT_NE(std::string(e.what()).find("short.csv: no column 'p_n_m' in the header"),
-              std::string::npos)
-        << e.what();
-  }
+  // Malformed poses.csv files are errors naming the file, and the line and column where there is
+  // one.
+  auto expect_error = [&](const char* name, const std::string& text, const std::string& message) {
+    std::ofstream(dir / name) << text;
+    try {
+      WriteTartanAirPoses(dir / name, dir / "pose_bad.txt");
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const DatasetIoError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  expect_error("bad.csv", header + "0,0,0,1.5,-2,-10,1,0,0,0\n5,5e-9,1,north,-2,-10,0,1,0,0\n",
+               "bad.csv:3: column 4: 'north' is not a number");
+  expect_error("short.csv", "time_ns,frame\n0,0\n", "short.csv: no column 'p_n_m' in the header");
 }
 
 TEST(TartanAirTest, ClassIdsAreWrittenAsUint8Npy) {

@@ -31,16 +31,15 @@ Result RunAiris(const std::string& args) { return testing::RunAiris(&AddDatasetC
 
 // A short mission: climb over the central crossing, record while turning, stop.
 std::string MissionFile() {
-  const fs::path path = fs::temp_directory_path() / "airis_dataset_mission.yaml";
-  std::ofstream(path) << R"(name: spin
+  return testing::WriteTempFile("airis_dataset_mission.yaml", R"(name: spin
 steps:
   - takeoff: {altitude_m: 40}
   - capture: {enabled: true}
   - yaw: {yaw_deg: 120}
   - hover: {duration_s: 3}
   - capture: {enabled: false}
-)";
-  return path.string();
+)")
+      .string();
 }
 
 fs::path MakeDataset(const std::string& name, const std::string& extra = "") {

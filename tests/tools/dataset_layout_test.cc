@@ -28,6 +28,7 @@ using nlohmann::json;
 using testing::AllFiles;
 using testing::Bytes;
 using testing::FrameName;
+using testing::WriteTempFile;
 
 testing::CommandResult RunAiris(const std::string& args) {
   return testing::RunAiris(&AddDatasetCommand, args);
@@ -38,12 +39,6 @@ const std::map<std::string, engine::Vec3> kBalls = {
     {"ball_n", {5.0, 0.0, -0.5}}, {"ball_e", {0.0, 6.0, -0.5}}, {"ball_sw", {-4.0, -3.0, -0.5}}};
 constexpr double kBallRadiusM = 0.5;
 
-fs::path WriteFile(const std::string& name, const std::string& text) {
-  const fs::path path = fs::temp_directory_path() / name;
-  std::ofstream(path) << text;
-  return path;
-}
-
 fs::path BallsScene(int seed = 11) {
   std::string objects;
   for (const auto& [name, p] : kBalls) {
@@ -52,8 +47,8 @@ fs::path BallsScene(int seed = 11) {
       << p.y() << ", " << p.z() << "]}\n";
     objects += o.str();
   }
-  return WriteFile("airis_balls_" + std::to_string(seed) + ".yaml",
-                   "scene: {name: balls, seed: " + std::to_string(seed) + R"(}
+  return WriteTempFile("airis_balls_" + std::to_string(seed) + ".yaml",
+                       "scene: {name: balls, seed: " + std::to_string(seed) + R"(}
 ground: {size_m: [100, 100]}
 classes:
   - {name: ball, color: [0.9, 0.1, 0.1]}
@@ -87,7 +82,7 @@ objects:
 
 // Climb to 15 m, record while turning a quarter turn and hovering.
 fs::path BallsMission() {
-  return WriteFile("airis_balls_mission.yaml", R"(name: balls
+  return WriteTempFile("airis_balls_mission.yaml", R"(name: balls
 steps:
   - takeoff: {altitude_m: 15}
   - capture: {enabled: true}

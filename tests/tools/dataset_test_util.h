@@ -2,7 +2,9 @@
 
 // Reading dataset folders in the `airis dataset` tests.
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -24,6 +26,13 @@ inline std::map<std::string, std::string> AllFiles(const std::filesystem::path& 
       files[std::filesystem::relative(e.path(), root).string()] = Bytes(e.path());
   }
   return files;
+}
+
+/// Writes `text` to `name` in the system's temporary folder; returns its path.
+inline std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << text;
+  return path;
 }
 
 /// "000042" for frame 42.
