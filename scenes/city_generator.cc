@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "scenes/generators.h"
-#include "scenes/primitive_meshes.h"
+#include "engine/scene/primitive_meshes.h"
 
 namespace airis::scenes {
 
@@ -43,7 +43,7 @@ double Lerp(const Eigen::Vector2d& range, double u) { return range[0] + (range[1
 class CityBuilder {
  public:
   CityBuilder(const CityConfig& c, const CityResources& r, const std::string& name,
-              engine::RandomStream& rng, SceneBuilder& b)
+              engine::RandomStream& rng, engine::StaticSceneBuilder& b)
       : c_(c), r_(r), name_(name), rng_(rng), b_(b) {}
 
   GeneratorReport Build() {
@@ -88,8 +88,8 @@ class CityBuilder {
     concrete_ = static_cast<std::int32_t>(b_.Material(Colored({0.62, 0.61, 0.58}, "concrete")));
     const std::uint32_t roof_material = b_.Material(Colored(c_.roof_color, "roof"));
     const std::uint32_t body_mesh = b_.PrimitiveMesh(Primitive::kBox);
-    const std::uint32_t gable = b_.AddMesh(MakeGableRoofMesh());
-    const std::uint32_t pyramid = b_.AddMesh(MakePyramidRoofMesh());
+    const std::uint32_t gable = b_.AddMesh(engine::MakeGableRoofMesh());
+    const std::uint32_t pyramid = b_.AddMesh(engine::MakePyramidRoofMesh());
     for (const RoofShape roof : {RoofShape::kFlat, RoofShape::kGabled, RoofShape::kPyramid}) {
       for (std::size_t k = 0; k < c_.building_colors.size(); ++k) {
         engine::Model m;
@@ -137,7 +137,7 @@ class CityBuilder {
 
   /// A flat slab centred at (n, e) with its top `thickness` above the ground.
   Eigen::Affine3d Slab(double n, double e, double size_n, double size_e, double thickness) const {
-    return MakePose(Vector3d(n, e, -0.5 * thickness), 0, 0, 0, Vector3d(size_n, size_e, thickness));
+    return engine::MakePose(Vector3d(n, e, -0.5 * thickness), 0, 0, 0, Vector3d(size_n, size_e, thickness));
   }
 
   void Place(std::uint32_t model, const Eigen::Affine3d& T, std::uint8_t cls,
@@ -202,7 +202,7 @@ class CityBuilder {
             height > c_.flat_roof_above_m ? RoofShape::kFlat : c_.roof_shapes[roof_pick];
         const std::uint32_t model = building_models_[static_cast<int>(roof)][color_pick];
         Place(model,
-              MakePose(Vector3d(centre.x(), centre.y(), 0.0), 0, 0, 0,
+              engine::MakePose(Vector3d(centre.x(), centre.y(), 0.0), 0, 0, 0,
                        Vector3d(footprint.x(), footprint.y(), height)),
               r_.building_class, id + "/building" + std::to_string(i) + "_" + std::to_string(j));
         if (ok_) ++report_.buildings;
@@ -221,7 +221,7 @@ class CityBuilder {
       for (int s = 0; s < count; ++s) {
         const Eigen::Vector2d p = from + (to - from) * ((s + 0.5) / count);
         Place(lamp_model_,
-              MakePose(Vector3d(p.x(), p.y(), -kKerbHeight_m), 0, 0, 0, Vector3d::Ones()),
+              engine::MakePose(Vector3d(p.x(), p.y(), -kKerbHeight_m), 0, 0, 0, Vector3d::Ones()),
               r_.lamp_class, id + "/lamp" + std::to_string(k++));
       }
     };
@@ -250,7 +250,7 @@ class CityBuilder {
         if (u >= p_car) continue;
         const Eigen::Vector2d p = from + dir * ((s + 0.5) * length / slots) + out * lane;
         Place(car_model_,
-              MakePose(Vector3d(p.x(), p.y(), 0.0), yaw + (flip < 0.5 ? 0.0 : std::numbers::pi), 0,
+              engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw + (flip < 0.5 ? 0.0 : std::numbers::pi), 0,
                        0, Vector3d::Ones()),
               r_.car_class, id + "/car" + std::to_string(k++),
               car_colors_.empty() ? -1 : car_colors_[color]);
@@ -266,7 +266,7 @@ class CityBuilder {
   const CityResources& r_;
   const std::string& name_;
   engine::RandomStream& rng_;
-  SceneBuilder& b_;
+  engine::StaticSceneBuilder& b_;
   GeneratorReport report_;
   bool ok_ = true;
   Eigen::Vector2d origin_;
@@ -280,7 +280,7 @@ class CityBuilder {
 
 GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources,
                              const std::string& name, engine::RandomStream& stream,
-                             SceneBuilder& builder) {
+                             engine::StaticSceneBuilder& builder) {
   return CityBuilder(config, resources, name, stream, builder).Build();
 }
 

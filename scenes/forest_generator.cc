@@ -142,7 +142,7 @@ std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, 
 
 GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
                                const std::string& name, engine::RandomStream& rng,
-                               SceneBuilder& b) {
+                               engine::StaticSceneBuilder& b) {
   GeneratorReport report;
   // Models: `variants_per_species` unit-height trees per species, proportions drawn once; each tree
   // is one of them scaled to its height, so thousands of trees share a handful of models and three
@@ -197,7 +197,7 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
     }
     const double height = Lerp(c.species[s].height_m, u_height);
     if (!b.AddObject(variants[s][variant],
-                     MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+                     engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
                      r.tree_class, CollisionShape::kAuto,
                      name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
       report.out_of_instance_ids = true;
@@ -221,7 +221,7 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
       const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
       if (!AreaContains(c.area, p) || InClearing(c, p)) continue;
       if (!b.AddObject(bush_model,
-                       MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+                       engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
                        r.bush_class, CollisionShape::kAuto,
                        name + "/bush" + std::to_string(report.bushes))) {
         report.out_of_instance_ids = true;

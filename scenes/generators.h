@@ -9,7 +9,7 @@
 #include <string>
 
 #include "engine/core/random.h"
-#include "scenes/scene_builder.h"
+#include "engine/scene/static_scene_builder.h"
 #include "scenes/scene_config.h"
 
 namespace airis::scenes {
@@ -38,7 +38,7 @@ struct GeneratorReport {
 /// cars. Object names start with `name`/.
 GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources,
                              const std::string& name, engine::RandomStream& stream,
-                             SceneBuilder& builder);
+                             engine::StaticSceneBuilder& builder);
 
 /// Class ids a forest needs.
 struct ForestResources {
@@ -50,7 +50,7 @@ struct ForestResources {
 /// in arbitrary dimensions") thinned to the density, species models shared, bushes scattered.
 GeneratorReport GenerateForest(const ForestConfig& config, const ForestResources& resources,
                                const std::string& name, engine::RandomStream& stream,
-                               SceneBuilder& builder);
+                               engine::StaticSceneBuilder& builder);
 
 /// Poisson-disc points with minimum distance `radius_m` over [lo, hi] (Bridson's algorithm, k = 30
 /// tries).

@@ -6,7 +6,7 @@
 #include <assimp/Importer.hpp>
 #include <filesystem>
 
-#include "scenes/primitive_meshes.h"
+#include "engine/scene/primitive_meshes.h"
 
 namespace airis::scenes {
 
@@ -111,7 +111,7 @@ MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
                           {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
     }
     triangles += mesh.triangle_count();
-    UpdateBounds(mesh);
+    engine::UpdateBounds(mesh);
     const std::size_t material = in.mMaterialIndex < out.materials.size() ? in.mMaterialIndex : 0;
     out.parts.push_back({out.meshes.size(), material});
     out.meshes.push_back(std::move(mesh));

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/core/config.h"
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::scenes {
 

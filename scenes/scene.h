@@ -5,13 +5,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/frames.h"
 #include "engine/core/geodetic.h"
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
 #include "scenes/vehicle_config.h"
 #include "vehicles/multirotor/multirotor_config.h"
@@ -58,13 +59,21 @@ struct Scene {
   std::vector<GeneratedSummary> generated;
 };
 
+/// What a loader applies over the file's own settings.
+struct SceneLoadOptions {
+  /// Replaces `scene.seed` before the generators draw from it, so the scene built is the one of
+  /// this seed (a dataset's manifest then reproduces it).
+  std::optional<std::uint64_t> seed;
+};
+
 /// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and
 /// key path for every mistake: unknown keys, wrong types, bad values, missing or unreadable mesh or
 /// texture files, include cycles, unknown classes, a vehicle starting inside an object.
-Scene LoadScene(const std::string& path);
+Scene LoadScene(const std::string& path, const SceneLoadOptions& options = {});
 
-/// As LoadScene, from text (tests); `path` names it in messages and anchors relative paths.
-Scene LoadSceneFromString(const std::string& text, const std::string& path);
+/// As LoadScene, from text (tests, Python); `path` names it in messages and anchors relative paths.
+Scene LoadSceneFromString(const std::string& text, const std::string& path,
+                          const SceneLoadOptions& options = {});
 
 /// Sun direction (unit vector along which sunlight travels, world NED; points down when the sun is
 /// up) from azimuth (clockwise from north) and elevation, radians.

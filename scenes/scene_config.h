@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "engine/core/config.h"
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
 #include "scenes/mesh_loader.h"
 

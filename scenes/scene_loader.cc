@@ -6,10 +6,11 @@
 #include <numbers>
 
 #include "engine/core/random.h"
+#include "scenes/builtin_classes.h"
 #include "scenes/generators.h"
 #include "scenes/mesh_loader.h"
 #include "scenes/scene.h"
-#include "scenes/scene_builder.h"
+#include "engine/scene/static_scene_builder.h"
 #include "scenes/scene_file.h"
 #include "vehicles/multirotor/airframe_presets.h"
 
@@ -37,7 +38,8 @@ engine::Material ToMaterial(const MaterialConfig& c, const std::string& texture_
 
 class SceneAssembler {
  public:
-  explicit SceneAssembler(SceneDocument doc) : doc_(std::move(doc)) {}
+  SceneAssembler(SceneDocument doc, const SceneLoadOptions& options)
+      : doc_(std::move(doc)), options_(options) {}
 
   Scene Assemble() {
     Scene s;
@@ -46,7 +48,8 @@ class SceneAssembler {
     SceneSettingsConfig settings;
     if (doc_.scene) settings = doc_.scene->config;
     s.name = settings.name;
-    s.seed = settings.seed;
+    // The seed replaces the file's before anything draws from it (generators, then sensors).
+    s.seed = options_.seed.value_or(settings.seed);
     s.origin = {DegToRad(settings.origin.latitude_deg), DegToRad(settings.origin.longitude_deg),
                 settings.origin.altitude_m};
     s.environment = settings.environment;
@@ -160,7 +163,7 @@ class SceneAssembler {
     const auto material =
         static_cast<std::int32_t>(builder_.Material(ToMaterial(g.material, texture)));
     builder_.AddObject(builder_.PrimitiveModel(engine::Primitive::kPlane),
-                       MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
+                       engine::MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
                        engine::CollisionShape::kAuto, "ground", material);
     ground_instance_ = 1;
   }
@@ -191,7 +194,7 @@ class SceneAssembler {
         if (r.rows > 1) name += "_" + std::to_string(row);
         if (r.count > 1 || r.rows > 1) name += "_" + std::to_string(i);
         const Eigen::Affine3d T =
-            MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg), DegToRad(c.roll_deg), c.scale);
+            engine::MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg), DegToRad(c.roll_deg), c.scale);
         if (!builder_.AddObject(model, T, cls, c.collision, std::move(name), material)) {
           entry.Fail("repeat", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
                                    " objects (instance ids are 16-bit)");
@@ -324,7 +327,8 @@ class SceneAssembler {
   }
 
   SceneDocument doc_;
-  SceneBuilder builder_;
+  SceneLoadOptions options_;
+  engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
   std::uint32_t ground_instance_ = engine::kNoInstance;
 };
@@ -353,12 +357,13 @@ void SolarAngles(double latitude_rad, double decimal_year, double hours, double*
   *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
 }
 
-Scene LoadScene(const std::string& path) {
-  return SceneAssembler(ReadSceneDocument(path)).Assemble();
+Scene LoadScene(const std::string& path, const SceneLoadOptions& options) {
+  return SceneAssembler(ReadSceneDocument(path), options).Assemble();
 }
 
-Scene LoadSceneFromString(const std::string& text, const std::string& path) {
-  return SceneAssembler(ReadSceneDocumentFromString(text, path)).Assemble();
+Scene LoadSceneFromString(const std::string& text, const std::string& path,
+                          const SceneLoadOptions& options) {
+  return SceneAssembler(ReadSceneDocumentFromString(text, path), options).Assemble();
 }
 
 }  // namespace airis::scenes

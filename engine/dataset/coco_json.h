@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 #include "engine/dataset/coco_annotations.h"
 
 namespace airis::engine {

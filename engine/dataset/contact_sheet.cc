@@ -1,6 +1,8 @@
 #include "engine/dataset/contact_sheet.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <string>
 
@@ -62,6 +64,29 @@ void WriteContactSheet(const std::filesystem::path& camera_dir,
     Blit(ColorizeSegmentation(cls, ins, palette), step, sheet, 2 * pw, r * ph);
   }
   WriteFileAtomically(out_png, EncodeRgbPng(sheet));
+}
+
+std::vector<std::uint8_t> EncodeFramePanelsPng(const CameraFrame& frame,
+                                               std::span<const SemanticClass> classes) {
+  AIRIS_DEMAND(!frame.rgba.empty() && !frame.depth_perspective_m.empty() &&
+               !frame.class_id.empty());
+  float near_seen = std::numeric_limits<float>::infinity();
+  float far_seen = 0.0f;
+  for (float d : frame.depth_perspective_m.pixels) {
+    if (!std::isfinite(d)) continue;
+    near_seen = std::min(near_seen, d);
+    far_seen = std::max(far_seen, d);
+  }
+  if (!(far_seen > 0.0f)) near_seen = 1.0f, far_seen = 2.0f;
+  const int w = frame.rgba.width, h = frame.rgba.height;
+  Image<std::uint8_t> panels;
+  panels.Resize(3 * w, h, 4);
+  std::fill(panels.pixels.begin(), panels.pixels.end(), 255);
+  Blit(frame.rgba, 1, panels, 0, 0);
+  Blit(ColorizeDepth(frame.depth_perspective_m, std::max(near_seen, 0.1f), far_seen), 1, panels,
+       w, 0);
+  Blit(ColorizeSegmentation(frame.class_id, frame.instance_id, classes), 1, panels, 2 * w, 0);
+  return EncodeRgbPng(panels);
 }
 
 }  // namespace airis::engine

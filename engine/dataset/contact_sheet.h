@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <vector>
 
 #include "engine/render/colorize.h"
 
@@ -16,5 +17,11 @@ namespace airis::engine {
 void WriteContactSheet(const std::filesystem::path& camera_dir,
                        std::span<const std::int64_t> frames, float near_m,
                        const SegmentationPalette& palette, const std::filesystem::path& out_png);
+
+/// A PNG of one frame as three panels side by side: RGB | perspective depth colourised between the
+/// nearest and farthest surface seen | segmentation in the class colours of `classes` (instances
+/// shaded). The frame must carry rgb, depth_perspective and segmentation (`airis scene preview`).
+std::vector<std::uint8_t> EncodeFramePanelsPng(const CameraFrame& frame,
+                                               std::span<const SemanticClass> classes);
 
 }  // namespace airis::engine

@@ -14,7 +14,7 @@
 
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/tartanair.h"
-#include "engine/render/camera_frame.h"
+#include "engine/core/camera_frame.h"
 
 namespace airis::engine {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/render/camera_frame.h"
+#include "engine/core/camera_frame.h"
 
 namespace airis::engine {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/render/camera_frame.h"
+#include "engine/core/camera_frame.h"
 
 namespace airis::engine {
 

@@ -6,7 +6,7 @@
 
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
-#include "engine/render/camera_model.h"
+#include "engine/core/camera_model.h"
 
 namespace airis::engine {
 namespace {

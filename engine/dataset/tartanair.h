@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/core/frames.h"
-#include "engine/render/camera_frame.h"
+#include "engine/core/camera_frame.h"
 
 namespace airis::engine {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/core/frames.h"
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::engine {
 

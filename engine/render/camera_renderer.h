@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "engine/render/camera_frame.h"
-#include "engine/render/camera_model.h"
+#include "engine/core/camera_frame.h"
+#include "engine/core/camera_model.h"
 #include "engine/render/egl_context.h"
 #include "engine/render/gl_program.h"
 #include "engine/render/gpu_scene.h"

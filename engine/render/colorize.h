@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <span>
 
-#include "engine/core/static_scene.h"
-#include "engine/render/camera_frame.h"
+#include "engine/scene/static_scene.h"
+#include "engine/core/camera_frame.h"
 
 namespace airis::engine {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::engine {
 

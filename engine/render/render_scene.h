@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 #include "engine/render/egl_context.h"
 #include "engine/render/gpu_scene.h"
 

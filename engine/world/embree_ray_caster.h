@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 #include "engine/world/ray_caster.h"
 
 // Opaque Embree 3 handles (from embree3/rtcore.h), so this header does not leak Embree to its

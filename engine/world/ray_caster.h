@@ -5,7 +5,7 @@
 #include <span>
 
 #include "engine/core/frames.h"
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::engine {
 

@@ -12,6 +12,8 @@
 
 namespace airis::engine {
 
+class ImageSensor;
+
 /// The truth a sensor may read when it samples: its vehicle after this tick's integration and contacts.
 struct SensorContext {
   TimeNs now_ns = 0;
@@ -24,7 +26,7 @@ struct SensorContext {
 /// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete sensor).
 /// It samples at its own exact rate on the simulated clock and tells its listeners of each new sample.
 /// Generic consumers (telemetry log, dataset writer) read samples as rows of numbers named by columns();
-/// typed consumers (controller, MAVLink bridge) downcast to the concrete sensor's sample type.
+/// sensors that produce images are ImageSensors (image() is not null) and give their frames there.
 class Sensor {
  public:
   /// @param name unique within its vehicle, e.g. "imu"; @param rate_hz samples per simulated second.
@@ -41,6 +43,10 @@ class Sensor {
   virtual std::span<const std::string> columns() const = 0;
   /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
   virtual void CopyLatestRow(std::span<double> out) const = 0;
+
+  /// This sensor as an image sensor, or null when it produces no images.
+  virtual ImageSensor* image() { return nullptr; }
+  virtual const ImageSensor* image() const { return nullptr; }
 
   /// Calls `listener` after every new sample (in the simulation thread; keep it cheap, do not keep the ref).
   void AddListener(std::function<void(const Sensor&)> listener) {

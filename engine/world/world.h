@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "engine/core/clock.h"
-#include "engine/core/static_scene.h"
+#include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
 #include "engine/physics/body_contact_solver.h"
 #include "engine/physics/collision_world.h"

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "engine/core/config.h"
-#include "engine/render/camera_frame.h"
-#include "engine/render/camera_model.h"
+#include "engine/core/camera_frame.h"
+#include "engine/core/camera_model.h"
 #include "engine/world/mount.h"
 
 namespace airis::sensors {

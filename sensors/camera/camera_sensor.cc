@@ -1,7 +1,5 @@
 #include "sensors/camera/camera_sensor.h"
 
-#include "sensors/camera/stereo_camera_sensor.h"
-
 #include "engine/core/error.h"
 
 namespace airis::sensors {
@@ -14,20 +12,6 @@ const CameraConfig& Validated(const CameraConfig& config) {
 }
 
 }  // namespace
-
-Eigen::Isometry3d CalcCameraPose(const CameraConfig& config, const engine::RigidBodyState* state) {
-  Eigen::Isometry3d T_XS = Eigen::Isometry3d::Identity();  // X = body, or world when fixed there
-  T_XS.linear() = config.mount.q_BS().toRotationMatrix();
-  T_XS.translation() = config.mount.position_m;
-  Eigen::Isometry3d T_SC = Eigen::Isometry3d::Identity();
-  T_SC.linear() = engine::CalcR_SC();
-  if (config.attachment == CameraAttachment::kWorld) return T_XS * T_SC;
-  AIRIS_DEMAND(state != nullptr);
-  Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
-  T_WB.linear() = state->q_WB.normalized().toRotationMatrix();
-  T_WB.translation() = state->p_W;
-  return T_WB * T_XS * T_SC;
-}
 
 std::vector<std::string> CameraPoseColumns(const std::string& prefix) {
   std::vector<std::string> out;
@@ -52,10 +36,18 @@ void CopyPose(const Eigen::Isometry3d& T_WC, std::span<double> out) {
 
 CameraSensor::CameraSensor(std::string name, const CameraConfig& config,
                            std::shared_ptr<const engine::RenderScene> scene)
-    : engine::Sensor(std::move(name), Validated(config).rate_hz),
+    : engine::ImageSensor(std::move(name), Validated(config).rate_hz),
       config_(config),
       scene_(std::move(scene)),
-      renderer_(scene_->context(), config_.CalcIntrinsics(), config_.outputs) {}
+      renderer_(scene_->context(), config_.CalcIntrinsics(), config_.outputs),
+      stream_(MakeImageStream(this->name(), config_, renderer_.intrinsics())) {}
+
+const engine::CameraFrame& CameraSensor::latest(std::size_t index) const {
+  AIRIS_DEMAND(index == 0);
+  return frame_;
+}
+
+engine::RendererInfo CameraSensor::renderer() const { return DescribeRenderer(*scene_); }
 
 std::span<const std::string> CameraSensor::columns() const {
   static const std::vector<std::string> kColumns = CameraPoseColumns("");
@@ -68,13 +60,26 @@ void CameraSensor::CopyLatestRow(std::span<double> out) const {
 }
 
 void CameraSensor::Sample(const engine::SensorContext& context) {
-  renderer_.Render(scene_->gpu_scene(), CalcCameraPose(config_, context.state), context.now_ns,
-                   frame_);
+  renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
+                   context.now_ns, frame_);
 }
 
-bool IsCamera(const engine::Sensor& sensor) {
-  return dynamic_cast<const CameraSensor*>(&sensor) != nullptr ||
-         dynamic_cast<const StereoCameraSensor*>(&sensor) != nullptr;
+engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig& config,
+                                    const engine::CameraIntrinsics& intrinsics) {
+  engine::ImageStream s;
+  s.name = name;
+  s.rig = name;
+  s.intrinsics = intrinsics;
+  s.outputs = config.outputs;
+  s.mount = config.mount;
+  s.world_fixed = config.attachment == CameraAttachment::kWorld;
+  s.rate_hz = config.rate_hz;
+  return s;
+}
+
+engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene) {
+  const engine::EglContext& c = scene.context();
+  return {c.gl_vendor(), c.gl_renderer(), c.gl_version()};
 }
 
 }  // namespace airis::sensors

@@ -15,10 +15,26 @@ const StereoCameraConfig& Validated(const StereoCameraConfig& config) {
 
 StereoCameraSensor::StereoCameraSensor(std::string name, const StereoCameraConfig& config,
                                        std::shared_ptr<const engine::RenderScene> scene)
-    : engine::Sensor(std::move(name), Validated(config).camera.rate_hz),
+    : engine::ImageSensor(std::move(name), Validated(config).camera.rate_hz),
       config_(config),
       scene_(std::move(scene)),
-      renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs) {}
+      renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs) {
+  for (std::size_t i = 0; i < 2; ++i) {
+    const std::string side = i == 0 ? "left" : "right";
+    streams_[i] = MakeImageStream(this->name() + "_" + side, config_.camera, renderer_.intrinsics());
+    streams_[i].rig = this->name();
+    streams_[i].side = side;
+    streams_[i].offset_x_m = i == 0 ? 0.0 : config_.baseline_m;
+    streams_[i].baseline_m = config_.baseline_m;
+  }
+}
+
+const engine::CameraFrame& StereoCameraSensor::latest(std::size_t index) const {
+  AIRIS_DEMAND(index < 2);
+  return index == 0 ? left_ : right_;
+}
+
+engine::RendererInfo StereoCameraSensor::renderer() const { return DescribeRenderer(*scene_); }
 
 std::span<const std::string> StereoCameraSensor::columns() const {
   static const std::vector<std::string> kColumns = [] {
@@ -36,8 +52,8 @@ void StereoCameraSensor::CopyLatestRow(std::span<double> out) const {
 }
 
 void StereoCameraSensor::Sample(const engine::SensorContext& context) {
-  const Eigen::Isometry3d T_WL = CalcCameraPose(config_.camera, context.state);
-  const Eigen::Isometry3d T_WR = T_WL * Eigen::Translation3d(config_.baseline_m, 0.0, 0.0);
+  const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
+  const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);
   renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns);
   renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns);
   renderer_.Collect(left_);

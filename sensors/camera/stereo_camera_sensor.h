@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -10,8 +11,9 @@ namespace airis::sensors {
 /// A synchronised stereo pair: two identical cameras, the right one `baseline_m` along the left
 /// camera's image x axis, rendered at the same simulated instant on each due tick. The two frames
 /// go through asynchronous readback so the right image renders while the left one transfers.
-/// Telemetry rows carry both poses (left_..., right_...).
-class StereoCameraSensor : public engine::Sensor {
+/// Telemetry rows carry both poses (left_..., right_...). Its image streams are `<name>_left` and
+/// `<name>_right`.
+class StereoCameraSensor : public engine::ImageSensor {
  public:
   /// Validates `config` (throws InvalidField) and builds the renderer (throws what CameraRenderer
   /// throws).
@@ -21,10 +23,13 @@ class StereoCameraSensor : public engine::Sensor {
   std::span<const std::string> columns() const override;
   void CopyLatestRow(std::span<double> out) const override;
 
+  std::span<const engine::ImageStream> streams() const override { return streams_; }
+  const engine::CameraFrame& latest(std::size_t index) const override;
+  engine::RendererInfo renderer() const override;
+
   const engine::CameraFrame& left() const { return left_; }
   const engine::CameraFrame& right() const { return right_; }
   const StereoCameraConfig& config() const { return config_; }
-  const engine::CameraIntrinsics& intrinsics() const { return renderer_.intrinsics(); }
 
  protected:
   void Sample(const engine::SensorContext& context) override;
@@ -33,6 +38,7 @@ class StereoCameraSensor : public engine::Sensor {
   StereoCameraConfig config_;
   std::shared_ptr<const engine::RenderScene> scene_;
   engine::CameraRenderer renderer_;  // one renderer, two frames in flight
+  std::array<engine::ImageStream, 2> streams_;
   engine::CameraFrame left_;
   engine::CameraFrame right_;
 };

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "engine/dataset/dataset_writer.h"
-#include "tools/bench_dataset.h"
+#include "tools/bench/bench_dataset.h"
 
 namespace airis {
 namespace {

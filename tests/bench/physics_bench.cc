@@ -10,7 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "tools/bench_physics.h"
+#include "tools/bench/bench_physics.h"
 
 namespace airis::tools {
 namespace {

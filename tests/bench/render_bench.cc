@@ -9,7 +9,7 @@
 #include <string>
 
 #include "engine/render/camera_renderer.h"
-#include "engine/render/synthetic_scene.h"
+#include "tools/bench/synthetic_scenes.h"
 #ifdef AIRIS_BENCH_SCENES_DIR
 #include "scenes/scene.h"
 #endif
@@ -24,12 +24,12 @@ EglContext& Context() {
 }
 
 const GpuScene& City() {
-  static const GpuScene scene((Context(), MakeSyntheticCity(10'000, 1000.0, 1)));
+  static const GpuScene scene((Context(), tools::MakeSyntheticCity(10'000, 1000.0, 1)));
   return scene;
 }
 
 const GpuScene& Forest() {
-  static const GpuScene scene((Context(), MakeSyntheticForest(5'000, 500.0, 1)));
+  static const GpuScene scene((Context(), tools::MakeSyntheticForest(5'000, 500.0, 1)));
   return scene;
 }
 
@@ -41,7 +41,7 @@ struct Flight {
   double length_m;
 };
 // City: north along the street from the central crossing; forest: east over the crowns (as
-// tools/bench_render).
+// tools/bench/bench_render).
 constexpr Flight kCityFlight{0.0, 30.0, -15.0, 300.0};
 constexpr Flight kForestFlight{90.0, 30.0, -20.0, 150.0};
 

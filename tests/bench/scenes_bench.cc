@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/random.h"
+#include "scenes/builtin_classes.h"
 #include "scenes/generators.h"
 #include "scenes/scene.h"
 #include "scenes/scene_stats.h"
@@ -41,7 +42,7 @@ void ReportScene(benchmark::State& state, const engine::StaticScene& s) {
 void BM_GenerateForest10k(benchmark::State& state) {
   const ForestConfig config = TenThousandTrees();
   auto run = [&] {
-    SceneBuilder b;
+    engine::StaticSceneBuilder b(BuiltInClasses());
     engine::RandomStream stream(1);
     GenerateForest(config, {5, 6}, config.name, stream, b);
     return b.Finish();
@@ -76,7 +77,7 @@ BENCHMARK(BM_PoissonDisc36ha)->Unit(benchmark::kMillisecond);
 void BM_GenerateCity10k(benchmark::State& state) {
   const CityConfig config = TenThousandObjectCity();
   auto run = [&] {
-    SceneBuilder b;
+    engine::StaticSceneBuilder b(BuiltInClasses());
     engine::RandomStream stream(1);
     GenerateCity(config, {4, 2, 3, 10, 7, std::nullopt}, config.name, stream, b);
     return b.Finish();

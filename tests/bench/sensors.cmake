@@ -1,6 +1,5 @@
-# Sensor models and Embree ray casting (sensors engineer). tools/bench_sensors.cc (shared with
-# `airis bench sensors`) is compiled in directly.
+# Sensor models and Embree ray casting. tools/bench/bench_sensors.cc (shared with `airis bench sensors`)
+# holds the reference-quad scenario.
 airis_add_benchmark(bench_sensors
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensors_bench.cc ${PROJECT_SOURCE_DIR}/tests/sensors/sensor_test_util.cc
-          ${PROJECT_SOURCE_DIR}/tools/bench_sensors.cc
-  DEPS airis_sensors airis_vehicles airis_world airis_environment nlohmann_json::nlohmann_json)
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensors_bench.cc
+  DEPS airis_bench airis_sensor_test_util)

@@ -13,7 +13,7 @@
 #include "sensors/magnetometer.h"
 #include "sensors/rangefinder.h"
 #include "tests/sensors/sensor_test_util.h"
-#include "tools/bench_sensors.h"
+#include "tools/bench/bench_sensors.h"
 
 namespace airis::sensors {
 namespace {

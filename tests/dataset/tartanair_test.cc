@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "engine/dataset/file_io.h"
-#include "engine/render/camera_model.h"
+#include "engine/core/camera_model.h"
 
 namespace airis::engine {
 namespace {

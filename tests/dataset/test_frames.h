@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "engine/render/camera_frame.h"
+#include "engine/core/camera_frame.h"
 
 namespace airis::engine::testing {
 

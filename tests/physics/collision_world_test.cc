@@ -2,17 +2,18 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/physics/test_scenes.h"
+#include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/test_environment.h"
 
 namespace airis::engine {
 namespace {
 
-using testing::SceneBuilder;
+using testing::BoxSceneBuilder;
 
 const Vec3 kQuadBox(0.18, 0.11, 0.04);
 
 TEST(CollisionWorldTest, BoxOnGroundHasFourFaceContacts) {
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.AddGround();
   CollisionWorld world(b.scene());
   const int body = world.AddBody(kQuadBox);
@@ -34,7 +35,7 @@ TEST(CollisionWorldTest, BoxOnGroundHasFourFaceContacts) {
 }
 
 TEST(CollisionWorldTest, LabelsAndMaterialsComeFromTheScene) {
-  SceneBuilder b;
+  BoxSceneBuilder b;
   const auto bouncy = b.AddMaterial(0.9, 0.1);
   b.AddBox("crate", Vec3(0.0, 0.0, -0.5), Vec3::Ones(), static_cast<int>(bouncy));
   b.AddBox("ghost", Vec3(5.0, 0.0, -0.5), Vec3::Ones(), -1, CollisionShape::kNone);
@@ -56,7 +57,7 @@ TEST(CollisionWorldTest, LabelsAndMaterialsComeFromTheScene) {
 TEST(CollisionWorldTest, SphereContactNormalPointsTowardTheBody) {
   // Sphere-box is an algorithm Bullet runs with the pair swapped: the normal must still point to
   // the body.
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.scene().meshes[0].primitive = Primitive::kSphere;  // the unit "box" mesh becomes a unit sphere
   b.AddBox("ball", Vec3::Zero(), Vec3::Ones());
   CollisionWorld world(b.scene());
@@ -71,7 +72,7 @@ TEST(CollisionWorldTest, SphereContactNormalPointsTowardTheBody) {
 
 TEST(CollisionWorldTest, ConeApexPointsUp) {
   // Unit cone: apex at z = -0.5 (up in NED), base of radius 0.5 at z = +0.5.
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.scene().meshes[0].primitive = Primitive::kCone;
   b.AddBox("cone", Vec3::Zero(), Vec3::Ones());
   CollisionWorld world(b.scene());
@@ -84,7 +85,7 @@ TEST(CollisionWorldTest, ConeApexPointsUp) {
 }
 
 TEST(CollisionWorldTest, SweepStopsAtAThinWall) {
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.AddGround();
   b.AddBox("wall", Vec3(5.1, 0.0, -5.0), Vec3(0.2, 20.0, 10.0));
   CollisionWorld world(b.scene());
@@ -102,7 +103,7 @@ TEST(CollisionWorldTest, SweepStopsAtAThinWall) {
 }
 
 TEST(CollisionWorldTest, StaticTriangleMeshAndHullCollide) {
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.AddBox("mesh", Vec3(0.0, 0.0, 0.5), Vec3(4.0, 4.0, 1.0), -1, CollisionShape::kTriangleMesh);
   b.AddBox("hull", Vec3(10.0, 0.0, 0.5), Vec3(4.0, 4.0, 1.0), -1, CollisionShape::kConvexHull);
   CollisionWorld world(b.scene());
@@ -120,7 +121,7 @@ TEST(CollisionWorldTest, StaticTriangleMeshAndHullCollide) {
 
 TEST(CollisionWorldTest, CylinderHasAFlatTopOfItsRadius) {
   // Unit cylinder: axis along z, diameter 1, flat ends at z = -0.5 and +0.5.
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.scene().meshes[0].primitive = Primitive::kCylinder;
   b.AddBox("post", Vec3::Zero(), Vec3::Ones());
   CollisionWorld world(b.scene());
@@ -138,7 +139,7 @@ TEST(CollisionWorldTest, CylinderHasAFlatTopOfItsRadius) {
 TEST(CollisionWorldTest, BoxShapeIsTheModelsOrientedBoundingBox) {
   // A sphere model forced to CollisionShape::kBox collides as its 1 x 1 x 1 bounding box: a corner
   // region that the sphere leaves empty is solid.
-  SceneBuilder b;
+  BoxSceneBuilder b;
   b.scene().meshes[0].primitive = Primitive::kSphere;
   b.AddBox("ball-as-box", Vec3::Zero(), Vec3::Ones(), -1, CollisionShape::kBox);
   CollisionWorld world(b.scene());
@@ -150,7 +151,7 @@ TEST(CollisionWorldTest, BoxShapeIsTheModelsOrientedBoundingBox) {
 
 TEST(CollisionWorldTest, TwoBodiesFarFromTheOriginHaveExactFaceContacts) {
   // GIVEN two quad boxes 1 km from the origin, a's rear face 5 mm into b's front face
-  CollisionWorld world(SceneBuilder().scene());
+  CollisionWorld world(BoxSceneBuilder().scene());
   const int a = world.AddBody(kQuadBox);
   const int b = world.AddBody(kQuadBox);
   const Vec3 p_b(1000.0, -800.0, -50.0);

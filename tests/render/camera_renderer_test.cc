@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "engine/render/synthetic_scene.h"
+#include "tools/bench/synthetic_scenes.h"
 #include "tests/render/render_test_util.h"
 
 namespace airis::engine {
@@ -200,7 +200,7 @@ TEST(CameraRendererTest, DistortedRenderCoversItsView) {
 
 TEST(CameraRendererTest, SameFrameRendersBitIdentically) {
   EglContext& context = SharedContext();
-  GpuScene gpu(MakeSyntheticCity(400, 200.0, 3));
+  GpuScene gpu(tools::MakeSyntheticCity(400, 200.0, 3));
   const CameraIntrinsics k = CameraIntrinsics::FromHorizontalFov(128, 96, 90.0);
   const Eigen::Isometry3d T_WC = LookPose({-60.0, 10.0, -35.0}, 0.3, -0.35);
   CameraRenderer first(context, k, AllOutputs());
@@ -232,7 +232,7 @@ TEST(CameraRendererTest, SameFrameRendersBitIdentically) {
 
 TEST(CameraRendererTest, AsynchronousReadbackMatchesDirectReadback) {
   EglContext& context = SharedContext();
-  GpuScene gpu(MakeSyntheticCity(400, 200.0, 3));
+  GpuScene gpu(tools::MakeSyntheticCity(400, 200.0, 3));
   const CameraIntrinsics k = CameraIntrinsics::FromHorizontalFov(96, 64, 80.0);
   CameraRenderer renderer(context, k, AllOutputs());
   const Eigen::Isometry3d pose0 = LookPose({-60.0, 10.0, -35.0}, 0.3, -0.35);

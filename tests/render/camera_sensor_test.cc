@@ -44,14 +44,14 @@ TEST(CameraSensorTest, IdentityMountLooksAlongBodyX) {
   SensorContext context;
   context.state = &state;
   ASSERT_TRUE(camera.Update(context));
-  EXPECT_EQ(CentreInstance(camera.latest()), 10);  // facing north
+  EXPECT_EQ(CentreInstance(camera.latest(0)), 10);  // facing north
   // Yawed 90 degrees right: body x points east.
   state.q_WB = engine::Quat(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
   context.now_ns = engine::kNsPerSecond;
   ASSERT_TRUE(camera.Update(context));
-  EXPECT_EQ(CentreInstance(camera.latest()), 20);
+  EXPECT_EQ(CentreInstance(camera.latest(0)), 20);
   // Planar depth of the east box's west face (y = 9) from y = 0.
-  EXPECT_NEAR(camera.latest().depth_planar_m.at(32, 24), 9.0, 9.0 * 1e-6);
+  EXPECT_NEAR(camera.latest(0).depth_planar_m.at(32, 24), 9.0, 9.0 * 1e-6);
 }
 
 TEST(CameraSensorTest, MountPitchedDownSeesTheGroundAtTheHeight) {
@@ -64,8 +64,8 @@ TEST(CameraSensorTest, MountPitchedDownSeesTheGroundAtTheHeight) {
   SensorContext context;
   context.state = &state;
   ASSERT_TRUE(camera.Update(context));
-  EXPECT_EQ(CentreInstance(camera.latest()), 1);
-  EXPECT_NEAR(camera.latest().depth_planar_m.at(10, 40), 29.5, 29.5 * 1e-6);
+  EXPECT_EQ(CentreInstance(camera.latest(0)), 1);
+  EXPECT_NEAR(camera.latest(0).depth_planar_m.at(10, 40), 29.5, 29.5 * 1e-6);
   // The pose row: camera 0.5 m below the body.
   std::vector<double> row(camera.columns().size());
   camera.CopyLatestRow(row);
@@ -85,7 +85,7 @@ TEST(CameraSensorTest, WorldAttachedCameraIgnoresTheVehicle) {
   SensorContext context;
   context.state = &state;
   ASSERT_TRUE(camera.Update(context));
-  EXPECT_EQ(CentreInstance(camera.latest()), 20);
+  EXPECT_EQ(CentreInstance(camera.latest(0)), 20);
 }
 
 TEST(CameraSensorTest, RendersAtItsOwnExactRate) {
@@ -100,7 +100,7 @@ TEST(CameraSensorTest, RendersAtItsOwnExactRate) {
     const auto& c = static_cast<const CameraSensor&>(s);
     // Frame k is the first 1 kHz tick at or after k / 30 s.
     const engine::TimeNs due = (frames * engine::kNsPerSecond + 29) / 30;
-    EXPECT_EQ(c.latest().time_ns, (due + 999'999) / 1'000'000 * 1'000'000);
+    EXPECT_EQ(c.latest(0).time_ns, (due + 999'999) / 1'000'000 * 1'000'000);
     ++frames;
   });
   for (engine::TimeNs t = 0; t < 2 * engine::kNsPerSecond; t += 1'000'000) {

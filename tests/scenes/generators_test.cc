@@ -4,6 +4,8 @@
 
 #include <set>
 
+#include "scenes/builtin_classes.h"
+
 namespace airis::scenes {
 namespace {
 
@@ -42,7 +44,7 @@ ForestConfig SmallForest() {
 
 engine::StaticScene Forest(const ForestConfig& c, std::uint64_t seed,
                            GeneratorReport* report = nullptr) {
-  SceneBuilder b;
+  engine::StaticSceneBuilder b(BuiltInClasses());
   engine::RandomStream stream(seed);
   const GeneratorReport r =
       GenerateForest(c, {b.ClassId("tree"), b.ClassId("vegetation")}, c.name, stream, b);
@@ -123,7 +125,7 @@ CityConfig SmallCity() {
 
 engine::StaticScene City(const CityConfig& c, std::uint64_t seed,
                          GeneratorReport* report = nullptr) {
-  SceneBuilder b;
+  engine::StaticSceneBuilder b(BuiltInClasses());
   engine::RandomStream stream(seed);
   CityResources r{b.ClassId("building"),  b.ClassId("road"), b.ClassId("sidewalk"),
                   b.ClassId("lamp_post"), b.ClassId("car"),  std::nullopt};

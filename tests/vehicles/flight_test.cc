@@ -7,7 +7,8 @@
 
 #include "engine/mission/mission_runner.h"
 #include "engine/world/simulation.h"
-#include "tests/physics/test_scenes.h"
+#include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/test_environment.h"
 #include "vehicles/multirotor/airframe_presets.h"
 #include "vehicles/multirotor/multirotor.h"
 
@@ -29,7 +30,7 @@ Flight MakeFlight(const MultirotorConfig& config, const Vec3& start_W,
                   const Vec3& wind_ned_m_s = Vec3::Zero()) {
   engine::EnvironmentConfig env;
   env.wind.mean_ned_m_s = wind_ned_m_s;
-  auto world = std::make_unique<engine::World>(testing::SceneBuilder().AddGround().Build(),
+  auto world = std::make_unique<engine::World>(testing::BoxSceneBuilder().AddGround().Build(),
                                                testing::MakeEnvironment(0.0, env));
   auto vehicle = std::make_unique<Multirotor>("drone", config);
   Flight f;

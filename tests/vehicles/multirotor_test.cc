@@ -8,7 +8,8 @@
 #include "engine/core/error.h"
 #include "engine/environment/atmosphere.h"
 #include "engine/world/simulation.h"
-#include "tests/physics/test_scenes.h"
+#include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/test_environment.h"
 #include "vehicles/multirotor/airframe_presets.h"
 
 namespace airis::vehicles {
@@ -17,7 +18,7 @@ namespace {
 using engine::ActuatorContext;
 using engine::Vec3;
 using testing::MakeEnvironment;
-using testing::SceneBuilder;
+using testing::BoxSceneBuilder;
 
 constexpr double kG0 = 9.80665;
 constexpr double kRhoSeaLevel = 1.225;
@@ -28,7 +29,7 @@ std::unique_ptr<engine::Simulation> Fly(std::unique_ptr<Multirotor> quad, Multir
                                         double origin_altitude_m = 0.0) {
   *quad_out = quad.get();
   auto world =
-      std::make_unique<engine::World>(SceneBuilder().Build(), MakeEnvironment(origin_altitude_m));
+      std::make_unique<engine::World>(BoxSceneBuilder().Build(), MakeEnvironment(origin_altitude_m));
   world->AddVehicle(std::move(quad));
   return std::make_unique<engine::Simulation>(std::move(world));
 }

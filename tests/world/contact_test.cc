@@ -8,7 +8,8 @@
 
 #include "engine/world/simulation.h"
 #include "engine/world/world.h"
-#include "tests/physics/test_scenes.h"
+#include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/test_environment.h"
 #include "tests/world/test_body.h"
 
 namespace airis::engine {
@@ -17,7 +18,7 @@ namespace {
 using testing::MakeEnvironment;
 using testing::PassiveBody;
 using testing::QuadBody;
-using testing::SceneBuilder;
+using testing::BoxSceneBuilder;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box
@@ -28,7 +29,7 @@ struct Rig {
   std::vector<CollisionEvent> events;
 };
 
-std::unique_ptr<Rig> MakeRig(const SceneBuilder& scene, const RigidBodyConfig& body,
+std::unique_ptr<Rig> MakeRig(const BoxSceneBuilder& scene, const RigidBodyConfig& body,
                              double rate_hz = 1000.0) {
   auto rig = std::make_unique<Rig>();
   auto world = std::make_unique<World>(scene.Build(), MakeEnvironment());
@@ -50,7 +51,7 @@ RigidBodyConfig NoDrag(RigidBodyConfig c) {
 
 TEST(ContactTest, BounceSpeedIsRestitutionTimesImpactSpeed) {
   // GIVEN body and ground materials with restitution 0.6 and 0.4 (combined: their mean, 0.5)
-  SceneBuilder scene;
+  BoxSceneBuilder scene;
   scene.AddGround(0.0, 100.0, static_cast<int>(scene.AddMaterial(0.4, 0.5)));
   auto rig = MakeRig(scene, NoDrag(QuadBody(0.6, 0.5)));
   RigidBodyState& s = rig->body->state();
@@ -82,7 +83,7 @@ TEST(ContactTest, BounceSpeedIsRestitutionTimesImpactSpeed) {
 
 TEST(ContactTest, PenetrationIsRemovedWithoutLaunchingTheBody) {
   // GIVEN a body at rest with its bottom 5 mm into the ground (as a scene may place it)
-  SceneBuilder scene;
+  BoxSceneBuilder scene;
   scene.AddGround(0.0, 100.0);
   auto rig = MakeRig(scene, NoDrag(QuadBody(0.55, 0.5)));
   RigidBodyState& s = rig->body->state();
@@ -106,7 +107,7 @@ TEST(ContactTest, PenetrationIsRemovedWithoutLaunchingTheBody) {
 
 TEST(ContactTest, SlidingDeceleratesAtFrictionTimesGravity) {
   // GIVEN a body sliding on the ground at 3 m/s, friction 0.3 and 0.5 (combined 0.4), no bounce
-  SceneBuilder scene;
+  BoxSceneBuilder scene;
   scene.AddGround(0.0, 100.0, static_cast<int>(scene.AddMaterial(0.0, 0.3)));
   auto rig = MakeRig(scene, NoDrag(QuadBody(0.0, 0.5)));
   RigidBodyState& s = rig->body->state();
@@ -128,7 +129,7 @@ TEST(ContactTest, SlidingDeceleratesAtFrictionTimesGravity) {
 // Flies the quad box at 40 m/s into a 0.2 m thick wall and returns the farthest its front face got
 // past the wall's face (m), with the final velocity in `v_end`.
 double CrashIntoWall(double rate_hz, Vec3* v_end) {
-  SceneBuilder scene;
+  BoxSceneBuilder scene;
   scene.AddGround();
   scene.AddBox("wall", Vec3(5.1, 0.0, -5.0), Vec3(0.2, 20.0, 10.0));
   auto rig = MakeRig(scene, QuadBody(), rate_hz);
@@ -156,7 +157,7 @@ TEST(ContactTest, NoTunnellingAtFortyMetresPerSecond) {
 }
 
 // Puts the body at rest on the surface at height `surface_z` and runs it for `seconds`.
-std::unique_ptr<Rig> RestOn(SceneBuilder scene, double surface_z, double seconds) {
+std::unique_ptr<Rig> RestOn(BoxSceneBuilder scene, double surface_z, double seconds) {
   auto rig = MakeRig(scene, QuadBody());
   rig->body->state().p_W = Vec3(2.0, 1.0, surface_z - kHalfHeight_m);
   rig->sim->RunFor(seconds);
@@ -164,9 +165,9 @@ std::unique_ptr<Rig> RestOn(SceneBuilder scene, double surface_z, double seconds
 }
 
 TEST(ContactTest, RestingOnGroundAndRoofIsStable) {
-  SceneBuilder ground;
+  BoxSceneBuilder ground;
   ground.AddGround();
-  SceneBuilder roof;
+  BoxSceneBuilder roof;
   roof.AddGround();
   roof.AddBox("house", Vec3(0.0, 0.0, -5.0), Vec3(10.0, 10.0, 10.0));  // roof at z = -10
   for (auto [scene, z] : {std::pair{ground, 0.0}, std::pair{roof, -10.0}}) {
@@ -191,7 +192,7 @@ TEST(ContactTest, RestingOnGroundAndRoofIsStable) {
 }
 
 TEST(ContactTest, TakesOffCleanlyWhenThrustExceedsWeight) {
-  SceneBuilder scene;
+  BoxSceneBuilder scene;
   scene.AddGround();
   auto rig = RestOn(scene, 0.0, 1.0);
   RigidBodyState& s = rig->body->state();
@@ -204,7 +205,7 @@ TEST(ContactTest, TakesOffCleanlyWhenThrustExceedsWeight) {
 }
 
 TEST(ContactTest, AccelerometerFeelsTheLanding) {
-  SceneBuilder scene;
+  BoxSceneBuilder scene;
   scene.AddGround();
   auto rig = MakeRig(scene, QuadBody());
   rig->body->state().p_W = Vec3(0.0, 0.0, -2.0);

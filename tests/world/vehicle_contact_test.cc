@@ -9,7 +9,8 @@
 
 #include "engine/world/simulation.h"
 #include "engine/world/world.h"
-#include "tests/physics/test_scenes.h"
+#include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/test_environment.h"
 #include "tests/world/test_body.h"
 
 namespace airis::engine {
@@ -18,7 +19,7 @@ namespace {
 using testing::MakeEnvironment;
 using testing::PassiveBody;
 using testing::QuadBody;
-using testing::SceneBuilder;
+using testing::BoxSceneBuilder;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box
@@ -53,7 +54,7 @@ struct Rig {
 };
 
 // Vehicles "a", "b", ... with the given bodies in `scene`, each recording its collision events.
-std::unique_ptr<Rig> MakeRig(const SceneBuilder& scene, const std::vector<RigidBodyConfig>& bodies,
+std::unique_ptr<Rig> MakeRig(const BoxSceneBuilder& scene, const std::vector<RigidBodyConfig>& bodies,
                              double rate_hz = 1000.0) {
   auto rig = std::make_unique<Rig>();
   auto world = std::make_unique<World>(scene.Build(), MakeEnvironment());
@@ -89,7 +90,7 @@ void HeadOn(Rig& rig, double gap_m, double va, double vb, Vec3* before, Vec3* af
 TEST(VehicleContactTest, EqualBoxesHeadOnFollowTheOneDimensionalImpact) {
   // GIVEN two equal quad boxes (restitution 0.6 each: 0.6 for the pair) closing at 4 m/s, falling
   // together (gravity acts on both alike)
-  auto rig = MakeRig(SceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
+  auto rig = MakeRig(BoxSceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
   Vec3 before, after;
   HeadOn(*rig, 0.5, 2.0, -2.0, &before, &after);
   // THEN momentum is conserved and they part at e times their closing speed: each bounces back at
@@ -109,7 +110,7 @@ TEST(VehicleContactTest, EqualBoxesHeadOnFollowTheOneDimensionalImpact) {
 TEST(VehicleContactTest, UnequalMassesHeadOnFollowTheOneDimensionalImpact) {
   // GIVEN a 1 kg box at +3 m/s meeting a 3 kg box at -1 m/s, restitution 0.5
   const double ma = 1.0, mb = 3.0, e = 0.5;
-  auto rig = MakeRig(SceneBuilder().AddGround(), {QuadOfMass(ma, e), QuadOfMass(mb, e)});
+  auto rig = MakeRig(BoxSceneBuilder().AddGround(), {QuadOfMass(ma, e), QuadOfMass(mb, e)});
   Vec3 before, after;
   HeadOn(*rig, 0.5, 3.0, -1.0, &before, &after);
   // THEN v_a' = (ma va + mb vb - mb e (va - vb)) / (ma + mb), v_b' = v_a' + e (va - vb)
@@ -123,7 +124,7 @@ TEST(VehicleContactTest, UnequalMassesHeadOnFollowTheOneDimensionalImpact) {
 }
 
 TEST(VehicleContactTest, EachVehicleGetsOneEventNamingTheOther) {
-  auto rig = MakeRig(SceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
+  auto rig = MakeRig(BoxSceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
   Vec3 before, after;
   HeadOn(*rig, 0.5, 2.0, -2.0, &before, &after);
   rig->sim->RunFor(0.2);
@@ -147,7 +148,7 @@ TEST(VehicleContactTest, EachVehicleGetsOneEventNamingTheOther) {
 }
 
 TEST(VehicleContactTest, ContactImpulsesShowInTheAccelerations) {
-  auto rig = MakeRig(SceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
+  auto rig = MakeRig(BoxSceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
   Vec3 before, after;
   HeadOn(*rig, 0.5, 2.0, -2.0, &before, &after);
   // The impact tick's acceleration is the velocity change over 1 ms: an accelerometer reads the
@@ -160,7 +161,7 @@ TEST(VehicleContactTest, ContactImpulsesShowInTheAccelerations) {
 
 TEST(VehicleContactTest, VehicleLandingOnARestingVehicleStaysAtRest) {
   // GIVEN b resting on the ground and a dropped onto it from 0.3 m (default quad materials)
-  auto rig = MakeRig(SceneBuilder().AddGround(), {QuadBody(), QuadBody()});
+  auto rig = MakeRig(BoxSceneBuilder().AddGround(), {QuadBody(), QuadBody()});
   rig->state(1).p_W = Vec3(2.0, 1.0, -kHalfHeight_m);
   rig->state(0).p_W = Vec3(2.0, 1.0, -3.0 * kHalfHeight_m - 0.3);
   // WHEN it has landed and settled (2 s)
@@ -189,7 +190,7 @@ TEST(VehicleContactTest, VehicleLandingOnARestingVehicleStaysAtRest) {
 // and returns the least z separation of their centres over the run (negative: a got below b).
 double CloseVerticallyAtTwentyMetresPerSecondEach(double rate_hz, Vec3* relative_velocity_end) {
   auto rig =
-      MakeRig(SceneBuilder().AddGround(), {QuadOfMass(1.0, 0.5), QuadOfMass(1.0, 0.5)}, rate_hz);
+      MakeRig(BoxSceneBuilder().AddGround(), {QuadOfMass(1.0, 0.5), QuadOfMass(1.0, 0.5)}, rate_hz);
   rig->state(0).p_W = Vec3(0.0, 0.0, -101.0);
   rig->state(1).p_W = Vec3(0.003, 0.002, -100.0);
   rig->state(0).v_W = Vec3(0.0, 0.0, 20.0);
@@ -218,7 +219,7 @@ TEST(VehicleContactTest, NoPassThroughAtFortyMetresPerSecondClosing) {
 
 TEST(VehicleContactTest, HeldVehicleIsAnImmovableObstacle) {
   // GIVEN b held in place and a flying into it at 2 m/s (restitution 0.6)
-  auto rig = MakeRig(SceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
+  auto rig = MakeRig(BoxSceneBuilder().AddGround(), {QuadOfMass(1.0, 0.6), QuadOfMass(1.0, 0.6)});
   rig->state(0).p_W = Vec3(-0.5, 0.0, -100.0);
   rig->state(1).p_W = Vec3(kHalfLength_m, 0.0, -100.0);
   rig->bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -kG);  // a holds its altitude
@@ -247,8 +248,8 @@ bool SameBits(const RigidBodyState& x, const RigidBodyState& y) {
 
 TEST(VehicleContactTest, VehiclesThatDoNotTouchAreUnaffectedBitForBit) {
   // GIVEN a vehicle sliding and bouncing on the ground, alone and with a second vehicle 3 m away
-  auto alone = MakeRig(SceneBuilder().AddGround(), {QuadBody()});
-  auto pair = MakeRig(SceneBuilder().AddGround(), {QuadBody(), QuadBody()});
+  auto alone = MakeRig(BoxSceneBuilder().AddGround(), {QuadBody()});
+  auto pair = MakeRig(BoxSceneBuilder().AddGround(), {QuadBody(), QuadBody()});
   for (Rig* rig : {alone.get(), pair.get()}) {
     rig->state(0).p_W = Vec3(0.0, 0.0, -0.5);
     rig->state(0).v_W = Vec3(1.0, 0.5, 0.0);

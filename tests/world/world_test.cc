@@ -7,7 +7,8 @@
 
 #include "engine/core/error.h"
 #include "engine/world/simulation.h"
-#include "tests/physics/test_scenes.h"
+#include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/test_environment.h"
 #include "tests/world/test_body.h"
 
 namespace airis::engine {
@@ -16,10 +17,10 @@ namespace {
 using testing::MakeEnvironment;
 using testing::PassiveBody;
 using testing::QuadBody;
-using testing::SceneBuilder;
+using testing::BoxSceneBuilder;
 
 // A simulation of one PassiveBody in `scene`; returns the simulation and a pointer to the body.
-std::pair<std::unique_ptr<Simulation>, PassiveBody*> MakeSim(const SceneBuilder& scene,
+std::pair<std::unique_ptr<Simulation>, PassiveBody*> MakeSim(const BoxSceneBuilder& scene,
                                                              const RigidBodyConfig& body,
                                                              double origin_altitude_m = 0.0,
                                                              double rate_hz = 1000.0) {
@@ -37,7 +38,7 @@ TEST(WorldTest, FreeFallFromOneKilometreFollowsInverseSquareGravity) {
   RigidBodyConfig body = QuadBody();
   body.linear_drag_coefficient = 0.0;
   body.angular_drag_coefficient = 0.0;
-  auto [sim, b] = MakeSim(SceneBuilder(), body, 1000.0);
+  auto [sim, b] = MakeSim(BoxSceneBuilder(), body, 1000.0);
   // WHEN it falls for 10 s (about 490 m)
   sim->RunFor(10.0);
   // THEN energy conservation in g = g0 Re^2 / r^2 gives v^2 = 2 g0 Re^2 (1/r - 1/r0).
@@ -63,7 +64,7 @@ TEST(WorldTest, FallingPlateReachesTerminalVelocity) {
   body.box_size_m = Vec3(1.0, 1.0, 0.04);
   body.inertia_B_kg_m2 = Vec3(0.0834, 0.0834, 0.1667).asDiagonal();
   body.linear_drag_coefficient = 0.325;
-  auto [sim, b] = MakeSim(SceneBuilder(), body, 500.0);
+  auto [sim, b] = MakeSim(BoxSceneBuilder(), body, 500.0);
   sim->RunFor(5.0);
   const Vec3 p = b->state().p_W;
   const double rho = sim->world().environment().CalcAir(p).density_kg_m3;
@@ -76,7 +77,7 @@ TEST(WorldTest, FallingPlateReachesTerminalVelocity) {
 }
 
 TEST(WorldTest, NonFiniteWrenchStopsTheRunNamingBodyAndTime) {
-  auto [sim, b] = MakeSim(SceneBuilder(), QuadBody());
+  auto [sim, b] = MakeSim(BoxSceneBuilder(), QuadBody());
   sim->RunFor(0.5);
   b->wrench.force_B.x() = std::numeric_limits<double>::quiet_NaN();
   try {
@@ -92,13 +93,13 @@ TEST(WorldTest, NonFiniteWrenchStopsTheRunNamingBodyAndTime) {
 
 TEST(WorldTest, DivergingStateStopsTheRun) {
   // A huge torque spins the body past any finite rate: the integrator's state becomes non-finite.
-  auto [sim, b] = MakeSim(SceneBuilder(), QuadBody());
+  auto [sim, b] = MakeSim(BoxSceneBuilder(), QuadBody());
   b->wrench.torque_B = Vec3(1e305, -1e305, 1e305);
   EXPECT_THROW(sim->RunFor(1.0), SimulationError);
 }
 
 TEST(WorldTest, SeveralVehiclesMoveIndependently) {
-  auto world = std::make_unique<World>(SceneBuilder().AddGround().Build(), MakeEnvironment());
+  auto world = std::make_unique<World>(BoxSceneBuilder().AddGround().Build(), MakeEnvironment());
   auto a = std::make_unique<PassiveBody>("a", QuadBody());
   auto c = std::make_unique<PassiveBody>("c", QuadBody());
   a->state().p_W = Vec3(0.0, 0.0, -10.0);
@@ -149,7 +150,7 @@ class CountingSensor final : public Sensor {
 };
 
 TEST(WorldTest, SensorsSampleAtTheirRateAfterPhysics) {
-  auto world = std::make_unique<World>(SceneBuilder().Build(), MakeEnvironment());
+  auto world = std::make_unique<World>(BoxSceneBuilder().Build(), MakeEnvironment());
   world->AddVehicle(std::make_unique<PassiveBody>("one", QuadBody()));
   world->AddVehicle(std::make_unique<PassiveBody>("two", QuadBody()));
   auto sensor = std::make_unique<CountingSensor>("count", 100.0, &world->vehicle(1).state());

@@ -1,0 +1,71 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "engine/scene/static_scene.h"
+
+namespace airis::engine {
+
+/// Assembles a StaticScene: each mesh stored once, identical materials merged, models shared by
+/// every object that uses them, instance ids assigned in insertion order (so stable for a given
+/// scene and seed).
+class StaticSceneBuilder {
+ public:
+  explicit StaticSceneBuilder(std::vector<SemanticClass> classes = {});
+
+  /// Index of the shared unit mesh of `primitive` (made on first use). Requires primitive != kNone.
+  std::uint32_t PrimitiveMesh(Primitive primitive);
+  /// Stores `mesh` (bounds computed here) and returns its index.
+  std::uint32_t AddMesh(TriangleMesh mesh);
+  /// Index of a material equal to `material` (colour, texture, restitution, friction), added if
+  /// new.
+  std::uint32_t Material(const engine::Material& material);
+  /// Stores `model` (bounds computed from its parts) and returns its index.
+  std::uint32_t AddModel(Model model);
+  /// Index of the model made of the single unit primitive with the default material (shared).
+  std::uint32_t PrimitiveModel(Primitive primitive);
+
+  /// Adds or recolours a class. `id` 0 keeps an existing class's id or takes the next free one.
+  /// Returns false when `id` is taken by another class or no id is left.
+  bool DefineClass(const std::string& name, int id, const Eigen::Vector3f* color);
+  /// Id of class `name`, or 0 when unknown.
+  std::uint8_t ClassId(const std::string& name) const;
+  /// The class names, for "expected one of" messages.
+  std::vector<std::string> ClassNames() const;
+
+  /// Places an object; assigns the next instance id. Returns false when the 65535 instance ids are
+  /// used up.
+  bool AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
+                 CollisionShape collision, std::string name,
+                 std::int32_t material_override = -1);
+
+  /// Reserves room for `n` more objects (generators call this before a batch).
+  void ReserveObjects(std::size_t n) { scene_.objects.reserve(scene_.objects.size() + n); }
+
+  StaticScene& scene() { return scene_; }
+  const StaticScene& scene() const { return scene_; }
+  /// Moves the finished scene out.
+  StaticScene Finish() { return std::move(scene_); }
+
+ private:
+  StaticScene scene_;
+  std::int32_t primitive_mesh_[6] = {-1, -1, -1, -1, -1, -1};
+  std::int32_t primitive_model_[6] = {-1, -1, -1, -1, -1, -1};
+  std::map<std::tuple<float, float, float, std::string, float, float>, std::uint32_t>
+      material_index_;
+};
+
+/// Bounds of `model`'s parts in the model frame.
+Eigen::AlignedBox3f CalcModelBounds(const Model& model,
+                                    const std::vector<TriangleMesh>& meshes);
+
+/// T_WO from a position (m, NED), yaw/pitch/roll (rad, z-y-x) and per-axis scale.
+Eigen::Affine3d MakePose(const Eigen::Vector3d& p_W, double yaw_rad, double pitch_rad,
+                         double roll_rad, const Eigen::Vector3d& scale);
+
+}  // namespace airis::engine

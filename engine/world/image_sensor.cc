@@ -1,0 +1,25 @@
+#include "engine/world/image_sensor.h"
+
+#include "engine/core/error.h"
+
+namespace airis::engine {
+
+Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBodyState* state) {
+  Eigen::Isometry3d T_XS = Eigen::Isometry3d::Identity();  // X = body, or world when fixed there
+  T_XS.linear() = stream.mount.q_BS().toRotationMatrix();
+  T_XS.translation() = stream.mount.position_m;
+  Eigen::Isometry3d T_SC = Eigen::Isometry3d::Identity();
+  T_SC.linear() = CalcR_SC();
+  Eigen::Isometry3d T_WC = T_XS * T_SC;
+  if (!stream.world_fixed) {
+    AIRIS_DEMAND(state != nullptr);
+    Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
+    T_WB.linear() = state->q_WB.normalized().toRotationMatrix();
+    T_WB.translation() = state->p_W;
+    T_WC = T_WB * T_XS * T_SC;
+  }
+  if (stream.offset_x_m != 0.0) T_WC = T_WC * Eigen::Translation3d(stream.offset_x_m, 0.0, 0.0);
+  return T_WC;
+}
+
+}  // namespace airis::engine

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+
+#include "engine/core/camera_frame.h"
+#include "engine/core/camera_model.h"
+#include "engine/physics/rigid_body_state.h"
+#include "engine/world/mount.h"
+#include "engine/world/sensor.h"
+
+namespace airis::engine {
+
+/// One image stream of an image sensor, constant over a run. A camera has one stream, named as the
+/// sensor; a stereo pair has two, `<name>_left` and `<name>_right`, sampled at the same instant.
+struct ImageStream {
+  std::string name;             ///< unique among a world's image streams (datasets, Python)
+  std::string rig;              ///< the sensor it belongs to (a stereo pair's name)
+  std::string side = "left";    ///< "left" for a mono camera or the left eye, "right" for the right
+  CameraIntrinsics intrinsics;  ///< pinhole model, clip planes and distortion of its images
+  RenderOutputs outputs;        ///< the image planes its frames carry
+  MountConfig mount;            ///< the sensor's mount on its vehicle (or in the world)
+  bool world_fixed = false;     ///< the mount is in the world frame, not on the vehicle's body
+  /// Offset of this eye from the mount along the left eye's image x axis (m): 0 for a mono camera
+  /// and the left eye, the baseline for the right eye.
+  double offset_x_m = 0.0;
+  double baseline_m = 0.0;  ///< of its stereo rig (right eye's offset); 0 for a mono camera
+  double rate_hz = 0.0;     ///< frames per simulated second
+};
+
+/// Pose of stream `stream`'s optical frame C in the world: T_WC = T_WB T_BS T_SC T_offset, with B
+/// the body at `state` (ignored for a world-fixed mount, where T_WB = I), S the sensor frame of the
+/// mount, C the optical frame (x right, y down, z forward; CalcR_SC) and T_offset the eye's offset
+/// along C's x. Requires `state` unless the mount is world-fixed.
+Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBodyState* state);
+
+/// The GL implementation an image sensor renders with (for manifests and reports).
+struct RendererInfo {
+  std::string gl_vendor;
+  std::string gl_renderer;
+  std::string gl_version;
+};
+
+/// A sensor that produces images (cameras, stereo pairs; later event cameras and optical flow):
+/// at each sample every stream gets a frame holding its simulated time, the pose of the optical
+/// frame at exposure (T_WC, optical -> world NED) and its named image planes
+/// (CameraFrame::Planes). Recorders, the Python API and bridges read images only through this
+/// interface, never through a concrete camera type. Frames stay valid until the next sample.
+class ImageSensor : public Sensor {
+ public:
+  using Sensor::Sensor;
+
+  /// The streams, in a fixed order (constant over the run).
+  virtual std::span<const ImageStream> streams() const = 0;
+  /// The last frame of stream `index` (< streams().size()); images empty before the first sample.
+  virtual const CameraFrame& latest(std::size_t index) const = 0;
+  /// The GL implementation it renders with.
+  virtual RendererInfo renderer() const = 0;
+
+  ImageSensor* image() override { return this; }
+  const ImageSensor* image() const override { return this; }
+};
+
+}  // namespace airis::engine

@@ -1,0 +1,120 @@
+// `airis run` end to end: the example missions, determinism, failures. Runs from the repository root.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "tests/tools/cli/run_airis.h"
+#include "tools/cli/commands.h"
+
+namespace airis::tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+using Result = testing::CommandResult;
+
+Result RunAiris(const std::string& args) { return testing::RunAiris(&AddRunCommand, args); }
+
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("airis_run_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string WriteFile(const std::string& name, const std::string& text) {
+  const fs::path path = fs::temp_directory_path() / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class ExampleMissionTest : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+
+TEST_P(ExampleMissionTest, FliesToTheEnd) {
+  const auto [scene, mission] = GetParam();
+  const Result r = RunAiris(std::string("run scenes/") + scene + " --mission scenes/missions/" + mission);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("mission succeeded"), std::string::npos) << r.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Missions, ExampleMissionTest,
+                         ::testing::Values(std::pair{"city.yaml", "city_survey.yaml"},
+                                           std::pair{"city.yaml", "city_orbit.yaml"},
+                                           std::pair{"forest.yaml", "forest_path.yaml"}),
+                         [](const auto& info) {
+                           const std::string mission = info.param.second;
+                           return mission.substr(0, mission.find('.'));  // city_survey, ...
+                         });
+
+TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
+  const fs::path a = FreshDir("a"), b = FreshDir("b");
+  const std::string cmd = "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 15 --out ";
+  ASSERT_EQ(RunAiris(cmd + a.string()).exit_code, 0);
+  ASSERT_EQ(RunAiris(cmd + b.string()).exit_code, 0);
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(a)) {
+    ++files;
+    EXPECT_EQ(ReadFile(e.path()), ReadFile(b / e.path().filename())) << e.path().filename();
+  }
+  EXPECT_GE(files, 7);  // truth, 4 sensors, collisions, mission events
+  // 15 s at 100 Hz plus the row at t = 0; the IMU at 1 kHz.
+  const std::string truth = ReadFile(a / "truth.csv");
+  EXPECT_EQ(std::count(truth.begin(), truth.end(), '\n'), 1 + 1501);
+  const std::string imu = ReadFile(a / "drone1.imu.csv");
+  EXPECT_EQ(std::count(imu.begin(), imu.end(), '\n'), 1 + 15000);
+}
+
+TEST(RunCommandTest, AnotherSeedChangesTheSensorNoise) {
+  const fs::path a = FreshDir("seed1"), b = FreshDir("seed2");
+  const std::string cmd = "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 2 --out ";
+  ASSERT_EQ(RunAiris(cmd + a.string() + " --seed 1").exit_code, 0);
+  ASSERT_EQ(RunAiris(cmd + b.string() + " --seed 2").exit_code, 0);
+  EXPECT_NE(ReadFile(a / "drone1.imu.csv"), ReadFile(b / "drone1.imu.csv"));
+}
+
+TEST(RunCommandTest, FlyingIntoABuildingFailsNamingTheStepAndTheBuilding) {
+  // Downtown towers are 60-160 m tall: a level flight at 30 m toward the centre hits one.
+  const std::string mission = WriteFile("airis_crash.yaml", R"(steps:
+  - takeoff: {altitude_m: 30}
+  - goto: {position_ned_m: [100, 100, -30], speed_m_s: 8}
+  - goto: {position_ned_m: [100, -300, -30], speed_m_s: 8}
+  - land:
+)");
+  const Result r = RunAiris("run scenes/city.yaml --mission " + mission);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("airis_crash.yaml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(goto): collided with building '"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" at t = "), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("mission FAILED"), std::string::npos) << r.out;
+}
+
+TEST(RunCommandTest, BadInputIsAClearErrorAndExitCodeTwo) {
+  const std::string no_such_vehicle = WriteFile("airis_vehicle.yaml", "vehicle: drone9\nsteps:\n  - land:\n");
+  Result r = RunAiris("run scenes/city.yaml --mission " + no_such_vehicle);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no vehicle 'drone9' in the scene (it has drone1)"), std::string::npos) << r.err;
+
+  const fs::path busy = FreshDir("busy");
+  fs::create_directories(busy);
+  std::ofstream(busy / "keep.txt") << "data";
+  r = RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --out " + busy.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("is not empty; nothing is overwritten"), std::string::npos) << r.err;
+  EXPECT_EQ(ReadFile(busy / "keep.txt"), "data");
+
+  r = RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --realtime -2");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--realtime: must be > 0"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace airis::tools

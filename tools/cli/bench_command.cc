@@ -1,0 +1,70 @@
+// `airis bench [physics|sensors|render|dataset] [--json]`: the benchmark tables for users, measured
+// on their machine.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "tools/bench/bench_dataset.h"
+#include "tools/bench/bench_physics.h"
+#include "tools/bench/bench_render.h"
+#include "tools/bench/bench_sensors.h"
+#include "tools/cli/cli_util.h"
+#include "tools/cli/commands.h"
+
+namespace airis::tools {
+namespace {
+
+void Print(const std::string& title, const nlohmann::json& results, bool json) {
+  if (json) {
+    std::printf("%s\n", results.dump(2).c_str());
+    return;
+  }
+  std::printf("%s\n", title.c_str());
+  for (const auto& [key, value] : results.items()) {
+    if (value.is_number_float()) {
+      std::printf("  %-34s %.6g\n", key.c_str(), value.get<double>());
+    } else {
+      std::printf("  %-34s %s\n", key.c_str(), value.dump().c_str());
+    }
+  }
+}
+
+}  // namespace
+
+void AddBenchCommand(CLI::App& app, int& exit_code) {
+  auto json = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "measure physics, sensor, rendering and dataset speed on this machine");
+  cmd->require_subcommand(1);
+  struct Entry {
+    const char* name;
+    const char* help;
+    nlohmann::json (*run)();
+  };
+  static const Entry kEntries[] = {
+      {"physics",
+       "ticks per second of the reference quad: empty world, 10,000 boxes, Bullet's own world",
+       [] { return RunPhysicsBench(); }},
+      {"sensors", "reference quad tick with and without its sensors; lidar rays per second",
+       [] { return RunSensorBenchmarks(); }},
+      {"render",
+       "camera frames per second (RGB + depth + segmentation read back) in the city and forest",
+       [] { return RunRenderBenchmark(); }},
+      {"dataset",
+       "labeled frames per second of the README demo (city survey, 640x480 RGB + depth + "
+       "segmentation)",
+       [] { return RunDatasetBenchmark(); }},
+  };
+  for (const Entry& e : kEntries) {
+    CLI::App* sub = cmd->add_subcommand(e.name, e.help);
+    sub->add_flag("--json", *json, "one JSON object instead of a table");
+    sub->callback([&exit_code, json, &e] {
+      exit_code = RunReportingErrors([&] {
+        Print(std::string("airis bench ") + e.name, e.run(), *json);
+        return 0;
+      });
+    });
+  }
+}
+
+}  // namespace airis::tools

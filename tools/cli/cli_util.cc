@@ -1,0 +1,57 @@
+#include "tools/cli/cli_util.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "engine/core/error.h"
+
+namespace airis::tools {
+
+int RunReportingErrors(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const engine::ConfigError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const engine::SimulationError& e) {
+    std::fprintf(stderr, "simulation stopped: %s\n", e.what());
+    return 3;
+  } catch (const std::out_of_range& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    // Everything else users meet (a full disk, no EGL display) carries its own clear message.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}
+
+double ParseFiniteNumber(const std::string& name, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) {
+    throw engine::ConfigError({}, "--" + name, "must be a finite number (got '" + text + "')");
+  }
+  return value;
+}
+
+std::uint64_t ParseSeed(const std::string& name, const std::string& text) {
+  std::uint64_t value = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) {
+    throw engine::ConfigError({}, "--" + name, "must be a whole number from 0 to 2^64 - 1 (got '" + text + "')");
+  }
+  return value;
+}
+
+}  // namespace airis::tools

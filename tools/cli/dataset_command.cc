@@ -1,0 +1,168 @@
+// `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--cameras a,b] [--shard
+// K/N] [--resume]
+//  [--formats npy,normals,tartanair] [--workers N]`: flies the mission and writes a labeled
+//  dataset.
+// `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "tools/cli/cli_util.h"
+#include "tools/cli/commands.h"
+#include "tools/jobs/dataset_job.h"
+#include "tools/jobs/dataset_merge.h"
+
+namespace airis::tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The command line as given, parsed into DatasetJobOptions by Run.
+struct DatasetArgs {
+  std::string scene, mission, out, seed, cameras, formats, shard;
+  int workers = 2;
+  bool resume = false;
+};
+
+// "1:23" or "12:03:04" for a wall time in seconds.
+std::string FormatDuration(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  char buf[32];
+  if (s >= 3600) {
+    std::snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  } else {
+    std::snprintf(buf, sizeof(buf), "%ld:%02ld", s / 60, s % 60);
+  }
+  return buf;
+}
+
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+engine::DatasetOutputs ParseFormats(const std::string& text) {
+  engine::DatasetOutputs outputs;
+  for (const std::string& f : SplitList(text)) {
+    if (f == "npy") {
+      outputs.depth_npy = true;
+    } else if (f == "normals") {
+      outputs.normals = true;
+    } else if (f == "tartanair") {
+      outputs.tartanair = true;
+    } else {
+      throw engine::ConfigError({}, "--formats",
+                                "unknown format '" + f + "' (expected npy, normals or tartanair)");
+    }
+  }
+  return outputs;
+}
+
+int Run(const DatasetArgs& a) {
+  for (const auto& [value, name] :
+       {std::pair{&a.scene, "scene"}, {&a.mission, "--mission"}, {&a.out, "--out"}}) {
+    if (value->empty())
+      throw engine::ConfigError({}, name,
+                                "required (airis dataset SCENE --mission FILE --out DIR)");
+  }
+  DatasetJobOptions o;
+  o.scene.path = a.scene;
+  if (!a.seed.empty()) o.scene.seed = ParseSeed("seed", a.seed);
+  o.mission = a.mission;
+  o.out = a.out;
+  o.cameras = SplitList(a.cameras);
+  o.outputs = ParseFormats(a.formats);
+  o.shard = ParseShard(a.shard);
+  o.workers = a.workers;
+  o.resume = a.resume;
+
+  // A progress line on a terminal, four times a second: step, simulated time, frames, rate, ETA.
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  double next_progress_s = 0.0;
+  auto progress = [&](const JobProgress& p) {
+    if (p.wall_s < next_progress_s) return;
+    next_progress_s = p.wall_s + 0.25;
+    const std::string eta = p.eta_s >= 0.0 ? FormatDuration(p.eta_s) : "--";
+    std::fprintf(stderr, "\r  step %d/%d  t = %7.1f s  frames %6lld  %5.1f frames/s  ETA %s   ",
+                 p.step, p.steps, p.simulated_s, static_cast<long long>(p.frames),
+                 static_cast<double>(p.frames) / std::max(p.wall_s, 1e-9), eta.c_str());
+  };
+  const DatasetJobResult r = tty ? RunDatasetJob(o, progress) : RunDatasetJob(o);
+  if (tty) std::fprintf(stderr, "\n");
+
+  const std::string what = o.shard.count > 1 ? "dataset shard " + std::to_string(o.shard.index) +
+                                                   "/" + std::to_string(o.shard.count)
+                                             : "dataset";
+  std::printf("%s %s: %lld frames from %zu camera(s) in %.1f s (%.1f frames/s), %.1f simulated s\n",
+              what.c_str(), r.succeeded ? "written" : "INCOMPLETE",
+              static_cast<long long>(r.frames), r.cameras, r.wall_s,
+              static_cast<double>(r.frames) / std::max(r.wall_s, 1e-9), r.simulated_s);
+  std::printf("  folder         %s\n", o.out.c_str());
+  if (fs::exists(fs::path(o.out) / "preview.png")) {
+    std::printf("  contact sheet  %s\n", (fs::path(o.out) / "preview.png").c_str());
+  }
+  if (!r.succeeded) {
+    std::fprintf(stderr, "error: %s\n", r.failure.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+int Merge(const std::vector<std::string>& shards, const std::string& out) {
+  const MergeSummary m =
+      MergeDatasetShards(std::vector<fs::path>(shards.begin(), shards.end()), out);
+  std::printf("dataset merged: %d shards, %lld frames in %.1f s\n", m.shards,
+              static_cast<long long>(m.frames), m.wall_s);
+  std::printf("  folder         %s\n", out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void AddDatasetCommand(CLI::App& app, int& exit_code) {
+  auto a = std::make_shared<DatasetArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "dataset", "fly a mission and write a labeled dataset (docs/dataset-format.md)");
+  auto shards = std::make_shared<std::vector<std::string>>();
+  auto merge_out = std::make_shared<std::string>();
+  CLI::App* merge = cmd->add_subcommand(
+      "merge", "join the shard folders of one dataset (--shard K/N runs) into one");
+  merge->add_option("shards", *shards, "the shard folders, all N of them")->required();
+  merge->add_option("--out", *merge_out, "merged dataset folder; must be empty or absent")
+      ->required();
+  merge->callback([shards, merge_out, &exit_code] {
+    exit_code = RunReportingErrors([&] { return Merge(*shards, *merge_out); });
+  });
+  cmd->add_option("scene", a->scene, "scene file (YAML)");
+  cmd->add_option("--mission", a->mission, "mission file (YAML)");
+  cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume");
+  cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)");
+  cmd->add_option("--cameras", a->cameras, "record only these cameras (comma-separated)");
+  cmd->add_option("--formats", a->formats,
+                  "extra outputs: npy (float depth), normals, tartanair (the TartanAir layout "
+                  "too); comma-separated");
+  cmd->add_option("--shard", a->shard,
+                  "write shard K of N (every N-th frame from the K-th); join with 'merge'");
+  cmd->add_option("--workers", a->workers, "image encoding threads (default 2)");
+  cmd->add_flag("--resume", a->resume,
+                "continue an interrupted run in --out (same result as uninterrupted)");
+  cmd->callback([a, merge, &exit_code] {
+    if (merge->parsed()) return;
+    exit_code = RunReportingErrors([&] { return Run(*a); });
+  });
+}
+
+}  // namespace airis::tools

@@ -1,0 +1,105 @@
+// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--realtime [FACTOR]] [--until SECONDS]`
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "engine/core/error.h"
+#include "tools/cli/cli_util.h"
+#include "tools/cli/commands.h"
+#include "tools/jobs/run_job.h"
+
+namespace airis::tools {
+namespace {
+
+struct RunOptions {
+  std::string scene;
+  std::string mission;
+  std::string out;
+  std::string seed;
+  std::string realtime;      // empty: as fast as possible
+  bool realtime_given = false;
+  std::string until;
+  std::string truth_rate = "100";
+};
+
+// One line, rewritten in place, when stderr is a terminal.
+void PrintProgress(const JobProgress& p) {
+  std::fprintf(stderr, "\r  step %d/%d %-12s t = %8.2f s  x%-7.1f  p = (%7.1f, %7.1f, %6.1f) m   ",
+               p.step, p.steps, p.step_kind.c_str(), p.simulated_s,
+               p.simulated_s / std::max(p.wall_s, 1e-9), p.position_W.x(), p.position_W.y(),
+               p.position_W.z());
+}
+
+int Run(const RunOptions& o) {
+  RunJobOptions job;
+  job.scene.path = o.scene;
+  if (!o.seed.empty()) job.scene.seed = ParseSeed("seed", o.seed);
+  job.mission = o.mission;
+  job.out = o.out;
+  if (o.realtime_given) {
+    job.realtime = o.realtime.empty() ? 1.0 : ParseFiniteNumber("realtime", o.realtime);
+    if (*job.realtime <= 0.0) {
+      throw engine::ConfigError({}, "--realtime", "must be > 0 (got " + o.realtime + ")");
+    }
+  }
+  if (!o.until.empty()) {
+    job.until_ns = engine::SecondsToNs(ParseFiniteNumber("until", o.until), "--until");
+  }
+  job.truth_rate_hz = ParseFiniteNumber("truth-rate", o.truth_rate);
+  if (job.truth_rate_hz <= 0.0) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+
+  // The progress line, four times a second on a terminal.
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  double next_s = 0.0;
+  const RunJobResult r = RunMissionJob(job, [&](const JobProgress& p) {
+    if (!tty || p.wall_s < next_s) return;
+    next_s = p.wall_s + 0.25;
+    PrintProgress(p);
+  });
+  if (tty) std::fprintf(stderr, "\n");
+
+  const MissionOutcome& m = r.mission;
+  std::printf("mission %s: %d of %d steps done\n",
+              m.state == engine::MissionRunner::State::kSucceeded ? "succeeded"
+              : m.state == engine::MissionRunner::State::kFailed  ? "FAILED"
+                                                                  : "stopped (--until)",
+              m.steps_done, m.steps);
+  std::printf("  distance flown       %.1f m\n", m.distance_flown_m);
+  std::printf("  max tracking error   %.2f m\n", m.max_tracking_error_m);
+  std::printf("  collisions           %lld\n", static_cast<long long>(r.collisions));
+  std::printf("  simulated time       %.3f s\n", m.simulated_s);
+  std::printf("  wall time            %.3f s (%.1fx real time)\n", r.wall_s,
+              m.simulated_s / std::max(r.wall_s, 1e-9));
+  if (!o.out.empty()) std::printf("  telemetry            %s\n", o.out.c_str());
+  if (m.state == engine::MissionRunner::State::kFailed) {
+    std::fprintf(stderr, "error: %s\n", m.failure.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void AddRunCommand(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "fly a mission in a scene and write a telemetry log");
+  cmd->add_option("scene", options->scene, "scene file (YAML)")->required();
+  cmd->add_option("--mission", options->mission, "mission file (YAML)")->required();
+  cmd->add_option("--out", options->out, "folder for the telemetry log (CSV per stream); must be empty");
+  cmd->add_option("--seed", options->seed, "scene seed (default: the scene's)");
+  cmd->add_option("--realtime", options->realtime,
+                  "pace to wall time at this exact factor (default as fast as possible; 1 when given "
+                  "without a value)")
+      ->expected(0, 1);
+  cmd->add_option("--until", options->until, "stop after this many simulated seconds");
+  cmd->add_option("--truth-rate", options->truth_rate, "ground-truth log rate (Hz, default 100)");
+  cmd->callback([options, cmd, &exit_code] {
+    options->realtime_given = cmd->count("--realtime") > 0;
+    exit_code = RunReportingErrors([&] { return Run(*options); });
+  });
+}
+
+}  // namespace airis::tools

@@ -1,0 +1,207 @@
+// `airis scene check|stats|schema|preview`: validate a scene file, summarise it, print the format's key
+// tables, render a preview image.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scenes/scene.h"
+#include "scenes/scene_schema.h"
+#include "scenes/scene_stats.h"
+#include "tools/cli/cli_util.h"
+#include "tools/jobs/preview_render.h"
+#include "tools/cli/commands.h"
+
+namespace airis::tools {
+namespace {
+
+struct SceneOptions {
+  std::string file;
+  bool json = false;
+  std::string camera;  // preview: a vehicle camera's name
+  std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
+  std::string out = "preview.png";
+};
+
+struct Loaded {
+  scenes::Scene scene;
+  double load_ms = 0.0;
+};
+
+Loaded Load(const std::string& file) {
+  // Wall time here is a report to the user, never an input to the simulation.
+  const auto start = std::chrono::steady_clock::now();
+  Loaded out{scenes::LoadScene(file), 0.0};
+  out.load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::string ClassList(const scenes::SceneStats& stats) {
+  std::string out;
+  for (const auto& c : stats.classes) {
+    if (!out.empty()) out += ", ";
+    out += c.name + " " + std::to_string(c.objects);
+  }
+  return out;
+}
+
+void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
+  const scenes::Scene& s = loaded.scene;
+  std::printf("scene       %s (%s, %zu file%s)\n", s.name.c_str(), s.path.c_str(), s.files.size(),
+              s.files.size() == 1 ? "" : "s");
+  std::printf("seed        %llu\n", static_cast<unsigned long long>(s.seed));
+  std::printf("origin      %.6f N, %.6f E, %.1f m\n", engine::RadToDeg(s.origin.latitude_rad),
+              engine::RadToDeg(s.origin.longitude_rad), s.origin.altitude_m);
+  std::printf("objects     %zu (%s)\n", stats.objects, ClassList(stats).c_str());
+  for (const auto& g : s.generated) {
+    std::printf("generator   %s (%s): %zu objects", g.name.c_str(), g.kind.c_str(), g.objects);
+    if (g.kind == "city") std::printf(", %zu buildings", g.buildings);
+    if (g.kind == "forest") std::printf(", %zu trees, %zu bushes", g.trees, g.bushes);
+    std::printf("\n");
+  }
+  std::printf(
+      "geometry    %zu meshes (%zu triangles stored), %zu models, %zu materials, %zu triangles "
+      "drawn\n",
+      stats.meshes, stats.stored_triangles, stats.models, stats.materials, stats.drawn_triangles);
+  for (const auto& v : s.vehicles) {
+    std::string sensors;
+    for (const auto& sensor : v.sensors) sensors += (sensors.empty() ? "" : ", ") + sensor.name;
+    std::printf("vehicle     %s (preset %s, %.3g kg) at [%g, %g, %g] m, yaw %g deg; sensors: %s\n",
+                v.name.c_str(), v.preset.c_str(), v.airframe.mass_kg, v.p_W.x(), v.p_W.y(),
+                v.p_W.z(), engine::RadToDeg(v.yaw_rad), sensors.empty() ? "none" : sensors.c_str());
+  }
+  if (!stats.bounds_W.isEmpty()) {
+    const auto& lo = stats.bounds_W.min();
+    const auto& hi = stats.bounds_W.max();
+    std::printf("bounds      [%.1f, %.1f, %.1f] to [%.1f, %.1f, %.1f] m (NED)\n", lo.x(), lo.y(),
+                lo.z(), hi.x(), hi.y(), hi.z());
+  }
+  std::printf("memory      %.2f MiB (static scene)\n",
+              static_cast<double>(stats.memory_bytes) / (1024.0 * 1024.0));
+  std::printf("load time   %.1f ms\n", loaded.load_ms);
+}
+
+int RunCheck(const SceneOptions& options) {
+  const Loaded loaded = Load(options.file);
+  const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
+  PrintSummary(loaded, stats);
+  std::printf("ok          %s is valid\n", options.file.c_str());
+  return 0;
+}
+
+int RunStats(const SceneOptions& options) {
+  const Loaded loaded = Load(options.file);
+  const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
+  if (!options.json) {
+    PrintSummary(loaded, stats);
+    return 0;
+  }
+  nlohmann::json out;
+  out["scene"] = loaded.scene.name;
+  out["file"] = loaded.scene.path;
+  out["files"] = loaded.scene.files;
+  out["seed"] = loaded.scene.seed;
+  out["objects"] = stats.objects;
+  out["instances"] = stats.objects;
+  out["models"] = stats.models;
+  out["meshes"] = stats.meshes;
+  out["materials"] = stats.materials;
+  out["stored_triangles"] = stats.stored_triangles;
+  out["drawn_triangles"] = stats.drawn_triangles;
+  out["vehicles"] = stats.vehicles;
+  out["memory_bytes"] = stats.memory_bytes;
+  out["load_time_ms"] = loaded.load_ms;
+  nlohmann::json classes = nlohmann::json::object();
+  for (const auto& c : stats.classes) classes[c.name] = {{"id", c.id}, {"objects", c.objects}};
+  out["classes"] = classes;
+  if (!stats.bounds_W.isEmpty()) {
+    const auto& lo = stats.bounds_W.min();
+    const auto& hi = stats.bounds_W.max();
+    out["bounds_ned_m"] = {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}};
+  }
+  std::cout << out.dump(2) << "\n";
+  return 0;
+}
+
+int RunSchema() {
+  for (const auto& section : scenes::SceneSchemaSections()) {
+    std::printf("### `%s`\n\n%s\n", section.title.c_str(), section.markdown.c_str());
+  }
+  return 0;
+}
+
+int RunPreview(const SceneOptions& o) {
+  PreviewOptions preview;
+  if (!o.camera.empty() && !o.pose.empty()) {
+    throw engine::ConfigError({}, "--camera", "give --camera or --pose, not both");
+  }
+  if (!o.pose.empty()) {
+    std::vector<double> v;
+    std::string item;
+    std::stringstream in(o.pose);
+    while (std::getline(in, item, ',')) v.push_back(ParseFiniteNumber("pose", item));
+    if (v.size() != 5) throw engine::ConfigError({}, "--pose", "expected n,e,d,yaw_deg,pitch_deg (got '" + o.pose + "')");
+    preview.camera_position_m = Eigen::Vector3d(v[0], v[1], v[2]);
+    preview.yaw_deg = v[3];
+    preview.pitch_deg = v[4];
+  }
+  PreviewResult r;
+  if (!o.camera.empty()) {
+    // The camera as mounted on its vehicle at the vehicle's start pose, with its own intrinsics.
+    SceneSource source;
+    source.path = o.file;
+    const SimulationJob job(source);
+    r = RenderPreviewPng(job.world().scene(), PreviewOfImageStream(job, o.camera), o.out);
+  } else {
+    r = RenderPreviewPng(scenes::LoadScene(o.file).static_scene, preview, o.out);
+  }
+  std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n", o.out.c_str(),
+              r.triangles, r.gl_renderer.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void AddSceneCommand(CLI::App& app, int& exit_code) {
+  CLI::App* cmd = app.add_subcommand("scene", "Validate and summarise scene files");
+  cmd->require_subcommand(1);
+  auto options = std::make_shared<SceneOptions>();
+
+  CLI::App* check =
+      cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
+  check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  check->callback([options, &exit_code] {
+    exit_code = RunReportingErrors([&] { return RunCheck(*options); });
+  });
+
+  CLI::App* stats = cmd->add_subcommand(
+      "stats", "Objects per class, triangles, meshes, instances, bounds, memory and load time");
+  stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  stats->add_flag("--json", options->json, "print one JSON object instead of text");
+  stats->callback([options, &exit_code] {
+    exit_code = RunReportingErrors([&] { return RunStats(*options); });
+  });
+
+  CLI::App* schema =
+      cmd->add_subcommand("schema", "Print every key of the scene format as Markdown tables");
+  schema->callback([&exit_code] { exit_code = RunReportingErrors([] { return RunSchema(); }); });
+
+  CLI::App* preview = cmd->add_subcommand(
+      "preview", "Render RGB | depth | segmentation side by side from a camera, a pose or above");
+  preview->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  preview->add_option("--camera", options->camera, "a camera of the scene's vehicles, at its start pose");
+  preview->add_option("--pose", options->pose, "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
+  preview->add_option("--out", options->out, "PNG to write (default preview.png)");
+  preview->callback([options, &exit_code] {
+    exit_code = RunReportingErrors([&] { return RunPreview(*options); });
+  });
+}
+
+}  // namespace airis::tools

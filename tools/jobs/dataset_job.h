@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/dataset/dataset_writer.h"
+#include "tools/jobs/dataset_shard.h"
+#include "tools/jobs/simulation_job.h"
+
+namespace airis::tools {
+
+/// What `airis dataset` makes (docs/dataset-format.md).
+struct DatasetJobOptions {
+  SceneSource scene;    ///< the scene file and the seed that replaces its own
+  std::string mission;  ///< mission file (YAML)
+  std::string out;      ///< dataset folder: empty or absent, or an interrupted run's with resume
+  std::vector<std::string> cameras;   ///< record only these (empty: all)
+  engine::DatasetOutputs outputs;     ///< which files per frame
+  ShardSpec shard;
+  int workers = 2;      ///< image encoding threads, 1 to 64
+  bool resume = false;  ///< continue an interrupted run in `out`
+};
+
+/// What a finished job made.
+struct DatasetJobResult {
+  bool succeeded = false;   ///< the mission flew to its end (else the dataset is marked incomplete)
+  std::string failure;      ///< why the mission failed, when it did
+  std::int64_t frames = 0;  ///< frames written, all cameras
+  std::size_t cameras = 0;  ///< dataset cameras (a stereo camera counts two)
+  double wall_s = 0;        ///< wall time of the whole job: loading, flying, writing, finishing
+  double simulated_s = 0;
+};
+
+/// Flies the mission through the scene and writes the dataset into options.out
+/// (docs/dataset-format.md): frames, poses, COCO files, labels, streams, the contact sheet, and
+/// manifest.json (written first marked incomplete, replaced at the end). Calls `progress` about
+/// every 100 simulated ms (with the frames written and an ETA). Throws ConfigError for bad options or input files (naming file, line and
+/// key), DatasetIoError when the folder cannot be written, SimulationError when the simulation
+/// diverges.
+DatasetJobResult RunDatasetJob(const DatasetJobOptions& options,
+                               const std::function<void(const JobProgress&)>& progress = {});
+
+}  // namespace airis::tools

@@ -1,0 +1,128 @@
+#include "tools/jobs/dataset_manifest.h"
+
+#include <array>
+
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/sha256.h"
+#include "engine/world/image_sensor.h"
+#include "tools/jobs/version.h"
+
+namespace airis::tools {
+namespace {
+
+std::string FileHash(const std::string& path) {
+  return engine::Sha256Hex(engine::ReadFileBytes(path));
+}
+
+// The GL strings of the context the image sensors render with (all of a world share one), or
+// empty strings.
+nlohmann::json RendererJson(const engine::World& world) {
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    for (const auto& s : world.sensors(v)) {
+      if (const engine::ImageSensor* image = s->image()) {
+        const engine::RendererInfo r = image->renderer();
+        return {{"gl_vendor", r.gl_vendor}, {"gl_renderer", r.gl_renderer},
+                {"gl_version", r.gl_version}};
+      }
+    }
+  }
+  return {{"gl_vendor", ""}, {"gl_renderer", ""}, {"gl_version", ""}};
+}
+
+nlohmann::json MountJson(const engine::ImageStream& s) {
+  const engine::MountConfig& m = s.mount;
+  nlohmann::json out = {{"position_m", {m.position_m.x(), m.position_m.y(), m.position_m.z()}},
+                        {"roll_deg", m.roll_deg},
+                        {"pitch_deg", m.pitch_deg},
+                        {"yaw_deg", m.yaw_deg}};
+  if (s.rig != s.name) out["baseline_m"] = s.baseline_m;  // an eye of a stereo pair
+  return out;
+}
+
+// The names of the outputs that are on, in DatasetOutputs order (rgb, depth_png, depth_npy,
+// segmentation, normals, tartanair), from `names` in that order.
+nlohmann::json NamesOf(const engine::DatasetOutputs& o, const std::array<const char*, 6>& names) {
+  const bool on[] = {o.rgb, o.depth_png, o.depth_npy, o.segmentation, o.normals, o.tartanair};
+  nlohmann::json list = nlohmann::json::array();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (on[i]) list.push_back(names[i]);
+  }
+  return list;
+}
+
+// A camera's outputs as the manifest lists them, and the dataset's file formats.
+nlohmann::json OutputsJson(const engine::DatasetOutputs& o) {
+  return NamesOf(o, {"rgb", "depth_png", "depth_npy", "segmentation", "normals", "tartanair"});
+}
+nlohmann::json FormatsJson(const engine::DatasetOutputs& o) {
+  nlohmann::json formats =
+      NamesOf(o, {"rgb_png", "depth_png_mm", "depth_npy_m", "seg_png", "normals_npy", "tartanair"});
+  formats.push_back("coco_instances");
+  return formats;
+}
+
+nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
+  const auto& k = c.stream.intrinsics;
+  nlohmann::json cam = {{"name", c.stream.name},
+                        {"vehicle", c.vehicle},
+                        {"width", k.width_px},
+                        {"height", k.height_px},
+                        {"fx", k.fx_px},
+                        {"fy", k.fy_px},
+                        {"cx", k.cx_px},
+                        {"cy", k.cy_px},
+                        {"near_m", k.near_m},
+                        {"far_m", k.far_m},
+                        {"distortion",
+                         {{"k1", k.distortion.k1},
+                          {"k2", k.distortion.k2},
+                          {"p1", k.distortion.p1},
+                          {"p2", k.distortion.p2},
+                          {"k3", k.distortion.k3}}},
+                        {"rate_hz", c.stream.rate_hz},
+                        {"mount", MountJson(c.stream)},
+                        {"outputs", OutputsJson(c.outputs)},
+                        {"frames", c.frames}};
+  if (c.outputs.tartanair)
+    cam["tartanair"] = {{"trajectory", c.tartanair.trajectory}, {"side", c.tartanair.side}};
+  return cam;
+}
+
+}  // namespace
+
+nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene& scene,
+                                   const engine::Mission& mission, const engine::World& world,
+                                   const DatasetRecorder& recorder, bool complete,
+                                   double sim_s) {
+  nlohmann::json m;
+  m["format"] = "airis-dataset";
+  m["format_version"] = 1;
+  m["airis_version"] = kVersion;
+  m["complete"] = complete;
+  m["scene"] = {
+      {"file", o.scene_file}, {"sha256", FileHash(o.scene_file)}, {"name", scene.name}, {"seed", scene.seed}};
+  m["mission"] = {{"file", o.mission_file}, {"sha256", FileHash(o.mission_file)}, {"name", mission.name}};
+  m["renderer"] = RendererJson(world);
+  nlohmann::json& cams = m["cameras"] = nlohmann::json::array();
+  std::int64_t frames = 0;
+  for (const auto& c : recorder.cameras()) {
+    cams.push_back(CameraJson(c));
+    frames += c.frames;
+  }
+  nlohmann::json streams =
+      nlohmann::json::array({"truth.csv", "collisions.csv", "mission_events.csv"});
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    for (const auto& s : world.sensors(v))
+      streams.push_back(world.vehicle(v).name() + "." + s->name() + ".csv");
+  }
+  m["streams"] = streams;
+  m["counts"] = {{"frames", frames}, {"simulated_time_s", sim_s}};
+  m["formats"] = FormatsJson(o.outputs);
+  if (o.shard.count > 1) m["shard"] = {{"index", o.shard.index}, {"count", o.shard.count}};
+  nlohmann::json classes = nlohmann::json::array();
+  for (const auto& c : world.scene().classes) classes.push_back({{"id", c.id}, {"name", c.name}});
+  m["classes"] = classes;
+  return m;
+}
+
+}  // namespace airis::tools

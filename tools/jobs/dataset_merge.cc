@@ -1,0 +1,287 @@
+#include "tools/jobs/dataset_merge.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "engine/dataset/contact_sheet.h"
+#include "engine/dataset/csv_reader.h"
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/tartanair.h"
+#include "tools/jobs/output_folder.h"
+#include "tools/jobs/realtime_pacer.h"
+
+namespace airis::tools {
+namespace {
+
+namespace fs = std::filesystem;
+using engine::DatasetIoError;
+using nlohmann::json;
+
+struct Shard {
+  fs::path dir;
+  json manifest;
+  int index = 0;  // 1-based
+};
+
+json ReadJson(const fs::path& path) {
+  const auto bytes = engine::ReadFileBytes(path);
+  try {
+    return json::parse(bytes.begin(), bytes.end());
+  } catch (const json::exception& e) {
+    throw DatasetIoError(path.string() + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+// The manifest without what differs between the shards of one dataset.
+json Common(json m) {
+  m.erase("shard");
+  m["counts"].erase("frames");
+  for (json& c : m["cameras"]) c.erase("frames");
+  return m;
+}
+
+std::vector<Shard> ReadShards(const std::vector<fs::path>& dirs) {
+  if (dirs.empty()) throw DatasetIoError("no shard folders given");
+  std::vector<Shard> shards;
+  for (const fs::path& dir : dirs) {
+    if (!fs::exists(dir / "manifest.json")) {
+      throw DatasetIoError("'" + dir.string() + "' is not a dataset folder (no manifest.json)");
+    }
+    Shard s{dir, ReadJson(dir / "manifest.json")};
+    if (s.manifest.value("format", "") != "airis-dataset") {
+      throw DatasetIoError(dir.string() + "/manifest.json: not an airis dataset manifest");
+    }
+    if (!s.manifest.contains("shard")) {
+      throw DatasetIoError("'" + dir.string() +
+                           "' is not a shard (it was made without --shard K/N)");
+    }
+    s.index = s.manifest["shard"]["index"].get<int>();
+    const int count = s.manifest["shard"]["count"].get<int>();
+    if (!s.manifest.value("complete", false)) {
+      throw DatasetIoError("shard " + std::to_string(s.index) + "/" + std::to_string(count) +
+                           " in '" + dir.string() +
+                           "' is incomplete: finish it with --resume before merging");
+    }
+    shards.push_back(std::move(s));
+  }
+  std::sort(shards.begin(), shards.end(),
+            [](const Shard& a, const Shard& b) { return a.index < b.index; });
+  const int count = shards.front().manifest["shard"]["count"].get<int>();
+  const json common = Common(shards.front().manifest);
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    const Shard& s = shards[i];
+    if (s.manifest["shard"]["count"].get<int>() != count) {
+      throw DatasetIoError("'" + s.dir.string() + "' is a shard of " +
+                           s.manifest["shard"]["count"].dump() + ", '" +
+                           shards.front().dir.string() + "' of " + std::to_string(count));
+    }
+    if (i > 0 && s.index == shards[i - 1].index) {
+      throw DatasetIoError("shard " + std::to_string(s.index) + " given twice: '" +
+                           shards[i - 1].dir.string() + "' and '" + s.dir.string() + "'");
+    }
+    const json mine = Common(s.manifest);
+    for (const auto& [key, value] : common.items()) {
+      if (mine[key] != value) {
+        throw DatasetIoError("'" + s.dir.string() + "' is not a shard of the same dataset as '" +
+                             shards.front().dir.string() + "': its manifest differs in '" + key +
+                             "'");
+      }
+    }
+  }
+  if (static_cast<int>(shards.size()) != count) {
+    std::string missing;
+    std::set<int> have;
+    for (const Shard& s : shards) have.insert(s.index);
+    for (int k = 1; k <= count; ++k) {
+      if (!have.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    }
+    throw DatasetIoError("shard(s) " + missing + " of " + std::to_string(count) + " missing");
+  }
+  return shards;
+}
+
+void CopyNew(const fs::path& from, const fs::path& to) {
+  std::error_code ec;
+  fs::create_directories(to.parent_path(), ec);
+  if (fs::exists(to))
+    throw DatasetIoError(to.string() + " comes from two shards (" + from.string() + ")");
+  if (!fs::copy_file(from, to, ec))
+    throw DatasetIoError("cannot copy " + from.string() + ": " + ec.message());
+}
+
+// Copies every file under shard/`sub` except those `keep_out` names, failing on a file two shards
+// hold.
+void CopyTree(const std::vector<Shard>& shards, const fs::path& sub, const fs::path& out,
+              const std::set<std::string>& keep_out) {
+  for (const Shard& s : shards) {
+    if (!fs::is_directory(s.dir / sub)) continue;
+    for (const auto& e : fs::recursive_directory_iterator(s.dir / sub)) {
+      if (!e.is_regular_file() || keep_out.count(e.path().filename().string())) continue;
+      CopyNew(e.path(), out / sub / fs::relative(e.path(), s.dir / sub));
+    }
+  }
+}
+
+// Rows of one CSV from every shard in time order (first column, integer ns). Rows two shards both
+// hold (a stereo frame that each shard rendered for one eye) are written once; the headers must
+// agree.
+void JoinCsv(const std::vector<Shard>& shards, const fs::path& rel, const fs::path& out) {
+  std::vector<engine::CsvText> parts;
+  bool identical = true;
+  for (const Shard& s : shards) {
+    parts.push_back(engine::ReadCsvText(s.dir / rel));
+    if (parts.back().header != parts.front().header) {
+      throw DatasetIoError(parts.back().path.string() + ": header differs from " +
+                           parts.front().path.string());
+    }
+    identical = identical && parts.back().rows == parts.front().rows;
+  }
+  if (identical) {
+    engine::WriteFileAtomically(out / rel,
+                                engine::JoinCsvText(parts.front().header, parts.front().rows));
+    return;
+  }
+  std::vector<std::pair<std::int64_t, const std::string*>> rows;  // stable within a shard
+  for (const auto& p : parts) {
+    for (std::size_t r = 0; r < p.rows.size(); ++r) rows.emplace_back(p.Integer(r, 0), &p.rows[r]);
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> joined;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    bool seen = false;
+    for (std::size_t j = i; j-- > 0 && rows[j].first == rows[i].first;)
+      seen = seen || *rows[j].second == *rows[i].second;
+    if (!seen) joined.push_back(*rows[i].second);
+  }
+  engine::WriteFileAtomically(out / rel, engine::JoinCsvText(parts.front().header, joined));
+}
+
+// A camera's poses.csv from every shard, in frame order; returns the frame indices.
+std::vector<std::int64_t> JoinPoses(const std::vector<Shard>& shards, const fs::path& rel,
+                                    const fs::path& out) {
+  std::vector<engine::CsvText> parts;
+  std::vector<std::pair<std::int64_t, const std::string*>> rows;
+  parts.reserve(shards.size());
+  for (const Shard& s : shards) parts.push_back(engine::ReadCsvText(s.dir / rel));
+  for (const auto& p : parts) {
+    if (p.header != parts.front().header)
+      throw DatasetIoError(p.path.string() + ": header differs");
+    const std::size_t frame = p.Column("frame");
+    for (std::size_t r = 0; r < p.rows.size(); ++r)
+      rows.emplace_back(p.Integer(r, frame), &p.rows[r]);
+  }
+  std::sort(rows.begin(), rows.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> joined;
+  std::vector<std::int64_t> frames;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i > 0 && rows[i].first == rows[i - 1].first) {
+      throw DatasetIoError(rel.string() + ": frame " + std::to_string(rows[i].first) +
+                           " is in two shards");
+    }
+    joined.push_back(*rows[i].second);
+    frames.push_back(rows[i].first);
+  }
+  engine::WriteFileAtomically(out / rel, engine::JoinCsvText(parts.front().header, joined));
+  return frames;
+}
+
+// One COCO file from the shards': images by id, annotations in frame order numbered from 1 again.
+void JoinCoco(const std::vector<Shard>& shards, const fs::path& rel, const fs::path& out) {
+  json merged;
+  std::vector<json> images;
+  std::vector<std::pair<std::int64_t, json>> annotations;
+  for (const Shard& s : shards) {
+    json coco = ReadJson(s.dir / rel);
+    for (json& im : coco["images"]) images.push_back(std::move(im));
+    for (json& a : coco["annotations"])
+      annotations.emplace_back(a["image_id"].get<std::int64_t>(), std::move(a));
+    if (merged.is_null()) {
+      merged["info"] = coco["info"];
+      merged["categories"] = coco["categories"];
+    }
+  }
+  std::sort(images.begin(), images.end(), [](const json& a, const json& b) {
+    return a["id"].get<std::int64_t>() < b["id"].get<std::int64_t>();
+  });
+  std::stable_sort(annotations.begin(), annotations.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  merged["images"] = images;
+  json& anns = merged["annotations"] = json::array();
+  std::int64_t id = 1;
+  for (auto& [image, a] : annotations) {
+    a["id"] = id++;
+    anns.push_back(std::move(a));
+  }
+  engine::WriteFileAtomically(out / rel, merged.dump(1));
+}
+
+// The preview palette of labels.json (its colours are the palette's, for the classes it lists).
+engine::SegmentationPalette ReadPalette(const fs::path& labels) {
+  engine::SegmentationPalette palette = engine::CalcSegmentationPalette({});
+  const json doc = ReadJson(labels);  // held: a range-for over a temporary's member would dangle
+  for (const json& c : doc["classes"]) {
+    auto& rgb = palette[c["id"].get<std::uint8_t>()];
+    for (std::size_t i = 0; i < 3; ++i) rgb[i] = c["color"][i].get<std::uint8_t>();
+  }
+  return palette;
+}
+
+bool Has(const json& camera, const char* output) {
+  const json& outputs = camera["outputs"];
+  return std::find(outputs.begin(), outputs.end(), output) != outputs.end();
+}
+
+}  // namespace
+
+MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::path& out) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const std::vector<Shard> shards = ReadShards(dirs);
+  PrepareEmptyOutputFolder(out.string(), "--out");
+  const json& first = shards.front().manifest;
+  json manifest = first;
+  manifest.erase("shard");
+  MergeSummary summary;
+  summary.shards = static_cast<int>(shards.size());
+
+  CopyNew(shards.front().dir / "labels.json", out / "labels.json");
+  for (const auto& e : fs::directory_iterator(shards.front().dir)) {
+    if (e.is_regular_file() && e.path().extension() == ".csv")
+      JoinCsv(shards, e.path().filename(), out);
+  }
+  CopyTree(shards, "tartanair", out, {"pose_left.txt", "pose_right.txt"});
+  bool preview = false;
+  for (std::size_t c = 0; c < first["cameras"].size(); ++c) {
+    const json& camera = first["cameras"][c];
+    const std::string name = camera["name"].get<std::string>();
+    CopyTree(shards, name, out, {"poses.csv", "coco_instances.json"});
+    const std::vector<std::int64_t> frames = JoinPoses(shards, fs::path(name) / "poses.csv", out);
+    if (fs::exists(shards.front().dir / name / "coco_instances.json")) {
+      JoinCoco(shards, fs::path(name) / "coco_instances.json", out);
+    }
+    if (camera.contains("tartanair")) {
+      const engine::TartanAirSlot slot{camera["tartanair"]["trajectory"].get<std::string>(),
+                                       camera["tartanair"]["side"].get<std::string>()};
+      engine::WriteTartanAirPoses(out / name / "poses.csv", engine::TartanAirPosePath(out, slot));
+    }
+    manifest["cameras"][c]["frames"] = static_cast<std::int64_t>(frames.size());
+    summary.frames += static_cast<std::int64_t>(frames.size());
+    if (!preview && !frames.empty() && Has(camera, "rgb") && Has(camera, "depth_png") &&
+        Has(camera, "segmentation")) {
+      engine::WriteContactSheet(out / name, frames, camera["near_m"].get<float>(),
+                                ReadPalette(out / "labels.json"), out / "preview.png");
+      preview = true;
+    }
+  }
+  manifest["counts"]["frames"] = summary.frames;
+  engine::WriteFileAtomically(out / "manifest.json", manifest.dump(1));
+  summary.wall_s = WallSecondsSince(wall_start);
+  return summary;
+}
+
+}  // namespace airis::tools

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/clock.h"
+#include "engine/dataset/csv_writer.h"
+#include "engine/dataset/dataset_writer.h"
+#include "engine/mission/mission.h"
+#include "engine/world/image_sensor.h"
+#include "engine/world/world.h"
+
+namespace airis::tools {
+
+/// Records the frames of a world's image sensors into a dataset folder while a mission runs
+/// (docs/dataset-format.md): frames go to a DatasetWriter (worker threads, bounded queue), poses to
+/// <camera>/poses.csv; Finish writes coco_instances.json per camera, labels.json and preview.png.
+/// Each image stream is one dataset camera (a stereo pair's are <name>_left and <name>_right).
+/// Recording is on between the mission's capture steps. Sensors render only the frames this run
+/// records: a shard (K of N) records frame indices i with i % N == K - 1 of every camera, and skips
+/// rendering the others. It knows sensors only through engine::ImageSensor.
+class DatasetRecorder {
+ public:
+  struct Options {
+    std::filesystem::path root;
+    bool resume = false;               ///< adopt frames an interrupted run already wrote
+    std::vector<std::string> cameras;  ///< record only these (empty: all)
+    engine::DatasetOutputs outputs;    ///< which files per frame
+    engine::DatasetWriter::Options writer;
+    int shard_index = 0;  ///< 0-based: this run records frames i % shard_count == shard_index
+    int shard_count = 1;
+  };
+  /// A dataset camera as the manifest describes it.
+  struct CameraInfo {
+    engine::ImageStream stream;      ///< name, intrinsics, rate, mount
+    std::string vehicle;
+    engine::DatasetOutputs outputs;  ///< the files it writes per frame
+    engine::TartanAirSlot tartanair;  ///< its place in the TartanAir layout (outputs.tartanair)
+    std::int64_t frames = 0;
+  };
+
+  /// Subscribes to the cameras. Throws ConfigError("--cameras") naming an unknown camera.
+  DatasetRecorder(engine::World& world, const Options& options);
+  ~DatasetRecorder();
+
+  /// Starts or stops recording (mission capture step); rate_hz > 0 subsamples the cameras' frames.
+  void SetCapture(const engine::CaptureStep& capture);
+  /// Waits for every frame, writes the per-camera COCO files, labels.json and preview.png.
+  void Finish();
+
+  std::int64_t frames_written() const;
+  const std::vector<CameraInfo>& cameras() const { return info_; }
+
+ private:
+  struct Recording;
+  /// Before dataset camera `camera` renders at `now_ns`: numbers the frame if it is recorded; true
+  /// when this run writes it.
+  bool TakeFrame(std::size_t camera, engine::TimeNs now_ns);
+  void OnFrame(std::size_t camera, const engine::CameraFrame& frame);
+  void WritePreview() const;
+  void WriteLabels() const;
+
+  engine::World& world_;
+  Options options_;
+  engine::DatasetWriter writer_;
+  std::vector<CameraInfo> info_;
+  std::vector<std::unique_ptr<Recording>> recordings_;
+  std::vector<engine::Sensor*> image_sensors_;  // every one of the world (switched with recording)
+  bool recording_ = false;
+  std::vector<std::string> only_;  // capture-step camera filter (empty: all)
+  double capture_rate_hz_ = 0.0;
+};
+
+}  // namespace airis::tools

@@ -1,0 +1,50 @@
+#include "tools/jobs/run_job.h"
+
+#include <memory>
+
+#include "engine/dataset/telemetry_recorder.h"
+#include "scenes/mission_file.h"
+#include "tools/jobs/output_folder.h"
+#include "tools/jobs/realtime_pacer.h"
+
+namespace airis::tools {
+
+RunJobResult RunMissionJob(const RunJobOptions& o,
+                           const std::function<void(const JobProgress&)>& progress) {
+  if (o.realtime && !(*o.realtime > 0.0)) {
+    throw engine::ConfigError({}, "--realtime", "must be > 0");
+  }
+  if (!(o.truth_rate_hz > 0.0)) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+  SimulationJob job(o.scene);
+  const engine::Mission mission = scenes::LoadMissionFile(o.mission);
+  job.MissionVehicle(mission);  // a mission without its vehicle fails before anything is written
+  job.DisableImageSensors();
+
+  std::unique_ptr<engine::TelemetryRecorder> telemetry;
+  if (!o.out.empty()) {
+    PrepareEmptyOutputFolder(o.out, "--out");
+    telemetry = std::make_unique<engine::TelemetryRecorder>(job.world(), o.out, o.truth_rate_hz);
+    telemetry->OnTick(0);
+  }
+  const RealtimePacer pacer(o.realtime.value_or(1.0));
+  MissionFlight flight;
+  flight.until_ns = o.until_ns;
+  flight.progress = progress;
+  flight.callbacks.after_tick = [&](engine::TimeNs now_ns) {
+    if (telemetry) telemetry->OnTick(now_ns);
+    if (o.realtime) pacer.WaitFor(now_ns);
+  };
+  flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
+    if (telemetry) telemetry->RecordMissionEvent(e.time_ns, e.step_index, e.step_kind, e.what);
+  };
+  RunJobResult r;
+  r.mission = job.FlyMission(mission, flight);
+  if (telemetry) {
+    telemetry->Close();
+    r.collisions = telemetry->collision_count();
+  }
+  r.wall_s = job.wall_s();
+  return r;
+}
+
+}  // namespace airis::tools

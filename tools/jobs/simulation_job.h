@@ -1,0 +1,97 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "engine/core/clock.h"
+#include "engine/mission/mission.h"
+#include "engine/mission/mission_runner.h"
+#include "engine/mission/mission_session.h"
+#include "engine/world/simulation.h"
+#include "scenes/scene.h"
+
+namespace airis::tools {
+
+/// Where a job's scene comes from, and what replaces the file's own settings.
+struct SceneSource {
+  std::string path;  ///< the scene file (YAML); with `text`, the name used in messages
+  std::string text;  ///< YAML text used instead of reading `path` (the Python API, tests)
+  std::optional<std::uint64_t> seed;  ///< replaces scene.seed before any generator runs
+};
+
+/// Where a running job is (for progress lines). Fields a job does not track stay at their defaults.
+struct JobProgress {
+  int step = 0;             ///< mission step being flown, 1-based
+  int steps = 0;            ///< steps in the mission
+  std::string step_kind;    ///< "takeoff", "survey", ...
+  double simulated_s = 0;   ///< simulated time so far
+  double wall_s = 0;        ///< wall time since the job started
+  engine::Vec3 position_W = engine::Vec3::Zero();  ///< the mission vehicle, world NED (m)
+  std::int64_t frames = 0;  ///< dataset frames written so far
+  /// Wall seconds still to go, from the share of the mission's nominal duration flown so far; < 0
+  /// while unknown (the first 2% and past the nominal end).
+  double eta_s = -1;
+};
+
+/// How a mission flight ended.
+struct MissionOutcome {
+  engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;  ///< kRunning: --until
+  std::string failure;        ///< why it failed ("file:line: step 3 (goto): ...")
+  int steps_done = 0;
+  int steps = 0;
+  double distance_flown_m = 0.0;
+  double max_tracking_error_m = 0.0;
+  double simulated_s = 0.0;   ///< the clock at the end
+  bool succeeded() const { return state == engine::MissionRunner::State::kSucceeded; }
+};
+
+/// What a job does around the mission's ticks.
+struct MissionFlight {
+  engine::MissionSession::Callbacks callbacks;  ///< after_tick, on_capture, on_event, ...
+  engine::TimeNs until_ns = std::numeric_limits<engine::TimeNs>::max();  ///< stop early
+  /// Called about every `progress_every_ns` of simulated time (between slices of ticks).
+  std::function<void(const JobProgress&)> progress;
+  engine::TimeNs progress_every_ns = 50'000'000;
+};
+
+/// What every job starts from (`airis run`, `airis dataset`, `airis px4`, the Python API): the
+/// scene loaded with its seed applied before generators run, the World built from it and the
+/// Simulation that steps it. Its wall clock starts at construction, for progress and summaries.
+class SimulationJob {
+ public:
+  /// Loads and builds. Throws ConfigError naming file, line and key for bad input.
+  explicit SimulationJob(const SceneSource& source);
+
+  const scenes::Scene& scene() const { return scene_; }
+  engine::Simulation& simulation() { return *simulation_; }
+  const engine::Simulation& simulation() const { return *simulation_; }
+  engine::World& world() { return simulation_->world(); }
+  const engine::World& world() const { return simulation_->world(); }
+
+  /// Index of the vehicle that flies `mission`: the one it names, or the scene's first. Throws
+  /// ConfigError naming the mission file when there is none (listing the scene's vehicles).
+  std::size_t MissionVehicle(const engine::Mission& mission) const;
+
+  /// Switches off every image sensor (a job that records no images does not render).
+  void DisableImageSensors();
+
+  /// Flies `mission` with its vehicle until it succeeds, fails or the clock reaches
+  /// `flight.until_ns`. The mission's random stream is the scene seed's "mission" stream. Throws
+  /// SimulationError (prefixed with the step) when the simulation diverges.
+  MissionOutcome FlyMission(const engine::Mission& mission, const MissionFlight& flight);
+
+  /// Wall seconds since the job was constructed.
+  double wall_s() const;
+
+ private:
+  std::chrono::steady_clock::time_point wall_start_;
+  scenes::Scene scene_;
+  std::unique_ptr<engine::Simulation> simulation_;
+};
+
+}  // namespace airis::tools
