@@ -3,30 +3,11 @@
 #include <algorithm>
 #include <utility>
 
+#include "scenes/mission_step_kinds.h"
 #include "scenes/yaml_reader.h"
 
 namespace airis::scenes {
 namespace {
-
-using engine::MissionStepSpec;
-
-/// The file spellings of all step kinds, in variant order.
-template <std::size_t... I>
-std::vector<std::string> StepKindNames(std::index_sequence<I...>) {
-  return {std::string(engine::StepKindName(MissionStepSpec(std::in_place_index<I>)))...};
-}
-
-/// Reads the step of kind index `index` from `value` into a MissionStepSpec.
-template <std::size_t... I>
-MissionStepSpec ReadStepOfKind(std::size_t index, const YamlReader& reader, const YAML::Node& value,
-                               const YAML::Mark& mark, const std::string& key_path,
-                               std::index_sequence<I...>) {
-  MissionStepSpec spec;
-  // Exactly one alternative matches `index`; it is default-constructed, then read field by field.
-  ((index == I ? (spec.emplace<I>(), reader.ReadStruct(value, mark, key_path, std::get<I>(spec)), 0) : 0),
-   ...);
-  return spec;
-}
 
 struct MissionHeader {
   std::string name;
@@ -52,8 +33,11 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
   if (!steps) reader.Fail(root.Mark(), "steps", "missing: a mission needs a list of steps");
   reader.RequireSequence(steps, steps.Mark(), "steps", "a list of steps");
 
-  constexpr auto kKinds = std::make_index_sequence<std::variant_size_v<MissionStepSpec>>();
-  static const std::vector<std::string> kind_names = StepKindNames(kKinds);
+  static const std::vector<std::string> kind_names = [] {
+    std::vector<std::string> names;
+    for (const MissionStepKind& k : MissionStepKinds()) names.emplace_back(k.name);
+    return names;
+  }();
   engine::Mission mission;
   mission.name = header.name;
   mission.vehicle = header.vehicle;
@@ -79,8 +63,8 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
       reader.Fail(mark, path, problem + "; steps are " + all);
     }
     const auto index = static_cast<std::size_t>(found - kind_names.begin());
-    mission.steps.push_back({ReadStepOfKind(index, reader, entry->second, mark, path + "." + kind, kKinds),
-                             reader.Where(mark)});
+    mission.steps.push_back(
+        MissionStepKinds()[index].read(reader, entry->second, mark, path + "." + kind));
   }
   if (mission.steps.empty()) reader.Fail(steps.Mark(), "steps", "a mission needs at least one step");
   return mission;

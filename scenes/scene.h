@@ -14,23 +14,28 @@
 #include "engine/core/geodetic.h"
 #include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
-#include "scenes/vehicle_config.h"
-#include "vehicles/multirotor/multirotor_config.h"
+#include "engine/world/world.h"
+#include "engine/physics/rigid_body_state.h"
+#include "scenes/sensor_spec.h"
+#include "scenes/vehicle_spec.h"
 
 namespace airis::scenes {
 
 using engine::Vec3;
 
-/// A vehicle as the scene describes it: the preset's airframe with the scene's overrides applied,
-/// its start pose and its sensors (configs read through their owners' Visit).
+/// A vehicle as the scene describes it: its kind's config (the preset with the scene's overrides
+/// applied), its start state and its sensors (configs read through their owners' Visit).
 struct VehicleDescription {
   std::string name;
-  std::string preset;
-  Vec3 p_W = Vec3::Zero();              ///< start position of the centre of mass, world NED (m)
-  double yaw_rad = 0.0;                 ///< start heading, clockwise from north (rad)
-  engine::SourceLocation where;         ///< the entry in its scene file
-  std::string key_path;                 ///< e.g. `vehicles[0]`
-  vehicles::MultirotorConfig airframe;  ///< preset + overrides, validated
+  std::string kind;    ///< "multirotor"
+  std::string preset;  ///< "quad_x", ...
+  /// Start state: position of the centre of mass and velocity in world NED, attitude body FRD ->
+  /// NED, angular velocity in body axes. With on_ground, the height rests the body on the surface.
+  engine::RigidBodyState start;
+  bool on_ground = false;                    ///< starts resting on the surface below it
+  engine::SourceLocation where;              ///< the entry in its scene file
+  std::string key_path;                      ///< e.g. `vehicles[0]`
+  std::shared_ptr<const VehicleSpec> spec;   ///< kind + preset + overrides, validated
   std::vector<SensorDescription> sensors;
 };
 
@@ -54,6 +59,7 @@ struct Scene {
   std::uint64_t seed = 1;
   engine::GeodeticPosition origin;  ///< of the world NED frame
   engine::EnvironmentConfig environment;
+  engine::PhysicsConfig physics;  ///< tick rate and contact solver (the `physics:` block)
   engine::StaticScene static_scene;
   std::vector<VehicleDescription> vehicles;
   std::vector<GeneratedSummary> generated;

@@ -212,9 +212,19 @@ void GeneratorConfig::Validate() const {
                : "expected one generator: city or forest");
 }
 
-void StartPoseConfig::Validate() const {
+void StartStateConfig::Validate() const {
   RequireVectorFinite("position_m", position_m);
+  RequireInRange("roll_deg", roll_deg, -180.0, 180.0);
+  RequireInRange("pitch_deg", pitch_deg, -90.0, 90.0);
   RequireFinite("yaw_deg", yaw_deg);
+  RequireVectorFinite("velocity_ned_m_s", velocity_ned_m_s);
+  RequireVectorFinite("angular_velocity_frd_rad_s", angular_velocity_frd_rad_s);
+  if (on_ground) {
+    engine::Require(velocity_ned_m_s.isZero() && angular_velocity_frd_rad_s.isZero(), "on_ground",
+                    "a vehicle resting on the ground starts at rest (velocities must be 0)");
+    engine::Require(roll_deg == 0.0 && pitch_deg == 0.0, "on_ground",
+                    "a vehicle resting on the ground starts level (roll_deg and pitch_deg 0)");
+  }
 }
 
 }  // namespace airis::scenes

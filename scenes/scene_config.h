@@ -402,14 +402,27 @@ struct GeneratorConfig {
 };
 
 /// Start pose of a vehicle.
-struct StartPoseConfig {
+struct StartStateConfig {
   Eigen::Vector3d position_m = Eigen::Vector3d(0.0, 0.0, -0.2);
+  double roll_deg = 0.0;
+  double pitch_deg = 0.0;
   double yaw_deg = 0.0;
+  Eigen::Vector3d velocity_ned_m_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity_frd_rad_s = Eigen::Vector3d::Zero();
+  bool on_ground = false;
 
   template <class V>
   void Visit(V& v) {
     v.Field("position_m", position_m, "start position of the centre of mass, world NED (m)");
+    v.Field("roll_deg", roll_deg, "start roll (deg), applied last of yaw, pitch, roll");
+    v.Field("pitch_deg", pitch_deg, "start pitch (deg, nose up positive)");
     v.Field("yaw_deg", yaw_deg, "start heading, clockwise from north (deg)");
+    v.Field("velocity_ned_m_s", velocity_ned_m_s, "start velocity, world NED (m/s)");
+    v.Field("angular_velocity_frd_rad_s", angular_velocity_frd_rad_s,
+            "start angular velocity in body axes FRD (rad/s)");
+    v.Field("on_ground", on_ground,
+            "true: the vehicle starts resting on the surface below position_m (its height is "
+            "taken from that surface; touching it is no collision)");
   }
   void Validate() const;
 };

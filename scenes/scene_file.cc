@@ -71,6 +71,10 @@ class DocumentReader {
       doc_->ground = Sourced<GroundConfig>{*config.ground,          file, "ground", root["ground"],
                                            KeyMark(root, "ground"), 0};
     }
+    if (config.physics) {
+      doc_->physics = Sourced<engine::PhysicsConfig>{
+          *config.physics, file, "physics", root["physics"], KeyMark(root, "physics"), 0};
+    }
     AppendEntries(config.classes, file, "classes", &doc_->classes);
     AppendEntries(config.objects, file, "objects", &doc_->objects);
     AppendEntries(config.generators, file, "generators", &doc_->generators);

@@ -13,29 +13,33 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/world/world.h"
 #include "scenes/scene_config.h"
-#include "scenes/vehicle_config.h"
+#include "scenes/sensor_kinds.h"
 #include "scenes/yaml_reader.h"
 
 namespace airis::scenes {
 
-/// An entry of `vehicles`. `overrides` stays raw YAML until the preset is known: it is then read
-/// over the preset's MultirotorConfig (so only the keys given change).
+/// An entry of `vehicles`. `overrides` stays raw YAML until the kind and preset are known: it is
+/// then read over the preset's config (so only the keys given change).
 struct VehicleEntryConfig {
   std::string name;
+  std::string kind = "multirotor";
   std::string preset;
-  StartPoseConfig start;
+  StartStateConfig start;
   YAML::Node overrides;
-  std::vector<SensorEntryConfig> sensors;
+  std::vector<SensorEntry> sensors;
 
   template <class V>
   void Visit(V& v) {
     v.Field("name", name, "unique vehicle name (logs, random streams vehicles/NAME/...)");
-    v.Field("preset", preset, "airframe preset: quad_x, quad_plus, hexa_x, octo_x or tilt_rotor");
-    v.Field("start", start, "start pose");
+    v.Field("kind", kind, "vehicle kind: multirotor");
+    v.Field("preset", preset,
+            "airframe preset of the kind: quad_x, quad_plus, hexa_x, octo_x or tilt_rotor "
+            "(vehicles/presets/PRESET.yaml)");
+    v.Field("start", start, "start state");
     v.Field("overrides", overrides,
-            "airframe keys to change (MultirotorConfig, as in vehicles/presets/PRESET.yaml); a "
-            "list replaces");
+            "airframe keys to change (as in vehicles/presets/PRESET.yaml); a list replaces");
     v.Field("sensors", sensors, "sensors with their configs and mounts");
   }
   void Validate() const;
@@ -46,6 +50,7 @@ struct SceneFileConfig {
   std::vector<std::string> include;
   std::optional<SceneSettingsConfig> scene;
   std::optional<GroundConfig> ground;
+  std::optional<engine::PhysicsConfig> physics;
   std::vector<ClassConfig> classes;
   std::vector<ObjectConfig> objects;
   std::vector<GeneratorConfig> generators;
@@ -57,6 +62,8 @@ struct SceneFileConfig {
     v.Field("scene", scene,
             "name, seed, origin, environment, lighting (this file's wins over includes)");
     v.Field("ground", ground, "ground plane (this file's wins over includes)");
+    v.Field("physics", physics,
+            "tick rate and contact solver settings (this file's wins over includes)");
     v.Field("classes", classes, "semantic classes added to the built-in table");
     v.Field("objects", objects, "placed meshes and primitives");
     v.Field("generators", generators, "procedural cities and forests, expanded at load");
@@ -144,6 +151,7 @@ struct SceneDocument {
   std::vector<std::shared_ptr<const SourceFile>> files;
   std::optional<Sourced<SceneSettingsConfig>> scene;
   std::optional<Sourced<GroundConfig>> ground;
+  std::optional<Sourced<engine::PhysicsConfig>> physics;
   std::vector<Sourced<ClassConfig>> classes;
   std::vector<Sourced<ObjectConfig>> objects;
   std::vector<Sourced<GeneratorConfig>> generators;

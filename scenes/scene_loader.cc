@@ -12,7 +12,7 @@
 #include "scenes/scene.h"
 #include "engine/scene/static_scene_builder.h"
 #include "scenes/scene_file.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
 
 namespace airis::scenes {
 
@@ -53,6 +53,7 @@ class SceneAssembler {
     s.origin = {DegToRad(settings.origin.latitude_deg), DegToRad(settings.origin.longitude_deg),
                 settings.origin.altitude_m};
     s.environment = settings.environment;
+    if (doc_.physics) s.physics = doc_.physics->config;
 
     for (const auto& c : doc_.classes) DefineClass(c);
     builder_.scene().lighting = MakeLighting(settings, s.origin.latitude_rad);
@@ -269,26 +270,31 @@ class SceneAssembler {
     }
     VehicleDescription v;
     v.name = c.name;
+    v.kind = c.kind;
     v.preset = c.preset;
-    v.p_W = c.start.position_m;
-    v.yaw_rad = DegToRad(c.start.yaw_deg);
+    v.start.p_W = c.start.position_m;
+    v.start.q_WB = engine::QuatFromEuler({DegToRad(c.start.roll_deg), DegToRad(c.start.pitch_deg),
+                                          DegToRad(c.start.yaw_deg)});
+    v.start.v_W = c.start.velocity_ned_m_s;
+    v.start.w_B = c.start.angular_velocity_frd_rad_s;
+    v.on_ground = c.start.on_ground;
     v.where = entry.Where();
     v.key_path = entry.key_path;
-    v.airframe = ReadAirframe(entry);
+    v.spec = ReadVehicleSpec(entry);
     for (std::size_t i = 0; i < c.sensors.size(); ++i) {
-      SensorDescription sensor = DescribeSensor(c.sensors[i]);
+      const SensorEntry& e = c.sensors[i];
       for (const auto& other : v.sensors) {
-        if (other.name == sensor.name) {
-          entry.Fail("sensors[" + std::to_string(i) + "]", "duplicate sensor name '" + sensor.name +
+        if (other.name == e.name) {
+          entry.Fail("sensors[" + std::to_string(i) + "]", "duplicate sensor name '" + e.name +
                                                                "' on vehicle '" + c.name +
                                                                "' (name one with `name:`)");
         }
       }
-      v.sensors.push_back(std::move(sensor));
+      v.sensors.push_back({e.name, e.spec});
     }
-    if (has_ground && v.p_W.z() > 0.0) {
+    if (has_ground && v.start.p_W.z() > 0.0) {
       entry.Fail("start.position_m", "vehicle '" + c.name + "' starts below the ground (z = " +
-                                         engine::FormatNumber(v.p_W.z()) +
+                                         engine::FormatNumber(v.start.p_W.z()) +
                                          " m; NED z is down, so heights are negative)");
     }
     const engine::StaticScene& scene = builder_.scene();
@@ -296,7 +302,7 @@ class SceneAssembler {
       const engine::StaticObject& o = scene.objects[i];
       if (o.collision == engine::CollisionShape::kNone || o.instance_id == ground_instance_)
         continue;
-      const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.p_W).cast<float>();
+      const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.start.p_W).cast<float>();
       if (!scene.models[o.model].bounds.contains(p_O)) continue;
       const engine::SemanticClass* cls = scene.FindClass(o.class_id);
       entry.Fail("start.position_m", "vehicle '" + c.name + "' starts inside object '" + o.name +
@@ -306,24 +312,30 @@ class SceneAssembler {
     return v;
   }
 
-  /// The preset's airframe with `overrides` read over it (only the keys given change).
-  static vehicles::MultirotorConfig ReadAirframe(const Sourced<VehicleEntryConfig>& entry) {
+  /// The kind's config: its preset with `overrides` read over it (only the keys given change).
+  static std::shared_ptr<const VehicleSpec> ReadVehicleSpec(
+      const Sourced<VehicleEntryConfig>& entry) {
     const VehicleEntryConfig& c = entry.config;
-    const auto preset = engine::ParseEnum<vehicles::AirframePreset>(c.preset);
+    const VehicleKind* kind = FindVehicleKind(c.kind);
+    if (!kind) {
+      std::vector<std::string> names;
+      for (const VehicleKind& k : VehicleKinds()) names.emplace_back(k.name);
+      std::string problem = "unknown vehicle kind '" + c.kind + "'";
+      if (const auto close = engine::ClosestMatch(c.kind, names))
+        problem += " (did you mean '" + *close + "'?)";
+      entry.Fail("kind", problem + "; kinds: " + JoinNames(names));
+    }
+    const vehicles::PresetFile* preset = FindPreset(*kind, c.preset);
     if (!preset) {
       std::vector<std::string> names;
-      for (const auto& n : EnumNames(vehicles::AirframePreset{})) names.emplace_back(n.name);
+      for (const vehicles::PresetFile& p : kind->presets) names.emplace_back(p.name);
       std::string problem = "unknown preset '" + c.preset + "'";
       if (const auto close = engine::ClosestMatch(c.preset, names))
         problem += " (did you mean '" + *close + "'?)";
       entry.Fail("preset", problem + "; presets: " + JoinNames(names));
     }
-    vehicles::MultirotorConfig airframe = vehicles::MakeAirframe(*preset);
-    if (c.overrides.IsDefined() && !c.overrides.IsNull()) {
-      YamlReader(entry.file->path)
-          .ReadStruct(c.overrides, entry.MarkOf("overrides"), entry.PathOf("overrides"), airframe);
-    }
-    return airframe;
+    return kind->read(*preset, YamlReader(entry.file->path), c.overrides, entry.MarkOf("overrides"),
+                      entry.PathOf("overrides"));
   }
 
   SceneDocument doc_;

@@ -2,6 +2,8 @@
 
 #include "scenes/scene_file.h"
 #include "scenes/schema.h"
+#include "scenes/sensor_kinds.h"
+#include "scenes/vehicle_kinds.h"
 
 namespace airis::scenes {
 
@@ -25,11 +27,23 @@ std::vector<SchemaSection> SceneSchemaSections() {
   out.push_back({"top level", FieldTableMarkdown(top)});
   out.push_back(Section<SceneSettingsConfig>("scene", "scene."));
   out.push_back(Section<GroundConfig>("ground", "ground."));
+  out.push_back(Section<engine::PhysicsConfig>("physics", "physics."));
   out.push_back(Section<ClassConfig>("classes[]", "classes[]."));
   out.push_back(Section<ObjectConfig>("objects[]", "objects[]."));
   out.push_back(Section<CityConfig>("generators[].city", "generators[].city."));
   out.push_back(Section<ForestConfig>("generators[].forest", "generators[].forest."));
   out.push_back(Section<VehicleEntryConfig>("vehicles[]", "vehicles[]."));
+  // Each registered kind's own keys: the airframe of a vehicle kind (its presets and overrides),
+  // the config of a sensor kind.
+  for (const VehicleKind& k : VehicleKinds()) {
+    const std::string title = "vehicles[].overrides (" + std::string(k.name) + ")";
+    out.push_back({title, FieldTableMarkdown(k.fields(), "vehicles[].overrides.")});
+  }
+  for (const SensorKind& k : SensorKinds()) {
+    const std::string prefix = "vehicles[].sensors[]." + std::string(k.name) + ".";
+    out.push_back({"vehicles[].sensors[]." + std::string(k.name),
+                   FieldTableMarkdown(k.fields(), prefix)});
+  }
   return out;
 }
 

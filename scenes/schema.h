@@ -73,6 +73,8 @@ std::string SchemaTypeName() {
     return SchemaTypeName<typename T::value_type>() + ", optional";
   } else if constexpr (HasVisit<T>) {
     return "map";
+  } else if constexpr (requires { T::kSchemaType; }) {
+    return T::kSchemaType;
   } else {
     return "any YAML";
   }

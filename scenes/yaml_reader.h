@@ -61,6 +61,13 @@ concept HasValidate = requires(const T& t) {
   t.Validate();
 };
 
+/// A type that reads itself from a node (a registry-driven entry such as a sensor of any kind).
+template <class T, class R>
+concept ReadsItself = requires(T& t, const R& r, const YAML::Node& n, const YAML::Mark& m,
+                               const std::string& k) {
+  t.ReadFromYaml(r, n, m, k);
+};
+
 /// "a.b" from "a" and "b"; "b" when the prefix is empty.
 inline std::string JoinKey(const std::string& prefix, const std::string& key) {
   return prefix.empty() ? key : prefix + "." + key;
@@ -255,6 +262,8 @@ void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark,
   } else if constexpr (IsStdOptional<T>::value) {
     if (!out) out.emplace();
     ReadValue(node, mark, key_path, *out);
+  } else if constexpr (yaml_detail::ReadsItself<T, YamlReader>) {
+    out.ReadFromYaml(*this, node, mark, key_path);
   } else if constexpr (yaml_detail::HasVisit<T>) {
     ReadStruct(node, mark, key_path, out);
   } else {

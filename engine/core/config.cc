@@ -19,6 +19,12 @@ void RequireFinite(std::string_view field, double value) {
   }
 }
 
+void RequireFinite(std::string_view field, std::span<const double> components) {
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    RequireFinite(std::string(field) + "[" + std::to_string(i) + "]", components[i]);
+  }
+}
+
 void RequirePositive(std::string_view field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InvalidField(std::string(field), "must be > 0 (got " + FormatNumber(value) + ")");

@@ -16,6 +16,7 @@
 // messages are all driven by it. A field may be a number, bool, string, an enum with EnumNames (below), an
 // Eigen vector, a std::vector or std::optional of those, or another struct with its own Visit.
 
+#include <Eigen/Core>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -76,6 +77,12 @@ void RequirePositive(std::string_view field, double value);     ///< finite and 
 void RequireNonNegative(std::string_view field, double value);  ///< finite and >= 0
 void RequireInRange(std::string_view field, double value, double lo, double hi);  ///< lo <= v <= hi
 void Require(bool condition, std::string_view field, std::string_view problem);
+/// Every component finite; the message names it as `field[i]`.
+void RequireFinite(std::string_view field, std::span<const double> components);
+template <int N>
+void RequireFinite(std::string_view field, const Eigen::Matrix<double, N, 1>& v) {
+  RequireFinite(field, std::span<const double>(v.data(), static_cast<std::size_t>(N)));
+}
 
 /// The candidate closest to `word` by edit distance, if it is close enough to be a plausible typo
 /// (distance at most max(2, |word| / 3)). For "unknown key 'rate_hx' (did you mean 'rate_hz'?)".

@@ -22,6 +22,23 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
                    "w_z_rad_s", "a_n_m_s2", "a_e_m_s2", "a_d_m_s2", "latitude_deg", "longitude_deg",
                    "altitude_m"}));
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    std::vector<std::string> cols = {
+        "mode",
+        "position_setpoint_ned_x_m", "position_setpoint_ned_y_m", "position_setpoint_ned_z_m",
+        "velocity_setpoint_ned_x_m_s", "velocity_setpoint_ned_y_m_s", "velocity_setpoint_ned_z_m_s",
+        "acceleration_setpoint_ned_x_m_s2", "acceleration_setpoint_ned_y_m_s2",
+        "acceleration_setpoint_ned_z_m_s2", "speed_limit_m_s", "yaw_setpoint_deg",
+        "attitude_setpoint_frd_to_ned_w", "attitude_setpoint_frd_to_ned_x",
+        "attitude_setpoint_frd_to_ned_y", "attitude_setpoint_frd_to_ned_z",
+        "rates_setpoint_frd_x_rad_s", "rates_setpoint_frd_y_rad_s", "rates_setpoint_frd_z_rad_s",
+        "thrust_fraction"};
+    for (int a = 0; a < world.vehicle(v).actuator_count(); ++a) {
+      cols.push_back("actuator_" + std::to_string(a));
+    }
+    commands_.push_back(std::make_unique<CsvWriter>(
+        dir / (world.vehicle(v).name() + ".commands.csv"), TimeColumns(cols)));
+  }
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& sensor : world.sensors(v)) {
       std::vector<std::string> cols(sensor->columns().begin(), sensor->columns().end());
       sensors_.push_back(std::make_unique<CsvWriter>(
@@ -71,7 +88,25 @@ void TelemetryRecorder::OnTick(TimeNs now_ns) {
     for (int i = 0; i < 3; ++i) out.Add(a.a_W[i]);
     out.Add(RadToDeg(g.latitude_rad)).Add(RadToDeg(g.longitude_rad)).Add(g.altitude_m);
     out.EndRow();
+    WriteCommandRow(v, now_ns);
   }
+}
+
+void TelemetryRecorder::WriteCommandRow(std::size_t v, TimeNs now_ns) {
+  const Vehicle& vehicle = world_.vehicle(v);
+  const VehicleCommand& c = vehicle.command();
+  CsvWriter& out = *commands_[v];
+  out.Add(static_cast<std::int64_t>(now_ns)).Add(ToSeconds(now_ns));
+  out.Add(std::string(ToString(c.mode)));
+  for (int i = 0; i < 3; ++i) out.Add(c.position_W[i]);
+  for (int i = 0; i < 3; ++i) out.Add(c.velocity_W[i]);
+  for (int i = 0; i < 3; ++i) out.Add(c.acceleration_W[i]);
+  out.Add(c.speed_limit_m_s).Add(RadToDeg(c.yaw_rad));
+  out.Add(c.attitude_WB.w()).Add(c.attitude_WB.x()).Add(c.attitude_WB.y()).Add(c.attitude_WB.z());
+  for (int i = 0; i < 3; ++i) out.Add(c.rates_B[i]);
+  out.Add(c.thrust_fraction);
+  for (double u : vehicle.actuator_commands()) out.Add(u);
+  out.EndRow();
 }
 
 void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index, const std::string& step_kind,
@@ -83,6 +118,7 @@ void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index, const
 
 void TelemetryRecorder::Close() {
   truth_->Close();
+  for (auto& c : commands_) c->Close();
   for (auto& s : sensors_) s->Close();
   collisions_->Close();
   events_->Close();

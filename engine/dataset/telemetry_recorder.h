@@ -13,6 +13,8 @@ namespace airis::engine {
 
 /// Writes a run's telemetry as CSV files in one folder (docs/dataset-format.md, "Streams"):
 ///   truth.csv             ground truth of every vehicle at `truth_rate_hz`
+///   <vehicle>.commands.csv the command each vehicle follows (mode, setpoints) and its actuator
+///                          commands, at `truth_rate_hz`
 ///   <vehicle>.<sensor>.csv every sample of every sensor, at the sensor's own rate
 ///   collisions.csv        every collision event
 ///   mission_events.csv    every mission step start / finish / failure
@@ -33,9 +35,12 @@ class TelemetryRecorder {
   std::int64_t collision_count() const { return collisions_->rows(); }
 
  private:
+  void WriteCommandRow(std::size_t vehicle, TimeNs now_ns);
+
   World& world_;
   RateSchedule truth_schedule_;
   std::unique_ptr<CsvWriter> truth_;
+  std::vector<std::unique_ptr<CsvWriter>> commands_;  // per vehicle
   std::vector<std::unique_ptr<CsvWriter>> sensors_;
   std::unique_ptr<CsvWriter> collisions_;
   std::unique_ptr<CsvWriter> events_;

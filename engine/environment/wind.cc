@@ -45,9 +45,7 @@ std::span<const EnumName<GustModel>> EnumNames(GustModel) {
 }
 
 void WindConfig::Validate() const {
-  RequireFinite("mean_ned_m_s[0]", mean_ned_m_s.x());
-  RequireFinite("mean_ned_m_s[1]", mean_ned_m_s.y());
-  RequireFinite("mean_ned_m_s[2]", mean_ned_m_s.z());
+  RequireFinite("mean_ned_m_s", mean_ned_m_s);
   RequireNonNegative("gust_sigma_m_s", gust_sigma_m_s);
   RequirePositive("gust_correlation_s", gust_correlation_s);
   RequirePositive("dryden_length_m", dryden_length_m);

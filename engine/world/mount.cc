@@ -3,9 +3,7 @@
 namespace airis::engine {
 
 void MountConfig::Validate() const {
-  RequireFinite("position_m[0]", position_m.x());
-  RequireFinite("position_m[1]", position_m.y());
-  RequireFinite("position_m[2]", position_m.z());
+  RequireFinite("position_m", position_m);
   RequireInRange("roll_deg", roll_deg, -180.0, 180.0);
   RequireInRange("pitch_deg", pitch_deg, -90.0, 90.0);
   RequireInRange("yaw_deg", yaw_deg, -180.0, 180.0);

@@ -73,10 +73,19 @@ class Vehicle {
   /// and returns the wrench to hold over that step. Called once per tick by the Simulation; allocation-free.
   virtual Wrench UpdateActuators(const ActuatorContext& context) = 0;
 
-  /// Tells the vehicle what to do (missions, bridges, learning code). This default, for a vehicle without a
-  /// flight controller, accepts kDisarmed (all actuators 0) and kMotors (the first actuator_count() values
-  /// of command.motors) and throws std::invalid_argument for any other mode.
-  virtual void SetCommand(const VehicleCommand& command) {
+  /// Tells the vehicle what to do (missions, bridges, learning code) and keeps the command for
+  /// command(). Throws std::invalid_argument for a mode the vehicle cannot follow.
+  void SetCommand(const VehicleCommand& command) {
+    ApplyCommand(command);
+    command_ = command;
+  }
+  /// The command last given (kDisarmed before any).
+  const VehicleCommand& command() const { return command_; }
+
+  /// Follows `command`. This default, for a vehicle without a flight controller, accepts kDisarmed
+  /// (all actuators 0) and kMotors (the first actuator_count() values of command.motors) and throws
+  /// std::invalid_argument for any other mode.
+  virtual void ApplyCommand(const VehicleCommand& command) {
     std::array<double, kMaxActuators> u{};
     if (command.mode == CommandMode::kMotors) u = command.motors;
     if (command.mode != CommandMode::kMotors && command.mode != CommandMode::kDisarmed) {
@@ -96,6 +105,7 @@ class Vehicle {
   std::string name_;
   RigidBodyModel body_;
   RigidBodyState state_;
+  VehicleCommand command_;
 };
 
 }  // namespace airis::engine

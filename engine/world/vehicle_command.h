@@ -1,7 +1,9 @@
 #pragma once
 
 #include <array>
+#include <span>
 
+#include "engine/core/config.h"
 #include "engine/core/frames.h"
 
 namespace airis::engine {
@@ -19,6 +21,9 @@ enum class CommandMode {
   kPosition,        ///< world position (+ velocity feed-forward, speed limit) + yaw
   kLand,            ///< descend at the landing speed, hold horizontal position, disarm on touchdown
 };
+
+/// File and log spellings of the modes ("disarmed", "motors", "rates_thrust", ...).
+std::span<const EnumName<CommandMode>> EnumNames(CommandMode);
 
 /// A command for a vehicle. Only the fields of the active mode are read.
 struct VehicleCommand {

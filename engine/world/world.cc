@@ -9,6 +9,7 @@
 #include "engine/core/error.h"
 #include "engine/physics/box_sweep.h"
 #include "engine/physics/rigid_body_integrator.h"
+#include "engine/world/simulation.h"
 
 namespace airis::engine {
 namespace {
@@ -29,6 +30,7 @@ constexpr double kEnvironmentRefresh_m = 1.0;
 }  // namespace
 
 void PhysicsConfig::Validate() const {
+  SimulationConfig{rate_hz}.Validate();
   RequireInRange("contact_iterations", contact_iterations, 1, 1000);
   RequireNonNegative("penetration_slop_m", penetration_slop_m);
   RequirePositive("sweep_fraction", sweep_fraction);
@@ -58,6 +60,29 @@ std::size_t World::AddVehicle(std::unique_ptr<Vehicle> vehicle) {
   slot.touching_next.reserve(8);
   slots_.push_back(std::move(slot));
   return slots_.size() - 1;
+}
+
+bool World::RestOnSurfaceBelow(std::size_t i, double search_m) {
+  AIRIS_DEMAND(i < slots_.size() && search_m > 0.0);
+  Slot& slot = slots_[i];
+  RigidBodyState& state = slot.vehicle->state();
+  collision_.FindContacts(slot.body, state.p_W, state.q_WB, 0.0, slot.contacts);
+  if (!slot.contacts.empty()) return false;  // overlapping something where it stands
+  Contact hit;
+  const Vec3 from = state.p_W;
+  const Vec3 to = from + Vec3(0.0, 0.0, search_m);
+  const double fraction = collision_.Sweep(slot.body, state.q_WB, from, to, &hit);
+  if (fraction >= 1.0) return false;
+  // On the surface, within the solver's slop, so that the contact persists from the first tick.
+  state.p_W = from + fraction * (to - from) + Vec3(0.0, 0.0, 0.5 * physics_.penetration_slop_m);
+  collision_.FindContacts(slot.body, state.p_W, state.q_WB, 0.0, slot.contacts);
+  slot.touching.clear();
+  for (const Contact& c : slot.contacts) {
+    if (std::find(slot.touching.begin(), slot.touching.end(), c.collider) == slot.touching.end())
+      slot.touching.push_back(c.collider);
+  }
+  slot.contacts.clear();
+  return !slot.touching.empty();
 }
 
 Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {

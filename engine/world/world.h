@@ -37,8 +37,9 @@ struct CollisionEvent {
   double impulse_Ns = 0.0;        ///< magnitude of the contact impulse applied in that tick
 };
 
-/// Physics settings of a world.
+/// Physics settings of a world (a scene's `physics:` block).
 struct PhysicsConfig {
+  double rate_hz = 1000.0;  ///< ticks per simulated second, 100 to 10000, whole ns per tick
   int contact_iterations = 12;       ///< sequential-impulse sweeps per tick
   double penetration_slop_m = 1e-4;  ///< penetration left uncorrected (stable resting contact)
   /// A step that moves a body farther than this fraction of its smallest half-extent is swept first
@@ -48,6 +49,8 @@ struct PhysicsConfig {
 
   template <class V>
   void Visit(V& v) {
+    v.Field("rate_hz", rate_hz,
+            "physics ticks per simulated second (100 to 10000); sensors may not sample faster");
     v.Field("contact_iterations", contact_iterations, "contact solver iterations per tick");
     v.Field("penetration_slop_m", penetration_slop_m, "penetration left uncorrected (m)");
     v.Field("sweep_fraction", sweep_fraction,
@@ -77,6 +80,10 @@ class World {
   /// Same, by vehicle name; throws InvalidField("vehicle") on an unknown name (closest name
   /// suggested).
   Sensor& AddSensor(std::string_view vehicle_name, std::unique_ptr<Sensor> sensor);
+  /// Lowers (or keeps) vehicle `i` along world z onto the first surface below it, level as it is,
+  /// and counts that surface as already touched (resting there is no collision). False when no
+  /// surface lies within `search_m` below it, or it starts overlapping one.
+  bool RestOnSurfaceBelow(std::size_t i, double search_m = 1000.0);
   /// Index of the vehicle named `name`, or -1.
   int FindVehicle(std::string_view name) const;
 

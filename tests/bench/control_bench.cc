@@ -7,7 +7,7 @@
 #include "engine/world/simulation.h"
 #include "scenes/scene.h"
 #include "scenes/world_builder.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
 #include "vehicles/multirotor/flight_controller.h"
 #include "vehicles/multirotor/multirotor.h"
 
@@ -19,7 +19,7 @@ using engine::Vec3;
 // One FlightController::Update of the reference quad in position mode, the state moving along a circle so
 // every loop and the allocation do real work (no saturation shortcut).
 void BM_FlightControllerUpdate(benchmark::State& state) {
-  const vehicles::Multirotor quad("quad", vehicles::QuadXConfig());
+  const vehicles::Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   vehicles::FlightController fc(vehicles::FlightControllerConfig{},
                                 {quad.body().mass_kg(), quad.body().inertia_B()}, quad.CalcActuatorEffects(1.225));
   engine::VehicleCommand c;

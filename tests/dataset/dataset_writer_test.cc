@@ -8,12 +8,13 @@
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
 #include "tests/dataset/test_frames.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::engine {
 namespace {
 
 std::filesystem::path FreshDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("airis_writer_" + name);
+  const auto dir = airis::testing::TestTempDir() / ("airis_writer_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -7,12 +7,13 @@
 #include "engine/dataset/image_encoding.h"
 #include "engine/dataset/sha256.h"
 #include "tests/dataset/test_frames.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::engine {
 namespace {
 
 std::filesystem::path TempDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("airis_test_" + name);
+  const auto dir = airis::testing::TestTempDir() / ("airis_test_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -10,6 +10,7 @@
 
 #include "engine/dataset/file_io.h"
 #include "engine/core/camera_model.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::engine {
 namespace {
@@ -61,7 +62,7 @@ TEST(TartanAirTest, FileNamesFollowTheTartanAirTools) {
 }
 
 TEST(TartanAirTest, PoseFileHasOneLinePerFrameAndMalformedCsvNamesTheLine) {
-  const fs::path dir = fs::temp_directory_path() / "airis_tartanair_test";
+  const fs::path dir = airis::testing::TestTempDir() / "airis_tartanair_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string header = "time_ns,time_s,frame,p_n_m,p_e_m,p_d_m,q_w,q_x,q_y,q_z\n";

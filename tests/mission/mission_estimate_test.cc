@@ -8,7 +8,10 @@
 namespace airis::engine {
 namespace {
 
-MissionStep Step(MissionStepSpec spec) { return {std::move(spec), {}}; }
+template <class Config>
+MissionStep Step(Config config) {
+  return MissionStep::Of(std::move(config));
+}
 
 const LocalNedFrame kFrame(GeodeticPosition{DegToRad(47.0), DegToRad(8.0), 400.0});
 

@@ -72,8 +72,9 @@ FlightResult Fly(MissionRunner& runner, PointVehicle& vehicle, double max_s, Mis
   return {runner.state(), t};
 }
 
-MissionStep Step(MissionStepSpec spec, int line) {
-  return {std::move(spec), SourceLocation{"missions/test.yaml", line, 5}};
+template <class Config>
+MissionStep Step(Config config, int line) {
+  return MissionStep::Of(std::move(config), SourceLocation{"missions/test.yaml", line, 5});
 }
 
 GotoStep GotoAt(const Vec3& p_W, double speed_m_s) {
@@ -86,6 +87,27 @@ GotoStep GotoAt(const Vec3& p_W, double speed_m_s) {
 const LocalNedFrame& Frame() {
   static const LocalNedFrame frame({DegToRad(47.641468), DegToRad(-122.140165), 122.0});
   return frame;
+}
+
+TEST(MissionRunnerTest, HoverHoldsThePositionWhereItBegan) {
+  // GIVEN a takeoff (done within 0.3 m of its target) followed by a hover
+  Mission m;
+  m.steps = {Step(TakeoffStep{20.0}, 3), Step(HoverStep{1.0}, 4)};
+  MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
+  PointVehicle v;
+  VehicleCommand command;
+  TimeNs t = 0;
+  while (runner.current_step() == 0) {
+    ASSERT_EQ(runner.Update({t, v.state, v.landed}, &command), MissionRunner::State::kRunning);
+    v.Apply(command, ToSeconds(kTickNs));
+    t += kTickNs;
+  }
+  // WHEN the hover starts, THEN it holds where the vehicle was, not the takeoff's target
+  const Vec3 began = v.state.p_W;
+  ASSERT_GT((began - Vec3(0, 0, -20)).norm(), 1e-6);  // the takeoff stopped short of its target
+  ASSERT_EQ(runner.Update({t, v.state, v.landed}, &command), MissionRunner::State::kRunning);
+  EXPECT_EQ(command.mode, CommandMode::kPosition);
+  EXPECT_EQ(command.position_W, began);
 }
 
 TEST(MissionRunnerTest, TakeoffGotoHoverLandRunsInOrderAndSucceeds) {
@@ -282,7 +304,7 @@ TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
   ASSERT_EQ(runner.state(), MissionRunner::State::kSucceeded) << runner.failure();
   // One turn of 2 pi 10 m at 5 m/s = 12.57 s, plus the start-up ramp at kPathAccel: reaching v at a loses
   // v / (2 a) = 1.25 s against full speed from the start.
-  const double ramp_loss_s = 5.0 / (2.0 * MissionRunner::kPathAccel_m_s2);
+  const double ramp_loss_s = 5.0 / (2.0 * kPathAccel_m_s2);
   EXPECT_NEAR(ToSeconds(t - orbit_start), 2 * M_PI * 10 / 5 + ramp_loss_s, 0.01);
 }
 

@@ -9,6 +9,7 @@
 
 #include "engine/render/camera_renderer.h"
 #include "tests/render/render_test_util.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::engine {
 namespace {
@@ -35,7 +36,7 @@ std::string WriteCheckerTexture() {
     }
   }
   const std::string path =
-      (std::filesystem::temp_directory_path() / "airis_render_golden_checker.png").string();
+      (airis::testing::TestTempDir() / "airis_render_golden_checker.png").string();
   cv::imwrite(path, checker);
   return path;
 }
@@ -79,7 +80,7 @@ TEST(GoldenImageTest, LitSceneMatchesTheGoldenImage) {
   EXPECT_LE(outliers / static_cast<double>(diff.total()), kOutlierFraction);
   if (HasFailure()) {
     const std::string actual_path =
-        (std::filesystem::temp_directory_path() / "airis_lit_scene_actual.png").string();
+        (airis::testing::TestTempDir() / "airis_lit_scene_actual.png").string();
     cv::imwrite(actual_path, bgr);
     ADD_FAILURE() << "rendered image differs from " << golden_path << "; this render is at "
                   << actual_path;

@@ -42,13 +42,13 @@ steps:
   EXPECT_EQ(m.vehicle, "drone");
   EXPECT_TRUE(m.abort_on_collision);
   ASSERT_EQ(m.steps.size(), 12u);
-  EXPECT_EQ(std::get<engine::TakeoffStep>(m.steps[0].spec).altitude_m, 25.0);
-  const auto& g = std::get<engine::GotoStep>(m.steps[1].spec);
+  EXPECT_EQ(m.steps[0].As<engine::TakeoffStep>()->altitude_m, 25.0);
+  const auto& g = *m.steps[1].As<engine::GotoStep>();
   EXPECT_EQ(*g.position_ned_m, engine::Vec3(10, 20, -25));
   EXPECT_EQ(*g.yaw_deg, 90.0);
-  EXPECT_EQ(std::get<engine::OrbitStep>(m.steps[3].spec).turns, 2.0);
-  EXPECT_EQ(std::get<engine::CaptureStep>(m.steps[8].spec).cameras[0], "front");
-  EXPECT_TRUE(std::holds_alternative<engine::LandStep>(m.steps[11].spec));
+  EXPECT_EQ(m.steps[3].As<engine::OrbitStep>()->turns, 2.0);
+  EXPECT_EQ(m.steps[8].As<engine::CaptureStep>()->cameras[0], "front");
+  EXPECT_NE(m.steps[11].As<engine::LandStep>(), nullptr);
   EXPECT_EQ(m.steps[1].where.line, 5);
   EXPECT_EQ(m.steps[1].where.column, 5);
   EXPECT_EQ(m.steps[1].where.file, "missions/m.yaml");

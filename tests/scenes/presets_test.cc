@@ -1,87 +1,80 @@
-// vehicles/presets/*.yaml and the C++ airframe presets the scene loader uses must describe the same airframes.
+// The airframe presets shipped as vehicles/presets/*.yaml (compiled in as text, their one source)
+// load, validate and describe the airframes parameters.md and docs/flight-controller.md give.
 #include <gtest/gtest.h>
 
-#include <Eigen/Core>
-#include <algorithm>
 #include <cmath>
-#include <optional>
+#include <fstream>
+#include <sstream>
 #include <string>
-#include <type_traits>
-#include <vector>
 
-#include "scenes/yaml_reader.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
+#include "vehicles/multirotor/multirotor.h"
+#include "vehicles/multirotor/preset_files.h"
 
 namespace airis::scenes {
 namespace {
 
-// Flattens a config struct into "key=value" lines (numbers kept apart as doubles) through its Visit, so two
-// configs compare field by field and a difference names the field.
-class Flattener {
- public:
-  template <class T>
-  void Field(const char* key, T& value, const char*) {
-    Add(prefix_ + key, value);
-  }
-  std::vector<std::string> lines;
-  std::vector<std::pair<std::string, double>> numbers;
+constexpr double kArm_m = 0.2275;  // reference arm (parameters.md)
 
- private:
-  template <class T>
-  void Add(const std::string& key, T& value) {
-    if constexpr (std::is_same_v<T, bool>) {
-      lines.push_back(key + (value ? "=true" : "=false"));
-    } else if constexpr (std::is_arithmetic_v<T>) {
-      numbers.emplace_back(key, static_cast<double>(value));
-    } else if constexpr (std::is_enum_v<T>) {
-      lines.push_back(key + "=" + std::string(engine::ToString(value)));
-    } else if constexpr (std::is_same_v<T, std::string>) {
-      lines.push_back(key + "=" + value);
-    } else if constexpr (yaml_detail::IsFixedEigenVector<T>::value) {
-      for (int i = 0; i < T::RowsAtCompileTime; ++i) Add(key + "[" + std::to_string(i) + "]", value[i]);
-    } else if constexpr (yaml_detail::IsStdOptional<T>::value) {
-      if (value) {
-        Add(key, *value);
-      } else {
-        lines.push_back(key + "=unset");
-      }
-    } else if constexpr (yaml_detail::IsStdVector<T>::value) {
-      lines.push_back(key + ".size=" + std::to_string(value.size()));
-      for (std::size_t i = 0; i < value.size(); ++i) Add(key + "[" + std::to_string(i) + "]", value[i]);
-    } else {
-      const std::string saved = prefix_;
-      prefix_ = key + ".";
-      value.Visit(*this);
-      prefix_ = saved;
-    }
-  }
-  std::string prefix_;
-};
-
-Flattener Flatten(vehicles::MultirotorConfig config) {
-  Flattener f;
-  config.Visit(f);
-  return f;
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
-TEST(PresetFilesTest, EveryPresetFileEqualsTheBuiltInPreset) {
-  for (const auto& preset : EnumNames(vehicles::AirframePreset{})) {
-    SCOPED_TRACE(preset.name);
-    const auto from_file = ReadYamlFile<vehicles::MultirotorConfig>(std::string("vehicles/presets/") +
-                                                                    preset.name + ".yaml");
-    const Flattener file = Flatten(from_file);
-    const Flattener built_in = Flatten(vehicles::MakeAirframe(preset.value));
-    ASSERT_EQ(file.lines, built_in.lines);  // structure, enums, strings, unset optionals
-    ASSERT_EQ(file.numbers.size(), built_in.numbers.size());
-    for (std::size_t i = 0; i < file.numbers.size(); ++i) {
-      const auto& [key, a] = file.numbers[i];
-      const double b = built_in.numbers[i].second;
-      ASSERT_EQ(key, built_in.numbers[i].first);
-      // The files write rotor positions to a micrometre (6 decimals of metres) where the code uses exact
-      // trigonometry: agreement to 1e-6 relative (absolute below 1) is agreement.
-      EXPECT_NEAR(a, b, 1e-6 * std::max(1.0, std::abs(b))) << key;
+TEST(PresetFilesTest, TheCompiledInTextIsTheFileInTheRepository) {
+  ASSERT_EQ(vehicles::MultirotorPresetFiles().size(), 5u);
+  for (const vehicles::PresetFile& p : vehicles::MultirotorPresetFiles()) {
+    EXPECT_EQ(std::string(p.yaml), ReadFile(std::string(p.path))) << p.path;
+  }
+}
+
+TEST(PresetFilesTest, QuadXIsTheReferenceQuadrotorOfParametersMd) {
+  const vehicles::MultirotorConfig quad = LoadMultirotorPreset("quad_x");
+  const vehicles::MultirotorConfig reference;  // the struct's defaults are parameters.md's quad
+  EXPECT_EQ(quad.mass_kg, reference.mass_kg);
+  EXPECT_EQ(quad.box_size_m, reference.box_size_m);
+  ASSERT_EQ(quad.rotors.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(quad.rotors[i].position_m, reference.rotors[i].position_m) << i;
+    EXPECT_EQ(quad.rotors[i].spin, reference.rotors[i].spin) << i;
+    EXPECT_EQ(quad.rotors[i].thrust_coefficient, 0.109919);
+    EXPECT_EQ(quad.rotors[i].max_rpm, 6396.667);
+  }
+}
+
+TEST(PresetFilesTest, RingPresetsPutTheirRotorsOnTheReferenceArmWithAlternatingSpins) {
+  for (const auto& [name, count, first_deg] :
+       {std::tuple{"hexa_x", 6, 30.0}, std::tuple{"octo_x", 8, 22.5}}) {
+    SCOPED_TRACE(name);
+    const vehicles::MultirotorConfig c = LoadMultirotorPreset(name);
+    ASSERT_EQ(c.rotors.size(), static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      const double angle = engine::DegToRad(first_deg + 360.0 * i / count);
+      const auto& r = c.rotors[static_cast<std::size_t>(i)];
+      // The files write positions to a micrometre.
+      EXPECT_NEAR(r.position_m.x(), kArm_m * std::cos(angle), 1e-6) << i;
+      EXPECT_NEAR(r.position_m.y(), kArm_m * std::sin(angle), 1e-6) << i;
+      EXPECT_EQ(r.position_m.z(), 0.025);
+      EXPECT_EQ(r.spin, i % 2 == 0 ? vehicles::Spin::kCcw : vehicles::Spin::kCw) << i;
     }
   }
+}
+
+TEST(PresetFilesTest, TiltRotorTiltsItsFrontPairForward) {
+  const vehicles::MultirotorConfig c = LoadMultirotorPreset("tilt_rotor");
+  ASSERT_EQ(c.rotors.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(c.rotors[i].tiltable, i == 0 || i == 2) << i;
+  }
+  EXPECT_EQ(c.rotors[0].tilt_axis, engine::Vec3(0, -1, 0));
+  EXPECT_EQ(c.rotors[0].max_tilt_deg, 90.0);
+  EXPECT_EQ(vehicles::Multirotor("vtol", c).actuator_count(), 6);
+}
+
+TEST(PresetFilesTest, AnUnknownPresetIsAnError) {
+  EXPECT_THROW(LoadMultirotorPreset("quad_z"), engine::ConfigError);
 }
 
 }  // namespace

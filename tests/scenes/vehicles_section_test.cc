@@ -6,7 +6,9 @@
 
 #include "scenes/scene.h"
 #include "scenes/world_builder.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
+#include "sensors/imu.h"
+#include "vehicles/multirotor/multirotor.h"
 
 namespace airis::scenes {
 namespace {
@@ -37,11 +39,14 @@ TEST(VehiclesSectionTest, OverridesChangeOnlyTheKeysGiven) {
       "    overrides: {mass_kg: 1.6, friction: 0.7}\n",
       "scenes/v.yaml");
   ASSERT_EQ(s.vehicles.size(), 1u);
-  const vehicles::MultirotorConfig reference = vehicles::HexaXConfig();
-  EXPECT_EQ(s.vehicles[0].airframe.mass_kg, 1.6);
-  EXPECT_EQ(s.vehicles[0].airframe.friction, 0.7);
-  EXPECT_EQ(s.vehicles[0].airframe.rotors.size(), reference.rotors.size());
-  EXPECT_EQ(s.vehicles[0].airframe.box_size_m, reference.box_size_m);
+  const vehicles::MultirotorConfig reference = LoadMultirotorPreset("hexa_x");
+  const auto* airframe = VehicleConfigOf<vehicles::MultirotorConfig, vehicles::Multirotor>(
+      *s.vehicles[0].spec);
+  ASSERT_NE(airframe, nullptr);
+  EXPECT_EQ(airframe->mass_kg, 1.6);
+  EXPECT_EQ(airframe->friction, 0.7);
+  EXPECT_EQ(airframe->rotors.size(), reference.rotors.size());
+  EXPECT_EQ(airframe->box_size_m, reference.box_size_m);
 }
 
 TEST(VehiclesSectionTest, OverrideMistakesNameFileLineAndKey) {
@@ -74,10 +79,13 @@ TEST(VehiclesSectionTest, SensorsAreReadThroughTheirConfigs) {
       "scenes/v.yaml");
   ASSERT_EQ(s.vehicles[0].sensors.size(), 3u);
   EXPECT_EQ(s.vehicles[0].sensors[0].name, "imu");
-  EXPECT_EQ(std::get<sensors::ImuConfig>(s.vehicles[0].sensors[0].config).rate_hz, 400.0);
+  const auto* imu =
+      SensorConfigOf<sensors::ImuConfig, sensors::Imu>(*s.vehicles[0].sensors[0].spec);
+  ASSERT_NE(imu, nullptr);
+  EXPECT_EQ(imu->rate_hz, 400.0);
   EXPECT_EQ(s.vehicles[0].sensors[1].name, "barometer");
   EXPECT_EQ(s.vehicles[0].sensors[2].name, "down");
-  EXPECT_EQ(SensorKindName(s.vehicles[0].sensors[2].config), "rangefinder");
+  EXPECT_EQ(s.vehicles[0].sensors[2].spec->kind(), "rangefinder");
 }
 
 TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
@@ -102,7 +110,7 @@ TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
                     "    preset: quad_x\n"
                     "    sensors:\n"
                     "      - {name: x}\n"),
-            "scenes/v.yaml:5:9: vehicles[0].sensors[0].imu: expected one sensor: imu, barometer, "
+            "scenes/v.yaml:5:9: vehicles[0].sensors[0]: expected one sensor: imu, barometer, "
             "magnetometer, gps, rangefinder, lidar, camera or stereo_camera");
 }
 

@@ -9,7 +9,8 @@
 #include "engine/world/simulation.h"
 #include "tests/fixtures/box_scenes.h"
 #include "tests/fixtures/test_environment.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
+#include "vehicles/multirotor/preset_files.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::vehicles {
@@ -57,7 +58,7 @@ VehicleCommand PositionCommand(const Vec3& p_W, double yaw_rad = 0.0) {
 
 TEST(FlightTest, HoverHoldsPositionWithinFiveCentimetresForAMinute) {
   const Vec3 target(0, 0, -10);
-  Flight f = MakeFlight(QuadXConfig(), target);
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), target);
   f.vehicle->SetCommand(PositionCommand(target));
   double worst_m = 0.0;
   for (int i = 0; i < 60000; ++i) {
@@ -71,7 +72,7 @@ TEST(FlightTest, FiveMetrePerSecondWindIsRejectedWithinHalfAMetre) {
   // GIVEN a hovering quad, WHEN a 5 m/s wind starts (a step in drag), THEN it never drifts more than 0.5 m
   // and the velocity integrator brings it back to within 5 cm.
   const Vec3 target(0, 0, -10);
-  Flight f = MakeFlight(QuadXConfig(), target);
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), target);
   f.vehicle->SetCommand(PositionCommand(target));
   f.sim->RunFor(2.0);
   f.sim->world().environment().wind().set_mean_ned_m_s(Vec3(5.0, -3.0, 0.0).normalized() * 5.0);
@@ -86,7 +87,7 @@ TEST(FlightTest, FiveMetrePerSecondWindIsRejectedWithinHalfAMetre) {
 
 TEST(FlightTest, HorizontalStepSettlesWithBoundedOvershoot) {
   // A 10 m step north. Bound: overshoot below 5% of the step (0.5 m); within 0.1 m after 10 s.
-  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, -10));
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, -10));
   f.vehicle->SetCommand(PositionCommand(Vec3(10, 0, -10)));
   double max_north = 0.0;
   for (int i = 0; i < 10000; ++i) {
@@ -99,7 +100,7 @@ TEST(FlightTest, HorizontalStepSettlesWithBoundedOvershoot) {
 
 TEST(FlightTest, AltitudeStepSettlesWithBoundedOvershoot) {
   // A 5 m climb. Bound: overshoot below 5% (0.25 m); within 5 cm after 8 s.
-  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, -10));
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, -10));
   f.vehicle->SetCommand(PositionCommand(Vec3(0, 0, -15)));
   double highest = 10.0;
   for (int i = 0; i < 8000; ++i) {
@@ -113,7 +114,7 @@ TEST(FlightTest, AltitudeStepSettlesWithBoundedOvershoot) {
 TEST(FlightTest, YawStepSettlesWithBoundedOvershoot) {
   // A 90 degree turn. Bound: overshoot below 5 degrees; within 1 degree after 4 s; position held within 5 cm.
   const Vec3 target(0, 0, -10);
-  Flight f = MakeFlight(QuadXConfig(), target);
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), target);
   f.vehicle->SetCommand(PositionCommand(target, M_PI / 2));
   double max_yaw = 0.0, worst_m = 0.0;
   for (int i = 0; i < 4000; ++i) {
@@ -128,7 +129,7 @@ TEST(FlightTest, YawStepSettlesWithBoundedOvershoot) {
 
 TEST(FlightTest, VelocityStepSettlesWithBoundedOvershoot) {
   // From hover, 5 m/s north. Bound: overshoot below 5% (0.25 m/s); within 0.05 m/s after 4 s; height held.
-  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, -20));
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, -20));
   VehicleCommand c;
   c.mode = CommandMode::kVelocity;
   c.velocity_W = Vec3(5, 0, 0);
@@ -147,7 +148,7 @@ TEST(FlightTest, RateStepSettlesWithBoundedOvershoot) {
   // Body yaw rate step to 1 rad/s at hover thrust. Bound: overshoot below 10%. The PI loop's integral tail
   // decays with time constant about K_p / K_i = 10 / 4 = 2.5 s (yaw defaults): within 2% after 3 s, within
   // 0.5% after 10 s.
-  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, -20));
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, -20));
   VehicleCommand c;
   c.mode = CommandMode::kRatesThrust;
   c.rates_B = Vec3(0, 0, 1.0);
@@ -167,8 +168,8 @@ TEST(FlightTest, RateStepSettlesWithBoundedOvershoot) {
 
 TEST(FlightTest, TakeoffAndLandCycleLandsDisarmedWithoutBounce) {
   // The quad starts at rest on the ground (box bottom at z = 0), climbs 5 m, lands.
-  const double rest_z = -0.5 * QuadXConfig().box_size_m.z();
-  Flight f = MakeFlight(QuadXConfig(), Vec3(0, 0, rest_z));
+  const double rest_z = -0.5 * scenes::LoadMultirotorPreset("quad_x").box_size_m.z();
+  Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, rest_z));
   f.sim->RunFor(0.5);  // settle on the ground
   f.vehicle->SetCommand(PositionCommand(Vec3(0, 0, -5)));
   f.sim->RunFor(8.0);
@@ -194,14 +195,14 @@ TEST(FlightTest, TakeoffAndLandCycleLandsDisarmedWithoutBounce) {
 }
 
 TEST(FlightTest, EveryPresetFliesASquareAndEndsWithinThirtyCentimetres) {
-  for (const auto& preset : EnumNames(AirframePreset{})) {
+  for (const PresetFile& preset : MultirotorPresetFiles()) {
     SCOPED_TRACE(preset.name);
-    Flight f = MakeFlight(MakeAirframe(preset.value), Vec3(0, 0, -10));
+    Flight f = MakeFlight(scenes::LoadMultirotorPreset(preset.name), Vec3(0, 0, -10));
     engine::PathStep square;
     square.waypoints_ned_m = {Vec3(20, 0, -10), Vec3(20, 20, -10), Vec3(0, 20, -10), Vec3(0, 0, -10)};
     square.speed_m_s = 5.0;
     engine::Mission mission;
-    mission.steps = {{square, {}}, {engine::HoverStep{2.0, 0.0}, {}}};
+    mission.steps = {engine::MissionStep::Of(square), engine::MissionStep::Of(engine::HoverStep{2.0, 0.0})};
     engine::MissionRunner runner(mission, f.sim->world().environment().frame(), engine::RandomStream(1),
                                  nullptr);
     VehicleCommand command;

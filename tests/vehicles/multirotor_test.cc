@@ -10,7 +10,8 @@
 #include "engine/world/simulation.h"
 #include "tests/fixtures/box_scenes.h"
 #include "tests/fixtures/test_environment.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
+#include "vehicles/multirotor/preset_files.h"
 
 namespace airis::vehicles {
 namespace {
@@ -35,7 +36,7 @@ std::unique_ptr<engine::Simulation> Fly(std::unique_ptr<Multirotor> quad, Multir
 }
 
 TEST(MultirotorTest, ReferenceRotorMaxThrustAndTorque) {
-  const Multirotor quad("quad", QuadXConfig());
+  const Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   // parameters.md: F_max = C_T rho n^2 D^4 = 4.179446 N, tau_max = C_pow rho n^2 D^5 / (2 pi) =
   // 0.0555622 N m at rho = 1.225 with n = 6396.667 / 60 rev/s; published to 7 and 6 significant
   // digits.
@@ -46,7 +47,7 @@ TEST(MultirotorTest, ReferenceRotorMaxThrustAndTorque) {
 }
 
 TEST(MultirotorTest, ReferenceQuadInertiaIsComputedFromBoxAndMotors) {
-  const Multirotor quad("quad", QuadXConfig());
+  const Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   const engine::Mat3& I = quad.body().inertia_B();
   EXPECT_NEAR(I(0, 0), 0.0067212, 5e-8);
   EXPECT_NEAR(I(1, 1), 0.0080407, 5e-8);
@@ -61,7 +62,7 @@ TEST(MultirotorTest, ReferenceQuadInertiaIsComputedFromBoxAndMotors) {
 }
 
 TEST(MultirotorTest, HoversWithinAMillimetreForTenSeconds) {
-  auto quad = std::make_unique<Multirotor>("quad", QuadXConfig());
+  auto quad = std::make_unique<Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   // u = m g / (4 F_max) = 0.58660 at sea level (parameters.md, 5 digits).
   const double u = quad->CalcHoverCommand(engine::ussa1976::Calc(0.0).density_kg_m3, kG0);
   EXPECT_NEAR(u, 0.5866, 5e-5);
@@ -80,7 +81,7 @@ TEST(MultirotorTest, HoversWithinAMillimetreForTenSeconds) {
 
 TEST(MultirotorTest, HoverCommandRisesInThinnerAirAt122Metres) {
   // parameters.md: 0.59352 at 122 m (the reference implementation's default origin altitude).
-  auto quad = std::make_unique<Multirotor>("quad", QuadXConfig());
+  auto quad = std::make_unique<Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   const double rho = engine::ussa1976::Calc(122.0).density_kg_m3;
   const double g = engine::Gravity().CalcAcceleration_m_s2(122.0);
   const double u = quad->CalcHoverCommand(rho, g);
@@ -92,7 +93,7 @@ TEST(MultirotorTest, HoverCommandRisesInThinnerAirAt122Metres) {
   sim->RunFor(2.0);
   EXPECT_LT(q->state().p_W.norm(), 1e-3);
   // The sea-level hover command is too weak at 122 m: it sinks (1.2% less thrust: 0.12 m/s^2).
-  auto weak = std::make_unique<Multirotor>("weak", QuadXConfig());
+  auto weak = std::make_unique<Multirotor>("weak", scenes::LoadMultirotorPreset("quad_x"));
   weak->ResetActuators(std::vector<double>(4, 0.58660));
   auto sim2 = Fly(std::move(weak), &q, 122.0);
   sim2->RunFor(2.0);
@@ -100,7 +101,7 @@ TEST(MultirotorTest, HoverCommandRisesInThinnerAirAt122Metres) {
 }
 
 TEST(MultirotorTest, DifferentialTorqueSpinsUpYawAtTauOverIzz) {
-  auto quad = std::make_unique<Multirotor>("quad", QuadXConfig());
+  auto quad = std::make_unique<Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   const double u = quad->CalcHoverCommand(kRhoSeaLevel, kG0);
   const double d = 0.1;
   // CCW rotors (0, 1) up, CW rotors (2, 3) down: thrust unchanged, yaw torque 4 d tau_max (+z: the
@@ -120,7 +121,7 @@ TEST(MultirotorTest, DifferentialTorqueSpinsUpYawAtTauOverIzz) {
 }
 
 TEST(MultirotorTest, MotorLagReaches63PercentAtOneTimeConstant) {
-  Multirotor quad("quad", QuadXConfig());
+  Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   quad.SetActuatorCommands(std::vector<double>(4, 1.0));
   const engine::RigidBodyState state;
   // The reference time constant is 5 ms: five 1 ms steps.
@@ -130,7 +131,7 @@ TEST(MultirotorTest, MotorLagReaches63PercentAtOneTimeConstant) {
   // Exact discretisation: 1 - exp(-1) = 0.632121 to rounding.
   EXPECT_NEAR(quad.motor_state(0), 1.0 - std::exp(-1.0), 1e-12);
   // Same at 100 Hz in one 10 ms step from 0 toward 1: 1 - exp(-2).
-  Multirotor slow("slow", QuadXConfig());
+  Multirotor slow("slow", scenes::LoadMultirotorPreset("quad_x"));
   slow.SetActuatorCommands(std::vector<double>(4, 1.0));
   slow.UpdateActuators(ActuatorContext{0, 1e-2, kRhoSeaLevel, &state});
   EXPECT_NEAR(slow.motor_state(3), 1.0 - std::exp(-2.0), 1e-12);
@@ -139,7 +140,7 @@ TEST(MultirotorTest, MotorLagReaches63PercentAtOneTimeConstant) {
 TEST(MultirotorTest, WrenchUsesTheLagsMeanOverTheStep) {
   // From rest, command 1 for one step of T: mean command = 1 - (T/dt)(1 - exp(-dt/T)) = 1 - (1 -
   // e^-1) = e^-1.
-  Multirotor quad("quad", QuadXConfig());
+  Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   quad.SetActuatorCommands(std::vector<double>(4, 1.0));
   const engine::RigidBodyState state;
   const engine::Wrench w = quad.UpdateActuators(ActuatorContext{0, 0.005, kRhoSeaLevel, &state});
@@ -149,7 +150,7 @@ TEST(MultirotorTest, WrenchUsesTheLagsMeanOverTheStep) {
 }
 
 TEST(MultirotorTest, CommandsAreClampedAndNanRejected) {
-  Multirotor quad("quad", QuadXConfig());
+  Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   quad.SetActuatorCommands(std::vector<double>{-0.5, 1.5, 0.25, 1.0});
   EXPECT_EQ(quad.actuator_commands()[0], 0.0);
   EXPECT_EQ(quad.actuator_commands()[1], 1.0);
@@ -166,7 +167,7 @@ TEST(MultirotorTest, CommandsAreClampedAndNanRejected) {
 }
 
 TEST(MultirotorTest, TiltRotorFrontPairTiltsToForwardThrust) {
-  Multirotor vtol("vtol", TiltRotorConfig());
+  Multirotor vtol("vtol", scenes::LoadMultirotorPreset("tilt_rotor"));
   ASSERT_EQ(vtol.actuator_count(), 6);
   const engine::RigidBodyState state;
   // Motors at 0.5 (lag settled), front pair commanded fully forward.
@@ -196,7 +197,7 @@ TEST(MultirotorTest, TiltRotorFrontPairTiltsToForwardThrust) {
 }
 
 TEST(MultirotorTest, TiltAboutAPivotMovesTheVertex) {
-  MultirotorConfig c = TiltRotorConfig();
+  MultirotorConfig c = scenes::LoadMultirotorPreset("tilt_rotor");
   c.rotors[0].tilt_pivot_m =
       c.rotors[0].position_m + Vec3(0.0, 0.0, -0.05);  // pivot 5 cm above the rotor
   Multirotor vtol("vtol", c);
@@ -207,14 +208,14 @@ TEST(MultirotorTest, TiltAboutAPivotMovesTheVertex) {
 }
 
 TEST(MultirotorTest, PresetsHoverAndBalance) {
-  for (const auto& name : EnumNames(AirframePreset{})) {
-    const MultirotorConfig config = MakeAirframe(name.value);
-    const Multirotor vehicle(name.name, config);
+  for (const PresetFile& name : MultirotorPresetFiles()) {
+    const MultirotorConfig config = scenes::LoadMultirotorPreset(name.name);
+    const Multirotor vehicle(std::string(name.name), config);
     const double u = vehicle.CalcHoverCommand(kRhoSeaLevel, kG0);
     const std::size_t k = config.rotors.size();
     EXPECT_NEAR(u, kG0 / (static_cast<double>(k) * 4.179446), 1e-6) << name.name;
     // At the hover command every preset's wrench is pure lift: no moment, no yaw.
-    Multirotor m(name.name, config);
+    Multirotor m(std::string(name.name), config);
     std::vector<double> commands(static_cast<std::size_t>(m.actuator_count()), 0.0);
     std::fill(commands.begin(), commands.begin() + static_cast<long>(k), u);
     m.ResetActuators(commands);

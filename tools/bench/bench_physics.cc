@@ -11,7 +11,7 @@
 #include "engine/physics/collision_world.h"
 #include "engine/physics/drag.h"
 #include "engine/world/simulation.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::tools {
@@ -139,7 +139,7 @@ PhysicsTickScenario::PhysicsTickScenario(int box_count, double extent_m, std::ui
   auto scene =
       std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(box_count, extent_m, seed));
   auto world = std::make_unique<engine::World>(scene, BenchEnvironment());
-  auto quad = std::make_unique<vehicles::Multirotor>("quad", vehicles::QuadXConfig());
+  auto quad = std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   s_->quad = quad.get();
   world->AddVehicle(std::move(quad));
   const Vec3 p(0.0, 0.0, -3.0);
@@ -236,7 +236,7 @@ BulletTickScenario::BulletTickScenario(int box_count, double extent_m, std::uint
     // Tuned: statics asleep, so Bullet neither updates their AABBs nor treats them as active.
     if (static_aabbs_fixed) box->setActivationState(ISLAND_SLEEPING);
   }
-  s.quad = std::make_unique<vehicles::Multirotor>("quad", vehicles::QuadXConfig());
+  s.quad = std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   const engine::RigidBodyModel& body = s.quad->body();
   const Vec3 half = 0.5 * body.config().box_size_m;
   const Vec3 I = body.inertia_B().diagonal();

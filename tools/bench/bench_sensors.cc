@@ -17,7 +17,7 @@
 #include "sensors/lidar.h"
 #include "sensors/magnetometer.h"
 #include "sensors/rangefinder.h"
-#include "vehicles/multirotor/airframe_presets.h"
+#include "scenes/vehicle_kinds.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::tools {
@@ -103,7 +103,7 @@ QuadTickRates MeasureReferenceQuadTicks(double seconds) {
         engine::Environment(engine::EnvironmentConfig{},
                             {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
                             streams.Stream("environment")));
-    auto quad = std::make_unique<vehicles::Multirotor>("quad", vehicles::QuadXConfig());
+    auto quad = std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
     quad->state().p_W = Vec3(0, 0, -50);
     // Hover for the air and gravity at 50 m, so the open-loop quad stays near its start.
     const double rho = world->environment().CalcAir(quad->state().p_W).density_kg_m3;

@@ -30,6 +30,7 @@ namespace fs = std::filesystem;
 struct DatasetArgs {
   std::string scene, mission, out, seed, cameras, formats, shard;
   int workers = 2;
+  std::int64_t min_object_area_px = 16;
   bool resume = false;
 };
 
@@ -87,6 +88,7 @@ int Run(const DatasetArgs& a) {
   o.outputs = ParseFormats(a.formats);
   o.shard = ParseShard(a.shard);
   o.workers = a.workers;
+  o.min_object_area_px = a.min_object_area_px;
   o.resume = a.resume;
 
   // A progress line on a terminal, four times a second: step, simulated time, frames, rate, ETA.
@@ -157,6 +159,8 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", a->shard,
                   "write shard K of N (every N-th frame from the K-th); join with 'merge'");
   cmd->add_option("--workers", a->workers, "image encoding threads (default 2)");
+  cmd->add_option("--min-object-area-px", a->min_object_area_px,
+                  "instances with fewer visible pixels get no COCO annotation (default 16)");
   cmd->add_flag("--resume", a->resume,
                 "continue an interrupted run in --out (same result as uninterrupted)");
   cmd->callback([a, merge, &exit_code] {

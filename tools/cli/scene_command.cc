@@ -73,9 +73,12 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
   for (const auto& v : s.vehicles) {
     std::string sensors;
     for (const auto& sensor : v.sensors) sensors += (sensors.empty() ? "" : ", ") + sensor.name;
-    std::printf("vehicle     %s (preset %s, %.3g kg) at [%g, %g, %g] m, yaw %g deg; sensors: %s\n",
-                v.name.c_str(), v.preset.c_str(), v.airframe.mass_kg, v.p_W.x(), v.p_W.y(),
-                v.p_W.z(), engine::RadToDeg(v.yaw_rad), sensors.empty() ? "none" : sensors.c_str());
+    const engine::Vec3& p = v.start.p_W;
+    std::printf("vehicle     %s (%s %s, %.3g kg) at [%g, %g, %g] m, yaw %g deg%s; sensors: %s\n",
+                v.name.c_str(), v.kind.c_str(), v.preset.c_str(),
+                v.spec->CalcRigidBodyConfig().mass_kg, p.x(), p.y(), p.z(),
+                engine::RadToDeg(engine::EulerFromQuat(v.start.q_WB).yaw_rad),
+                v.on_ground ? " on the ground" : "", sensors.empty() ? "none" : sensors.c_str());
   }
   if (!stats.bounds_W.isEmpty()) {
     const auto& lo = stats.bounds_W.min();

@@ -32,6 +32,11 @@ void RemoveUnfinishedFiles(const fs::path& root) {
 
 DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
                                const std::function<void(const JobProgress&)>& progress) {
+  if (o.min_object_area_px < 1) {
+    throw engine::ConfigError({}, "--min-object-area-px",
+                              "must be at least 1 (got " + std::to_string(o.min_object_area_px) +
+                                  ")");
+  }
   if (o.workers < 1 || o.workers > 64) {
     throw engine::ConfigError({}, "--workers",
                               "must be 1 to 64 (got " + std::to_string(o.workers) + ")");
@@ -53,11 +58,12 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   ro.cameras = o.cameras;
   ro.outputs = o.outputs;
   ro.writer.workers = o.workers;
+  ro.writer.annotations.min_area_px = o.min_object_area_px;
   ro.shard_index = o.shard.index - 1;
   ro.shard_count = o.shard.count;
   DatasetRecorder recorder(job.world(), ro);
   engine::TelemetryRecorder telemetry(job.world(), o.out, 100.0);
-  const ManifestSource source{o.scene.path, o.mission, o.outputs, o.shard};
+  const ManifestSource source{o.scene.path, o.mission, o.outputs, o.shard, o.min_object_area_px};
   const fs::path manifest_path = fs::path(o.out) / "manifest.json";
   engine::WriteFileAtomically(
       manifest_path,

@@ -21,6 +21,8 @@ struct DatasetJobOptions {
   engine::DatasetOutputs outputs;     ///< which files per frame
   ShardSpec shard;
   int workers = 2;      ///< image encoding threads, 1 to 64
+  /// Instances with fewer visible pixels get no COCO annotation (they stay in the label images).
+  std::int64_t min_object_area_px = 16;
   bool resume = false;  ///< continue an interrupted run in `out`
 };
 

@@ -112,12 +112,14 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
   nlohmann::json streams =
       nlohmann::json::array({"truth.csv", "collisions.csv", "mission_events.csv"});
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    streams.push_back(world.vehicle(v).name() + ".commands.csv");
     for (const auto& s : world.sensors(v))
       streams.push_back(world.vehicle(v).name() + "." + s->name() + ".csv");
   }
   m["streams"] = streams;
   m["counts"] = {{"frames", frames}, {"simulated_time_s", sim_s}};
   m["formats"] = FormatsJson(o.outputs);
+  m["annotations"] = {{"min_object_area_px", o.min_object_area_px}};
   if (o.shard.count > 1) m["shard"] = {{"index", o.shard.index}, {"count", o.shard.count}};
   nlohmann::json classes = nlohmann::json::array();
   for (const auto& c : world.scene().classes) classes.push_back({{"id", c.id}, {"name", c.name}});

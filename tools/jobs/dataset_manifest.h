@@ -17,6 +17,7 @@ struct ManifestSource {
   std::string mission_file;  ///< as given
   engine::DatasetOutputs outputs;
   ShardSpec shard;
+  std::int64_t min_object_area_px = 16;  ///< the COCO annotation rule
 };
 
 /// The manifest of a dataset being written (`complete` false) or finished: format and airis

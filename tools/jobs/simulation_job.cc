@@ -20,7 +20,8 @@ scenes::Scene Load(const SceneSource& source) {
 
 SimulationJob::SimulationJob(const SceneSource& source)
     : wall_start_(std::chrono::steady_clock::now()), scene_(Load(source)) {
-  simulation_ = std::make_unique<engine::Simulation>(scenes::BuildWorld(scene_));
+  simulation_ = std::make_unique<engine::Simulation>(
+      scenes::BuildWorld(scene_), engine::SimulationConfig{scene_.physics.rate_hz});
 }
 
 double SimulationJob::wall_s() const {
@@ -78,7 +79,7 @@ MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
     p.steps = steps;
     const int current = std::min(session.runner().current_step(), steps - 1);
     p.step = current + 1;
-    p.step_kind = std::string(engine::StepKindName(mission.steps[current].spec));
+    p.step_kind = std::string(mission.steps[current].kind());
     p.simulated_s = sim.clock().now_s();
     p.wall_s = wall_s();
     p.position_W = flyer.state().p_W;

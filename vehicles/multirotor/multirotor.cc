@@ -60,7 +60,7 @@ std::vector<ActuatorEffect> Multirotor::CalcActuatorEffects(double air_density_k
   return effects;
 }
 
-void Multirotor::SetCommand(const engine::VehicleCommand& command) {
+void Multirotor::ApplyCommand(const engine::VehicleCommand& command) {
   if (command.mode == engine::CommandMode::kMotors) {
     controller_active_ = false;
     SetActuatorCommands(std::span<const double>(command.motors.data(), commands_.size()));

@@ -40,7 +40,7 @@ class Multirotor final : public engine::Vehicle {
   /// Commands through the built-in flight controller (config().controller): any mode but kMotors switches the
   /// controller on (it then sets the motor commands every tick from the state source); kMotors switches it off
   /// and sets the actuators directly. Tilt actuators keep their last command in controlled modes.
-  void SetCommand(const engine::VehicleCommand& command) override;
+  void ApplyCommand(const engine::VehicleCommand& command) override;
   /// True once a land command has detected touchdown and disarmed.
   bool landed() const override { return controller_->landed(); }
   /// Runs the flight controller (when on) at the end of the tick and sets the next tick's motor commands.

@@ -17,6 +17,7 @@
 #include "tests/tools/cli/dataset_test_util.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {
@@ -43,7 +44,7 @@ steps:
 }
 
 fs::path MakeDataset(const std::string& name, const std::string& extra = "") {
-  const fs::path dir = fs::temp_directory_path() / ("airis_dataset_" + name);
+  const fs::path dir = airis::testing::TestTempDir() / ("airis_dataset_" + name);
   fs::remove_all(dir);
   const Result r = RunAiris("dataset scenes/city.yaml --mission " + MissionFile() + " --out " +
                             dir.string() + " --formats npy " + extra);
@@ -147,7 +148,7 @@ TEST(DatasetCommandTest, ResumedRunEqualsUninterruptedRun) {
 }
 
 TEST(DatasetCommandTest, ExistingNonEmptyFolderIsNeverOverwritten) {
-  const fs::path dir = fs::temp_directory_path() / "airis_dataset_busy";
+  const fs::path dir = airis::testing::TestTempDir() / "airis_dataset_busy";
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "mine.txt") << "keep";

@@ -19,6 +19,7 @@
 #include "tests/tools/cli/dataset_test_util.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {
@@ -93,7 +94,7 @@ steps:
 }
 
 fs::path MakeBalls(const std::string& name, const std::string& extra, int seed = 11) {
-  const fs::path dir = fs::temp_directory_path() / ("airis_balls_" + name);
+  const fs::path dir = airis::testing::TestTempDir() / ("airis_balls_" + name);
   fs::remove_all(dir);
   const auto r = RunAiris("dataset " + BallsScene(seed).string() + " --mission " +
                           BallsMission().string() + " --out " + dir.string() + " " + extra);
@@ -176,7 +177,7 @@ TEST(DatasetLayoutTest, ShardsMergeIntoTheUnshardedDatasetByteForByte) {
   EXPECT_TRUE(fs::exists(s2 / "pair_right/rgb/000001.png"));
   EXPECT_FALSE(fs::exists(s2 / "pair_right/rgb/000002.png"));
 
-  const fs::path merged = fs::temp_directory_path() / "airis_balls_merged";
+  const fs::path merged = airis::testing::TestTempDir() / "airis_balls_merged";
   fs::remove_all(merged);
   const auto r = RunAiris("dataset merge " + s3.string() + " " + s1.string() + " " + s2.string() +
                           " --out " + merged.string());
@@ -196,7 +197,7 @@ TEST(DatasetLayoutTest, MergeRefusesShardsThatDoNotMakeOneDataset) {
   const fs::path other = MakeBalls("bad_other_seed", "--shard 2/2 --cameras down", 12);
   const fs::path whole = MakeBalls("bad_whole", "--cameras down");
   auto merge = [](const std::vector<fs::path>& shards) {
-    const fs::path out = fs::temp_directory_path() / "airis_balls_bad_merge";
+    const fs::path out = airis::testing::TestTempDir() / "airis_balls_bad_merge";
     fs::remove_all(out);
     std::string args = "dataset merge";
     for (const auto& s : shards) args += " " + s.string();
@@ -230,7 +231,7 @@ TEST(DatasetLayoutTest, MergeRefusesShardsThatDoNotMakeOneDataset) {
   for (const char* bad : {"0/2", "3/2", "2", "a/b", "1/2/3"}) {
     const auto e = RunAiris(
         "dataset " + BallsScene().string() + " --mission " + BallsMission().string() + " --out " +
-        (fs::temp_directory_path() / "airis_balls_never").string() + " --shard " + bad);
+        (airis::testing::TestTempDir() / "airis_balls_never").string() + " --shard " + bad);
     EXPECT_EQ(e.exit_code, 2) << bad;
     EXPECT_NE(e.err.find("--shard: expected K/N with 1 <= K <= N, e.g. 2/8 (got '" +
                          std::string(bad) + "')"),

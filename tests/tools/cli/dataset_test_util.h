@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/dataset/file_io.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools::testing {
 
@@ -28,12 +29,7 @@ inline std::map<std::string, std::string> AllFiles(const std::filesystem::path& 
   return files;
 }
 
-/// Writes `text` to `name` in the system's temporary folder; returns its path.
-inline std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path) << text;
-  return path;
-}
+using airis::testing::WriteTempFile;
 
 /// "000042" for frame 42.
 inline std::string FrameName(std::int64_t index) {

@@ -8,6 +8,7 @@
 
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {
@@ -19,13 +20,13 @@ using Result = testing::CommandResult;
 Result RunAiris(const std::string& args) { return testing::RunAiris(&AddRunCommand, args); }
 
 fs::path FreshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("airis_run_" + name);
+  const fs::path dir = airis::testing::TestTempDir() / ("airis_run_" + name);
   fs::remove_all(dir);
   return dir;
 }
 
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const fs::path path = fs::temp_directory_path() / name;
+  const fs::path path = airis::testing::TestTempDir() / name;
   std::ofstream(path) << text;
   return path.string();
 }

@@ -6,6 +6,7 @@
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
 #include "tests/tools/cli/run_airis.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {
@@ -13,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(ScenePreviewTest, WritesThreePanelsFromAPoseOrASceneCamera) {
-  const fs::path out = fs::temp_directory_path() / "airis_preview.png";
+  const fs::path out = airis::testing::TestTempDir() / "airis_preview.png";
   fs::remove(out);
   auto r = testing::RunAiris(&AddSceneCommand,
                              "scene preview scenes/city.yaml --pose 150,-150,-60,45,-25 --out " + out.string());

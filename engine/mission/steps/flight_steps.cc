@@ -1,0 +1,169 @@
+#include "engine/mission/steps/flight_steps.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace airis::engine {
+namespace {
+
+constexpr double kTakeoffTolerance_m = 0.3;
+constexpr double kSettledSpeed_m_s = 0.3;
+constexpr double kYawTolerance_rad = 2.0 * std::numbers::pi / 180.0;
+
+double WrapPi(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
+
+// Holds one command; done when `done(context)` says so.
+template <class Done>
+class HoldStep final : public ActiveStep {
+ public:
+  HoldStep(const VehicleCommand& hold, Done done) : hold_(hold), done_(std::move(done)) {
+    target_W = hold.position_W;
+  }
+  bool Update(const StepContext& context, VehicleCommand* command) override {
+    *command = hold_;
+    return done_(context, command);
+  }
+
+ private:
+  VehicleCommand hold_;
+  Done done_;
+};
+
+template <class Done>
+std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_s,
+                                     double timeout_s, Done done) {
+  auto step = std::make_unique<HoldStep<Done>>(hold, std::move(done));
+  step->nominal_s = nominal_s;
+  step->timeout_s = timeout_s;
+  return step;
+}
+
+}  // namespace
+
+void TakeoffStep::Validate() const {
+  RequirePositive("altitude_m", altitude_m);
+  RequireNonNegative("timeout_s", timeout_s);
+}
+
+double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
+  const double z = plan.home_W.z() - altitude_m;
+  const double climb_s = std::abs(z - plan.position_W.z());  // at 1 m/s
+  plan.position_W.z() = z;
+  return climb_s;
+}
+
+std::unique_ptr<ActiveStep> TakeoffStep::Start(const StepContext& c, const VehicleCommand&) const {
+  const Vec3& p = c.state->p_W;
+  const VehicleCommand hold =
+      HoldCommand(Vec3(p.x(), p.y(), c.home_W.z() - altitude_m), YawOf(*c.state));
+  const Vec3 target = hold.position_W;
+  return MakeHold(hold, std::abs(target.z() - p.z()), timeout_s,
+                  [target](const StepContext& c, VehicleCommand*) {
+                    return (c.state->p_W - target).norm() < kTakeoffTolerance_m &&
+                           c.state->v_W.norm() < kSettledSpeed_m_s;
+                  });
+}
+
+void GotoStep::Validate() const {
+  Require(position_ned_m.has_value() != geodetic.has_value(), "position_ned_m",
+          "give exactly one of position_ned_m and geodetic");
+  if (position_ned_m) RequireFinite("position_ned_m", *position_ned_m);
+  if (geodetic) {
+    RequireInRange("geodetic[0]", (*geodetic)[0], -90.0, 90.0);
+    RequireInRange("geodetic[1]", (*geodetic)[1], -180.0, 180.0);
+    RequireInRange("geodetic[2]", (*geodetic)[2], -5000.0, 100000.0);
+  }
+  RequirePositive("speed_m_s", speed_m_s);
+  if (yaw_deg) RequireInRange("yaw_deg", *yaw_deg, -360.0, 360.0);
+  RequirePositive("acceptance_radius_m", acceptance_radius_m);
+  RequireNonNegative("timeout_s", timeout_s);
+}
+
+Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame) const {
+  if (position_ned_m) return *position_ned_m;
+  return frame.ToNed(
+      {DegToRad((*geodetic)[0]), DegToRad((*geodetic)[1]), (*geodetic)[2]});
+}
+
+double GotoStep::EstimateDuration_s(StepPlan& plan) const {
+  const Vec3 to = CalcTarget_W(*plan.frame);
+  const double s = (to - plan.position_W).norm() / speed_m_s;
+  plan.position_W = to;
+  return s;
+}
+
+std::unique_ptr<ActiveStep> GotoStep::Start(const StepContext& c, const VehicleCommand&) const {
+  const Vec3 target = CalcTarget_W(*c.frame);
+  const Vec3 travel = target - c.state->p_W;
+  double yaw = YawOf(*c.state);
+  if (yaw_deg) {
+    yaw = DegToRad(*yaw_deg);
+  } else if (travel.head<2>().norm() > 1.0) {
+    yaw = std::atan2(travel.y(), travel.x());
+  }
+  VehicleCommand hold = HoldCommand(target, yaw);
+  hold.speed_limit_m_s = speed_m_s;
+  const double radius = acceptance_radius_m;
+  return MakeHold(hold, travel.norm() / speed_m_s, timeout_s,
+                  [target, radius](const StepContext& c, VehicleCommand*) {
+                    return (c.state->p_W - target).norm() < radius;
+                  });
+}
+
+void HoverStep::Validate() const {
+  RequireNonNegative("duration_s", duration_s);
+  RequireNonNegative("timeout_s", timeout_s);
+}
+
+double HoverStep::EstimateDuration_s(StepPlan&) const { return duration_s; }
+
+std::unique_ptr<ActiveStep> HoverStep::Start(const StepContext& c, const VehicleCommand&) const {
+  // The position where the step began, not the previous step's target.
+  const double duration = duration_s;
+  return MakeHold(HoldCommand(c.state->p_W, YawOf(*c.state)), duration, timeout_s,
+                  [duration](const StepContext& c, VehicleCommand*) {
+                    return c.elapsed_s >= duration;
+                  });
+}
+
+void YawStep::Validate() const {
+  RequireInRange("yaw_deg", yaw_deg, -360.0, 360.0);
+  RequireNonNegative("timeout_s", timeout_s);
+}
+
+double YawStep::EstimateDuration_s(StepPlan&) const {
+  return std::numbers::pi;  // half a turn at 1 rad/s
+}
+
+std::unique_ptr<ActiveStep> YawStep::Start(const StepContext&, const VehicleCommand& hold) const {
+  VehicleCommand turn = hold;
+  turn.yaw_rad = DegToRad(yaw_deg);
+  const double yaw = turn.yaw_rad;
+  return MakeHold(turn, std::numbers::pi, timeout_s,
+                  [yaw](const StepContext& c, VehicleCommand*) {
+                    return std::abs(WrapPi(YawOf(*c.state) - yaw)) < kYawTolerance_rad &&
+                           std::abs(c.state->w_B.z()) < 0.1;
+                  });
+}
+
+void LandStep::Validate() const { RequireNonNegative("timeout_s", timeout_s); }
+
+double LandStep::EstimateDuration_s(StepPlan& plan) const {
+  const double s = std::abs(plan.home_W.z() - plan.position_W.z());  // at 1 m/s
+  plan.position_W.z() = plan.home_W.z();
+  return s;
+}
+
+std::unique_ptr<ActiveStep> LandStep::Start(const StepContext& c,
+                                            const VehicleCommand& hold) const {
+  VehicleCommand land = hold;
+  land.mode = CommandMode::kLand;
+  return MakeHold(land, std::abs(c.home_W.z() - c.state->p_W.z()), timeout_s,
+                  [](const StepContext& c, VehicleCommand* command) {
+                    if (!c.landed) return false;
+                    command->mode = CommandMode::kDisarmed;
+                    return true;
+                  });
+}
+
+}  // namespace airis::engine

@@ -1,0 +1,126 @@
+#include "engine/mission/steps/host_steps.h"
+
+#include <numbers>
+
+namespace airis::engine {
+namespace {
+
+// A step that leaves the command as it is: runs `fn` until it returns true.
+template <class Fn>
+class FnStep final : public ActiveStep {
+ public:
+  explicit FnStep(Fn fn) : fn_(std::move(fn)) {}
+  bool Update(const StepContext& context, VehicleCommand* command) override {
+    return fn_(context, command);
+  }
+
+ private:
+  Fn fn_;
+};
+
+template <class Fn>
+std::unique_ptr<ActiveStep> MakeStep(const VehicleCommand& hold, double nominal_s,
+                                     double timeout_s, Fn fn) {
+  auto step = std::make_unique<FnStep<Fn>>(std::move(fn));
+  step->nominal_s = nominal_s;
+  step->timeout_s = timeout_s;
+  step->target_W = hold.position_W;
+  return step;
+}
+
+class RandomPoses final : public ActiveStep {
+ public:
+  RandomPoses(const RandomPosesStep& step, const VehicleCommand& hold) : step_(step), hold_(hold) {
+    nominal_s = step.count * step.dwell_s;
+    target_W = hold.position_W;
+  }
+
+  bool Update(const StepContext& context, VehicleCommand* command) override {
+    const RandomPosesStep& r = step_;
+    // Pose k is taken at k * dwell; the step ends one dwell after the last pose.
+    while (index_ < r.count && context.elapsed_s >= index_ * r.dwell_s) {
+      RigidBodyState pose;
+      for (int i = 0; i < 3; ++i) pose.p_W[i] = context.stream->Uniform(r.min_ned_m[i], r.max_ned_m[i]);
+      const double tilt = DegToRad(r.max_tilt_deg);
+      pose.q_WB = QuatFromEuler({context.stream->Uniform(-tilt, tilt),
+                                 context.stream->Uniform(-tilt, tilt),
+                                 context.stream->Uniform(-std::numbers::pi, std::numbers::pi)});
+      context.host->HoldVehicleAt(pose, index_);
+      hold_ = HoldCommand(pose.p_W, EulerFromQuat(pose.q_WB).yaw_rad);
+      target_W = pose.p_W;
+      ++index_;
+    }
+    *command = hold_;
+    if (context.elapsed_s >= r.count * r.dwell_s) {
+      context.host->ReleaseVehicle();
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  RandomPosesStep step_;
+  VehicleCommand hold_;
+  int index_ = 0;
+};
+
+}  // namespace
+
+void WaitStep::Validate() const { RequireNonNegative("duration_s", duration_s); }
+
+double WaitStep::EstimateDuration_s(StepPlan&) const { return duration_s; }
+
+std::unique_ptr<ActiveStep> WaitStep::Start(const StepContext&, const VehicleCommand& hold) const {
+  const double duration = duration_s;
+  // A wait cannot time out.
+  return MakeStep(hold, duration, -1.0, [duration](const StepContext& c, VehicleCommand*) {
+    return c.elapsed_s >= duration;
+  });
+}
+
+void CaptureStep::Validate() const { RequireNonNegative("rate_hz", rate_hz); }
+
+double CaptureStep::EstimateDuration_s(StepPlan&) const { return 0.0; }
+
+std::unique_ptr<ActiveStep> CaptureStep::Start(const StepContext&,
+                                               const VehicleCommand& hold) const {
+  const CaptureStep capture = *this;
+  return MakeStep(hold, 0.0, 0.0, [capture](const StepContext& c, VehicleCommand*) {
+    c.host->SetCapture(capture);
+    return true;
+  });
+}
+
+void RandomPosesStep::Validate() const {
+  Require(count >= 1, "count", "must be at least 1 (got " + std::to_string(count) + ")");
+  RequireFinite("min_ned_m", min_ned_m);
+  RequireFinite("max_ned_m", max_ned_m);
+  for (int i = 0; i < 3; ++i) {
+    Require(min_ned_m[i] <= max_ned_m[i], "max_ned_m",
+            "every component must be >= the same component of min_ned_m");
+  }
+  RequireInRange("max_tilt_deg", max_tilt_deg, 0.0, 89.0);
+  RequirePositive("dwell_s", dwell_s);
+}
+
+double RandomPosesStep::EstimateDuration_s(StepPlan&) const { return count * dwell_s; }
+
+std::unique_ptr<ActiveStep> RandomPosesStep::Start(const StepContext&,
+                                                   const VehicleCommand& hold) const {
+  return std::make_unique<RandomPoses>(*this, hold);
+}
+
+void SetWindStep::Validate() const { RequireFinite("velocity_ned_m_s", velocity_ned_m_s); }
+
+double SetWindStep::EstimateDuration_s(StepPlan&) const { return 0.0; }
+
+std::unique_ptr<ActiveStep> SetWindStep::Start(const StepContext&,
+                                               const VehicleCommand& hold) const {
+  const Vec3 wind = velocity_ned_m_s;
+  return MakeStep(hold, 0.0, 0.0, [wind](const StepContext& c, VehicleCommand*) {
+    c.host->SetWind(wind);
+    return true;
+  });
+}
+
+}  // namespace airis::engine

@@ -1,0 +1,104 @@
+#pragma once
+
+// Steps that move a reference along a path for the vehicle to follow: path, survey, orbit
+// (docs/mission-format.md, "How the vehicle follows the steps").
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "engine/core/config.h"
+#include "engine/mission/mission_step.h"
+
+namespace airis::engine {
+
+/// How the reference of path, survey and orbit moves. Its speed ramps up and down at
+/// kPathAccel_m_s2, slows for corners so that v^2 / r <= kPathLateralAccel_m_s2, keeps within the
+/// climb and descent limits, and waits when the vehicle falls more than max(2 m, one second of
+/// travel) behind: a multirotor can follow it closely.
+inline constexpr double kPathAccel_m_s2 = 2.0;         ///< along-path acceleration of the reference
+inline constexpr double kPathLateralAccel_m_s2 = 3.0;  ///< centripetal acceleration in corners
+inline constexpr double kPathEndTolerance_m = 0.3;     ///< a path is done within this of its end
+inline constexpr double kPathMaxClimb_m_s = 3.0;       ///< vertical speed limits of the reference,
+inline constexpr double kPathMaxDescent_m_s = 2.0;     ///< below the default controller's 4 and 2.5
+
+/// Fly through waypoints at a speed, rounding each corner with an arc of `corner_radius_m`.
+struct PathStep {
+  static constexpr std::string_view kKind = "path";
+  static constexpr bool kNeedsHost = false;
+  std::vector<Vec3> waypoints_ned_m;
+  double speed_m_s = 5.0;
+  double corner_radius_m = 2.0;
+  std::optional<double> yaw_deg;  ///< unset = face the direction of travel
+  double timeout_s = 0.0;
+  template <class V>
+  void Visit(V& v) {
+    v.Field("waypoints_ned_m", waypoints_ned_m, "list of [north, east, down] points (m)");
+    v.Field("speed_m_s", speed_m_s, "speed along the path (m/s)");
+    v.Field("corner_radius_m", corner_radius_m, "radius of the arc at each corner (m)");
+    v.Field("yaw_deg", yaw_deg, "heading to hold (deg); default: face travel");
+    v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
+  }
+  void Validate() const;
+  double EstimateDuration_s(StepPlan& plan) const;
+  std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
+};
+
+/// Lawnmower coverage of a polygon (or rectangle) at an altitude with a line spacing: the usual way
+/// to cover an area for a dataset.
+struct SurveyStep {
+  static constexpr std::string_view kKind = "survey";
+  static constexpr bool kNeedsHost = false;
+  std::vector<Vec3> polygon_ned_m;  ///< corners [north, east, (ignored)]; two corners = a rectangle
+  double altitude_m = 30.0;         ///< above the start point
+  double spacing_m = 20.0;          ///< distance between lines
+  double heading_deg = 0.0;         ///< direction of the lines (deg from north)
+  double speed_m_s = 6.0;
+  double corner_radius_m = 3.0;
+  double timeout_s = 0.0;
+  template <class V>
+  void Visit(V& v) {
+    v.Field("polygon_ned_m", polygon_ned_m,
+            "corners [north, east, 0] (m); two corners give the rectangle between them");
+    v.Field("altitude_m", altitude_m, "height above the start point (m)");
+    v.Field("spacing_m", spacing_m, "distance between survey lines (m)");
+    v.Field("heading_deg", heading_deg, "direction of the lines (deg from north)");
+    v.Field("speed_m_s", speed_m_s, "speed along the lines (m/s)");
+    v.Field("corner_radius_m", corner_radius_m, "turn radius at line ends (m)");
+    v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
+  }
+  void Validate() const;
+  /// The lawnmower's waypoints, at `altitude_m` above `home_W`.
+  std::vector<Vec3> CalcWaypoints_W(const Vec3& home_W) const;
+  double EstimateDuration_s(StepPlan& plan) const;
+  std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
+};
+
+/// Circle a centre at a radius and speed for a number of turns, facing the centre (for cameras) or
+/// travel.
+struct OrbitStep {
+  static constexpr std::string_view kKind = "orbit";
+  static constexpr bool kNeedsHost = false;
+  Vec3 center_ned_m = Vec3::Zero();  ///< centre; its down coordinate is the flight altitude
+  double radius_m = 20.0;
+  double speed_m_s = 4.0;
+  double turns = 1.0;
+  bool face_center = true;
+  bool clockwise = true;  ///< seen from above
+  double timeout_s = 0.0;
+  template <class V>
+  void Visit(V& v) {
+    v.Field("center_ned_m", center_ned_m, "orbit centre [north, east, down] (m)");
+    v.Field("radius_m", radius_m, "orbit radius (m)");
+    v.Field("speed_m_s", speed_m_s, "speed along the circle (m/s)");
+    v.Field("turns", turns, "number of turns");
+    v.Field("face_center", face_center, "true: nose (and cameras) toward the centre");
+    v.Field("clockwise", clockwise, "direction seen from above");
+    v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
+  }
+  void Validate() const;
+  double EstimateDuration_s(StepPlan& plan) const;
+  std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
+};
+
+}  // namespace airis::engine
