@@ -87,8 +87,8 @@ void MaterialConfig::Validate() const {
 }
 
 void GroundConfig::Validate() const {
-  RequirePositive("size_m[0]", size_m[0]);
-  RequirePositive("size_m[1]", size_m[1]);
+  RequirePositive("size_ne_m[0]", size_m[0]);
+  RequirePositive("size_ne_m[1]", size_m[1]);
   ValidateNested(material, "material");
   Require(!class_name.empty(), "class", "must not be empty");
 }
@@ -102,8 +102,8 @@ void ClassConfig::Validate() const {
 void RepeatConfig::Validate() const {
   RequireInRange("count", count, 1, 65535);
   RequireInRange("rows", rows, 1, 65535);
-  RequireVectorFinite("step_m", step_m);
-  RequireVectorFinite("row_step_m", row_step_m);
+  RequireVectorFinite("step_ned_m", step_m);
+  RequireVectorFinite("row_step_ned_m", row_step_m);
 }
 
 void ObjectConfig::Validate() const {
@@ -111,7 +111,7 @@ void ObjectConfig::Validate() const {
   const bool has_primitive = primitive != engine::Primitive::kNone;
   Require(has_mesh || has_primitive, "mesh", "give a mesh file or a primitive");
   Require(!(has_mesh && has_primitive), "primitive", "give a mesh file or a primitive, not both");
-  RequireVectorFinite("position_m", position_m);
+  RequireVectorFinite("position_ned_m", position_m);
   RequireFinite("yaw_deg", yaw_deg);
   RequireFinite("pitch_deg", pitch_deg);
   RequireFinite("roll_deg", roll_deg);
@@ -122,13 +122,13 @@ void ObjectConfig::Validate() const {
 }
 
 void AreaConfig::Validate() const {
-  Require(center_m.allFinite(), "center_m", "must be finite");
-  RequirePositive("size_m[0]", size_m[0]);
-  RequirePositive("size_m[1]", size_m[1]);
-  Require(polygon_m.empty() || polygon_m.size() >= 3, "polygon_m",
+  Require(center_m.allFinite(), "center_ne_m", "must be finite");
+  RequirePositive("size_ne_m[0]", size_m[0]);
+  RequirePositive("size_ne_m[1]", size_m[1]);
+  Require(polygon_m.empty() || polygon_m.size() >= 3, "polygon_ne_m",
           "a polygon needs at least 3 corners (got " + std::to_string(polygon_m.size()) + ")");
   for (std::size_t i = 0; i < polygon_m.size(); ++i) {
-    Require(polygon_m[i].allFinite(), Index("polygon_m", i), "must be finite");
+    Require(polygon_m[i].allFinite(), Index("polygon_ne_m", i), "must be finite");
   }
 }
 
@@ -136,15 +136,15 @@ void CityConfig::Validate() const {
   ValidateNested(area, "area");
   Require(area.polygon_m.empty(), "area.polygon_m",
           "a city covers a rectangle; polygons are for forests");
-  RequirePositive("block_size_m[0]", block_size_m[0]);
-  RequirePositive("block_size_m[1]", block_size_m[1]);
+  RequirePositive("block_size_ne_m[0]", block_size_m[0]);
+  RequirePositive("block_size_ne_m[1]", block_size_m[1]);
   RequirePositive("street_width_m", street_width_m);
   RequireNonNegative("sidewalk_width_m", sidewalk_width_m);
   Require(2.0 * sidewalk_width_m < block_size_m.minCoeff(), "sidewalk_width_m",
           "sidewalks on both sides must leave room in the block (got " +
               engine::FormatNumber(sidewalk_width_m) + " m)");
-  RequirePositive("lot_size_m[0]", lot_size_m[0]);
-  RequirePositive("lot_size_m[1]", lot_size_m[1]);
+  RequirePositive("lot_size_ne_m[0]", lot_size_m[0]);
+  RequirePositive("lot_size_ne_m[1]", lot_size_m[1]);
   RequireInRange("building_probability", building_probability, 0.0, 1.0);
   RequireRange("footprint_fill", footprint_fill);
   Require(footprint_fill[0] > 0.0 && footprint_fill[1] <= 1.0, "footprint_fill",
@@ -153,7 +153,7 @@ void CityConfig::Validate() const {
   RequireRange("tall_height_m", tall_height_m);
   RequirePositive("low_height_m[0]", low_height_m[0]);
   RequirePositive("tall_height_m[0]", tall_height_m[0]);
-  Require(downtown_center_m.allFinite(), "downtown_center_m", "must be finite");
+  Require(downtown_center_m.allFinite(), "downtown_center_ne_m", "must be finite");
   RequirePositive("downtown_radius_m", downtown_radius_m);
   RequireNonNegative("flat_roof_above_m", flat_roof_above_m);
   Require(!roof_shapes.empty(), "roof_shapes", "give at least one roof shape");
@@ -181,7 +181,7 @@ void SpeciesConfig::Validate() const {
 }
 
 void ClearingConfig::Validate() const {
-  Require(center_m.allFinite(), "center_m", "must be finite");
+  Require(center_m.allFinite(), "center_ne_m", "must be finite");
   RequirePositive("radius_m", radius_m);
 }
 
@@ -213,7 +213,7 @@ void GeneratorConfig::Validate() const {
 }
 
 void StartStateConfig::Validate() const {
-  RequireVectorFinite("position_m", position_m);
+  RequireVectorFinite("position_ned_m", position_m);
   RequireInRange("roll_deg", roll_deg, -180.0, 180.0);
   RequireInRange("pitch_deg", pitch_deg, -90.0, 90.0);
   RequireFinite("yaw_deg", yaw_deg);

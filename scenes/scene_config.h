@@ -124,7 +124,8 @@ struct GroundConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("enabled", enabled, "false = no ground plane");
-    v.Field("size_m", size_m,
+    v.Renamed("size_m", "size_ne_m");
+    v.Field("size_ne_m", size_m,
             "extent [north, east] of the ground plane (m), centred on the origin");
     v.Field("material", material, "ground appearance and contact");
     v.Field("class", class_name, "semantic class of the ground");
@@ -157,9 +158,11 @@ struct RepeatConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("count", count, "copies along step_m (>= 1)");
-    v.Field("step_m", step_m, "offset between copies, world NED (m)");
+    v.Renamed("step_m", "step_ned_m");
+    v.Field("step_ned_m", step_m, "offset between copies, world NED (m)");
     v.Field("rows", rows, "rows of copies along row_step_m (>= 1)");
-    v.Field("row_step_m", row_step_m, "offset between rows, world NED (m)");
+    v.Renamed("row_step_m", "row_step_ned_m");
+    v.Field("row_step_ned_m", row_step_m, "offset between rows, world NED (m)");
   }
   void Validate() const;
 };
@@ -191,7 +194,8 @@ struct ObjectConfig {
     v.Field("primitive", primitive,
             "unit primitive instead of a mesh (box 1x1x1, diameter-1 sphere, ...)");
     v.Field("mesh_axes", mesh_axes, "axes the mesh file is authored in: y_up (glTF), z_up or ned");
-    v.Field("position_m", position_m, "position of the object's origin, world NED (m)");
+    v.Renamed("position_m", "position_ned_m");
+    v.Field("position_ned_m", position_m, "position of the object's origin, world NED (m)");
     v.Field("yaw_deg", yaw_deg, "rotation about down, applied first (deg)");
     v.Field("pitch_deg", pitch_deg, "rotation about the rotated y axis (deg)");
     v.Field("roll_deg", roll_deg, "rotation about the rotated x axis, applied last (deg)");
@@ -214,9 +218,12 @@ struct AreaConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("center_m", center_m, "centre of the rectangle [north, east] (m)");
-    v.Field("size_m", size_m, "extent of the rectangle [north, east] (m)");
-    v.Field("polygon_m", polygon_m,
+    v.Renamed("center_m", "center_ne_m");
+    v.Field("center_ne_m", center_m, "centre of the rectangle [north, east] (m)");
+    v.Renamed("size_m", "size_ne_m");
+    v.Field("size_ne_m", size_m, "extent of the rectangle [north, east] (m)");
+    v.Renamed("polygon_m", "polygon_ne_m");
+    v.Field("polygon_ne_m", polygon_m,
             "corners [north, east] (m) of a polygon used instead of the rectangle");
   }
   void Validate() const;
@@ -260,10 +267,12 @@ struct CityConfig {
   void Visit(V& v) {
     v.Field("name", name, "random stream name (stream generators/NAME); default FILESTEM/cityK");
     v.Field("area", area, "area covered by the street grid (rectangle only)");
-    v.Field("block_size_m", block_size_m, "block size between streets [north, east] (m)");
+    v.Renamed("block_size_m", "block_size_ne_m");
+    v.Field("block_size_ne_m", block_size_m, "block size between streets [north, east] (m)");
     v.Field("street_width_m", street_width_m, "street width kerb to kerb (m)");
     v.Field("sidewalk_width_m", sidewalk_width_m, "sidewalk width around each block (m)");
-    v.Field("lot_size_m", lot_size_m,
+    v.Renamed("lot_size_m", "lot_size_ne_m");
+    v.Field("lot_size_ne_m", lot_size_m,
             "nominal lot size [north, east] (m); a block holds whole lots");
     v.Field("building_probability", building_probability, "chance a lot has a building, 0..1");
     v.Field("footprint_fill", footprint_fill,
@@ -271,7 +280,8 @@ struct CityConfig {
     v.Field("low_height_m", low_height_m, "[min, max] height of buildings far from downtown (m)");
     v.Field("tall_height_m", tall_height_m,
             "[min, max] height of towers at the downtown centre (m)");
-    v.Field("downtown_center_m", downtown_center_m,
+    v.Renamed("downtown_center_m", "downtown_center_ne_m");
+    v.Field("downtown_center_ne_m", downtown_center_m,
             "centre of the tall district [north, east] (m)");
     v.Field("downtown_radius_m", downtown_radius_m,
             "tall-to-low fade radius (m): weight of tall heights exp(-(d/r)^2)");
@@ -333,7 +343,8 @@ struct ClearingConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("center_m", center_m, "centre [north, east] (m)");
+    v.Renamed("center_m", "center_ne_m");
+    v.Field("center_ne_m", center_m, "centre [north, east] (m)");
     v.Field("radius_m", radius_m, "radius (m)");
   }
   void Validate() const;
@@ -413,7 +424,8 @@ struct StartStateConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("position_m", position_m, "start position of the centre of mass, world NED (m)");
+    v.Renamed("position_m", "position_ned_m");
+    v.Field("position_ned_m", position_m, "start position of the centre of mass, world NED (m)");
     v.Field("roll_deg", roll_deg, "start roll (deg), applied last of yaw, pitch, roll");
     v.Field("pitch_deg", pitch_deg, "start pitch (deg, nose up positive)");
     v.Field("yaw_deg", yaw_deg, "start heading, clockwise from north (deg)");

@@ -293,7 +293,7 @@ class SceneAssembler {
       v.sensors.push_back({e.name, e.spec});
     }
     if (has_ground && v.start.p_W.z() > 0.0) {
-      entry.Fail("start.position_m", "vehicle '" + c.name + "' starts below the ground (z = " +
+      entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts below the ground (z = " +
                                          engine::FormatNumber(v.start.p_W.z()) +
                                          " m; NED z is down, so heights are negative)");
     }
@@ -305,7 +305,7 @@ class SceneAssembler {
       const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.start.p_W).cast<float>();
       if (!scene.models[o.model].bounds.contains(p_O)) continue;
       const engine::SemanticClass* cls = scene.FindClass(o.class_id);
-      entry.Fail("start.position_m", "vehicle '" + c.name + "' starts inside object '" + o.name +
+      entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts inside object '" + o.name +
                                          "' (class " + (cls ? cls->name : "?") + ", instance " +
                                          std::to_string(o.instance_id) + ")");
     }

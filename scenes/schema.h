@@ -43,6 +43,7 @@ struct IsEigenVector<Eigen::Matrix<S, N, 1, O, R, C>> : std::bool_constant<(N > 
 struct Probe {
   template <class T>
   void Field(const char*, T&, const char*) {}
+  void Renamed(const char*, const char*) {}
 };
 template <class T>
 concept HasVisit = requires(T& t, Probe& p) {
@@ -124,6 +125,8 @@ class FieldLister {
  public:
   explicit FieldLister(std::vector<FieldDoc>* out, std::string prefix = "")
       : out_(out), prefix_(std::move(prefix)) {}
+
+  void Renamed(const char*, const char*) {}  // old spellings are not documented keys
 
   template <class T>
   void Field(const char* key, T& member, const char* doc) {

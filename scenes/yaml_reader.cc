@@ -137,8 +137,9 @@ bool YamlReader::FindKey(const YAML::Node& node, const std::string& key, YAML::N
   return false;
 }
 
-void YamlReader::RejectUnknownKeys(const YAML::Node& node, const std::string& key_path,
-                                   const std::vector<std::string>& known) const {
+void YamlReader::RejectUnknownKeys(
+    const YAML::Node& node, const std::string& key_path, const std::vector<std::string>& known,
+    const std::vector<std::pair<std::string, std::string>>& renamed) const {
   std::vector<std::string> seen;
   for (const auto& entry : node) {
     const YAML::Node& key = entry.first;
@@ -153,8 +154,21 @@ void YamlReader::RejectUnknownKeys(const YAML::Node& node, const std::string& ke
     bool is_known = false;
     for (const auto& k : known) is_known = is_known || k == name;
     if (is_known) continue;
+    for (const auto& [old_key, new_key] : renamed) {
+      if (old_key == name) {
+        Fail(key.Mark(), path,
+             "renamed to '" + new_key +
+                 "' in format 2 (names say their frame and unit: docs/architecture.md, \"Names\")");
+      }
+    }
     std::string problem = "unknown key '" + name + "'";
-    if (const auto close = engine::ClosestMatch(name, known)) {
+    // A typo of an old spelling suggests the key's new name.
+    std::vector<std::string> candidates = known;
+    for (const auto& r : renamed) candidates.push_back(r.first);
+    if (auto close = engine::ClosestMatch(name, candidates)) {
+      for (const auto& [old_key, new_key] : renamed) {
+        if (*close == old_key) *close = new_key;
+      }
       problem += " (did you mean '" + *close + "'?)";
     } else {
       problem += " (valid keys: ";

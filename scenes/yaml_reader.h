@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "engine/core/config.h"
@@ -49,6 +50,7 @@ struct IsFixedEigenVector<Eigen::Matrix<S, N, 1, Options, MaxRows, MaxCols>>
 struct NullVisitor {
   template <class T>
   void Field(const char*, T&, const char*) {}
+  void Renamed(const char*, const char*) {}
 };
 
 template <class T>
@@ -158,7 +160,8 @@ class YamlReader {
                                      const std::string& key_path,
                                      const engine::InvalidField& e) const;
   void RejectUnknownKeys(const YAML::Node& node, const std::string& key_path,
-                         const std::vector<std::string>& known) const;
+                         const std::vector<std::string>& known,
+                         const std::vector<std::pair<std::string, std::string>>& renamed = {}) const;
   /// Index of `key` in map `node` and its key mark, or false.
   static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
                       YAML::Mark* mark);
@@ -181,13 +184,18 @@ class YamlReader::FieldReader {
     }
   }
 
+  /// An old spelling of a key (engine/core/config.h): reading it is an error naming the new one.
+  void Renamed(const char* old_key, const char* new_key) { renamed_.emplace_back(old_key, new_key); }
+
   std::vector<std::string>& known() { return known_; }
+  const std::vector<std::pair<std::string, std::string>>& renamed() const { return renamed_; }
 
  private:
   const YamlReader& reader_;
   const YAML::Node& node_;
   const std::string& key_path_;
   std::vector<std::string> known_;
+  std::vector<std::pair<std::string, std::string>> renamed_;
 };
 
 template <class T>
@@ -201,7 +209,7 @@ void YamlReader::ReadStruct(const YAML::Node& node, const YAML::Mark& mark,
     out.Visit(fields);
     std::vector<std::string>& known = fields.known();
     known.insert(known.end(), ignored_keys.begin(), ignored_keys.end());
-    RejectUnknownKeys(node, key_path, known);
+    RejectUnknownKeys(node, key_path, known, fields.renamed());
   }
   Validate(node, mark, key_path, out);
 }

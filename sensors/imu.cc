@@ -14,8 +14,10 @@ constexpr double kDegPerHourToRadPerSecond = 0.017453292519943295 / 3600.0;
 constexpr double kMicroG = 1e-6 * kStandardGravity_m_s2;
 constexpr double kMilliG = 1e-3 * kStandardGravity_m_s2;
 
-const std::string kColumns[] = {"gyro_x_rad_s", "gyro_y_rad_s", "gyro_z_rad_s",
-                                "accel_x_m_s2", "accel_y_m_s2", "accel_z_m_s2"};
+const std::string kColumns[] = {
+    "angular_velocity_sensor_x_rad_s", "angular_velocity_sensor_y_rad_s",
+    "angular_velocity_sensor_z_rad_s", "specific_force_sensor_x_m_s2",
+    "specific_force_sensor_y_m_s2",    "specific_force_sensor_z_m_s2"};
 }  // namespace
 
 void ImuConfig::Validate() const {

@@ -8,7 +8,8 @@ namespace airis::sensors {
 
 namespace {
 constexpr double kGaussPerNanotesla = 1e-5;  // 1 G = 1e-4 T = 1e5 nT
-const std::string kColumns[] = {"mag_x_gauss", "mag_y_gauss", "mag_z_gauss"};
+const std::string kColumns[] = {"magnetic_field_sensor_x_gauss", "magnetic_field_sensor_y_gauss",
+                                "magnetic_field_sensor_z_gauss"};
 }  // namespace
 
 void MagnetometerConfig::Validate() const {
@@ -18,7 +19,7 @@ void MagnetometerConfig::Validate() const {
   engine::RequireNonNegative("field_update_distance_m", field_update_distance_m);
   for (int i = 0; i < 3; ++i) {
     engine::RequireFinite("scale_factor[" + std::to_string(i) + "]", scale_factor[i]);
-    engine::RequireFinite("hard_iron_gauss[" + std::to_string(i) + "]", hard_iron_gauss[i]);
+    engine::RequireFinite("hard_iron_sensor_gauss[" + std::to_string(i) + "]", hard_iron_gauss[i]);
   }
   engine::Require(soft_iron.empty() || soft_iron.size() == 9, "soft_iron",
                   "must be empty or hold 9 numbers (got " + std::to_string(soft_iron.size()) + ")");

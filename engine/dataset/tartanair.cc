@@ -54,9 +54,11 @@ Quat ToTartanAirOrientation(const Quat& q_WC) {
 void WriteTartanAirPoses(const std::filesystem::path& poses_csv,
                          const std::filesystem::path& pose_txt) {
   const CsvText csv = ReadCsvText(poses_csv);
-  const std::size_t px = csv.Column("p_n_m"), py = csv.Column("p_e_m"), pz = csv.Column("p_d_m");
-  const std::size_t qw = csv.Column("q_w"), qx = csv.Column("q_x"), qy = csv.Column("q_y"),
-                    qz = csv.Column("q_z");
+  const std::size_t px = csv.Column("position_ned_x_m"), py = csv.Column("position_ned_y_m"),
+                    pz = csv.Column("position_ned_z_m");
+  const std::size_t qw = csv.Column("attitude_cam_to_ned_w"), qx = csv.Column("attitude_cam_to_ned_x"),
+                    qy = csv.Column("attitude_cam_to_ned_y"),
+                    qz = csv.Column("attitude_cam_to_ned_z");
   std::string text;
   for (std::size_t r = 0; r < csv.rows.size(); ++r) {
     const Quat q_WC(csv.Number(r, qw), csv.Number(r, qx), csv.Number(r, qy), csv.Number(r, qz));

@@ -17,9 +17,14 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
     : world_(world), truth_schedule_(truth_rate_hz) {
   truth_ = std::make_unique<CsvWriter>(
       dir / "truth.csv",
-      TimeColumns({"vehicle", "p_n_m", "p_e_m", "p_d_m", "v_n_m_s", "v_e_m_s", "v_d_m_s", "q_w", "q_x",
-                   "q_y", "q_z", "roll_deg", "pitch_deg", "yaw_deg", "w_x_rad_s", "w_y_rad_s",
-                   "w_z_rad_s", "a_n_m_s2", "a_e_m_s2", "a_d_m_s2", "latitude_deg", "longitude_deg",
+      TimeColumns({"vehicle",
+                   "position_ned_x_m", "position_ned_y_m", "position_ned_z_m",
+                   "velocity_ned_x_m_s", "velocity_ned_y_m_s", "velocity_ned_z_m_s",
+                   "attitude_frd_to_ned_w", "attitude_frd_to_ned_x", "attitude_frd_to_ned_y",
+                   "attitude_frd_to_ned_z", "roll_deg", "pitch_deg", "yaw_deg",
+                   "angular_velocity_frd_x_rad_s", "angular_velocity_frd_y_rad_s",
+                   "angular_velocity_frd_z_rad_s", "acceleration_ned_x_m_s2",
+                   "acceleration_ned_y_m_s2", "acceleration_ned_z_m_s2", "latitude_deg", "longitude_deg",
                    "altitude_m"}));
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     std::vector<std::string> cols = {
@@ -55,8 +60,9 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
   }
   collisions_ = std::make_unique<CsvWriter>(
       dir / "collisions.csv",
-      TimeColumns({"vehicle", "object", "class_id", "instance_id", "point_n_m", "point_e_m", "point_d_m",
-                   "normal_n", "normal_e", "normal_d", "impulse_n_s"}));
+      TimeColumns({"vehicle", "object", "class_id", "instance_id", "point_ned_x_m",
+                   "point_ned_y_m", "point_ned_z_m", "normal_ned_x", "normal_ned_y", "normal_ned_z",
+                   "impulse_n_s"}));
   world.AddCollisionListener([this](const CollisionEvent& e) {
     collisions_->Add(static_cast<std::int64_t>(e.time_ns)).Add(ToSeconds(e.time_ns));
     collisions_->Add(e.vehicle_name).Add(e.object_name);

@@ -15,7 +15,8 @@ struct MountConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("position_m", position_m, "sensor position in the body frame [forward, right, down] (m)");
+    v.Renamed("position_m", "position_frd_m");
+    v.Field("position_frd_m", position_m, "sensor position in the body frame [forward, right, down] (m)");
     v.Field("roll_deg", roll_deg, "roll of the sensor frame relative to the body (deg)");
     v.Field("pitch_deg", pitch_deg, "pitch of the sensor frame relative to the body (deg)");
     v.Field("yaw_deg", yaw_deg, "yaw of the sensor frame relative to the body (deg)");

@@ -39,7 +39,7 @@ class Sensor {
   /// listeners. Returns true when a sample was taken.
   bool Update(const SensorContext& context);
 
-  /// Column names with units of the sample row, e.g. {"gyro_x_rad_s", ...}; constant over the run.
+  /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...}; constant over the run.
   virtual std::span<const std::string> columns() const = 0;
   /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
   virtual void CopyLatestRow(std::span<double> out) const = 0;

@@ -16,7 +16,8 @@ const CameraConfig& Validated(const CameraConfig& config) {
 std::vector<std::string> CameraPoseColumns(const std::string& prefix) {
   std::vector<std::string> out;
   for (const char* c :
-       {"p_WC_x_m", "p_WC_y_m", "p_WC_z_m", "q_WC_w", "q_WC_x", "q_WC_y", "q_WC_z"}) {
+       {"position_ned_x_m", "position_ned_y_m", "position_ned_z_m", "attitude_cam_to_ned_w",
+        "attitude_cam_to_ned_x", "attitude_cam_to_ned_y", "attitude_cam_to_ned_z"}) {
     out.push_back(prefix + c);
   }
   return out;

@@ -98,10 +98,10 @@ void BM_LoadForestScene10k(benchmark::State& state) {
   const std::string text =
       "scene: {name: bench, seed: 1}\n"
       "generators:\n"
-      "  - forest: {area: {size_m: [600, 600]}, density_per_ha: 280, clearings: [{center_m: [0, "
+      "  - forest: {area: {size_ne_m: [600, 600]}, density_per_ha: 280, clearings: [{center_ne_m: [0, "
       "0], radius_m: 10}]}\n"
       "vehicles:\n"
-      "  - {name: d, preset: quad_x, start: {position_m: [0, 0, -0.2]}}\n";
+      "  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, -0.2]}}\n";
   const Scene warm = LoadSceneFromString(text, "bench.yaml");
   for (auto _ : state) {
     Scene s = LoadSceneFromString(text, "bench.yaml");

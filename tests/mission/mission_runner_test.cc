@@ -250,7 +250,7 @@ TEST(MissionRunnerTest, CollisionIsToleratedWithoutAbortOnCollision) {
 TEST(MissionRunnerTest, SurveyCoversTheRectangleAndTracksTheReference) {
   Mission m;
   SurveyStep survey;
-  survey.polygon_ned_m = {Vec3(0, 0, 0), Vec3(60, 40, 0)};
+  survey.polygon_ne_m = {Eigen::Vector2d(0, 0), Eigen::Vector2d(60, 40)};
   survey.altitude_m = 15;
   survey.spacing_m = 20;
   survey.speed_m_s = 6;
@@ -352,7 +352,7 @@ TEST(MissionStepTest, ValidationNamesTheField) {
     EXPECT_EQ(e.field(), "position_ned_m");
   }
   SurveyStep s;
-  s.polygon_ned_m = {Vec3::Zero(), Vec3(10, 10, 0)};
+  s.polygon_ne_m = {Eigen::Vector2d::Zero(), Eigen::Vector2d(10, 10)};
   s.spacing_m = 0;
   try {
     s.Validate();

@@ -69,7 +69,7 @@ TEST(CameraSensorTest, MountPitchedDownSeesTheGroundAtTheHeight) {
   // The pose row: camera 0.5 m below the body.
   std::vector<double> row(camera.columns().size());
   camera.CopyLatestRow(row);
-  EXPECT_EQ(camera.columns()[2], "p_WC_z_m");
+  EXPECT_EQ(camera.columns()[2], "position_ned_z_m");
   EXPECT_DOUBLE_EQ(row[2], -29.5);
 }
 

@@ -24,13 +24,13 @@ TEST(MissionFileTest, ReadsEveryStepKindWithLines) {
   const engine::Mission m = ParseMission(R"(name: demo
 vehicle: drone
 steps:
-  - takeoff: {altitude_m: 25}
+  - takeoff: {height_above_start_m: 25}
   - goto: {position_ned_m: [10, 20, -25], speed_m_s: 4, yaw_deg: 90}
   - path: {waypoints_ned_m: [[0, 0, -20], [30, 0, -20]], corner_radius_m: 3}
   - orbit: {center_ned_m: [0, 0, -30], radius_m: 15, turns: 2}
   - hover: {duration_s: 3}
   - yaw: {yaw_deg: -45}
-  - survey: {polygon_ned_m: [[0, 0, 0], [100, 50, 0]], altitude_m: 40, spacing_m: 15}
+  - survey: {polygon_ne_m: [[0, 0], [100, 50]], height_above_start_m: 40, spacing_m: 15}
   - wait: {duration_s: 1.5}
   - capture: {enabled: true, rate_hz: 10, cameras: [front]}
   - random_poses: {count: 4}
@@ -55,22 +55,22 @@ steps:
 }
 
 TEST(MissionFileTest, UnknownStepSuggestsTheClosestKind) {
-  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n  - gotoo: {position_ned_m: [1, 2, 3]}\n")
+  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - gotoo: {position_ned_m: [1, 2, 3]}\n")
                 .substr(0, 62),
             "missions/m.yaml:3:5: steps[1]: unknown step 'gotoo' (did you m");
   EXPECT_NE(ErrorOf("steps:\n  - gotoo: {}\n").find("did you mean 'goto'?"), std::string::npos);
 }
 
 TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
-  const std::string e = ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n  - goto: {position_ned_m: [1, 2, 3], sped_m_s: 3}\n");
+  const std::string e = ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - goto: {position_ned_m: [1, 2, 3], sped_m_s: 3}\n");
   EXPECT_NE(e.find("missions/m.yaml:3:"), std::string::npos) << e;
   EXPECT_NE(e.find("steps[1].goto"), std::string::npos) << e;
   EXPECT_NE(e.find("speed_m_s"), std::string::npos) << e;
 }
 
 TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
-  const std::string e = ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      altitude_m: -5\n");
-  EXPECT_EQ(e, "missions/m.yaml:4:7: steps[1].takeoff.altitude_m: must be > 0 (got -5)");
+  const std::string e = ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");
+  EXPECT_EQ(e, "missions/m.yaml:4:7: steps[1].takeoff.height_above_start_m: must be > 0 (got -5)");
 }
 
 TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {
@@ -95,6 +95,17 @@ TEST(MissionFileTest, MissingFileIsAClearError) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/mission.yaml"), std::string::npos);
   }
+}
+
+TEST(MissionFileTest, FormatOneSpellingsAreErrorsNamingTheNewKey) {
+  EXPECT_NE(ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n")
+                .find("missions/m.yaml:2:15: steps[0].takeoff.altitude_m: renamed to "
+                      "'height_above_start_m' in format 2"),
+            std::string::npos)
+      << ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n");
+  EXPECT_NE(ErrorOf("steps:\n  - survey: {polygon_ned_m: [[0, 0, 0], [9, 9, 0]]}\n")
+                .find("steps[0].survey.polygon_ned_m: renamed to 'polygon_ne_m'"),
+            std::string::npos);
 }
 
 }  // namespace

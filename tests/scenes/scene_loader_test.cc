@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scenes/scene.h"
+#include "tests/fixtures/temp_dir.h"
 
 namespace airis::scenes {
 namespace {
@@ -17,7 +18,7 @@ using engine::ConfigError;
 class SceneFiles {
  public:
   explicit SceneFiles(const std::string& name)
-      : dir_(fs::path(testing::TempDir()) / ("airis_scene_" + name)) {
+      : dir_(airis::testing::TestTempDir() / ("airis_scene_" + name)) {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -56,7 +57,7 @@ TEST(SceneLoaderTest, UnknownKeyInAnObjectNamesFileLineColumnAndSuggestion) {
                                    "    positon_m: [0, 0, -1]\n");
   EXPECT_EQ(
       LoadError(path),
-      path + ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_m'?)");
+      path + ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_ned_m'?)");
 }
 
 TEST(SceneLoaderTest, WrongTypeAndOutOfRangeNameTheKey) {
@@ -171,29 +172,29 @@ TEST(SceneLoaderTest, VehicleInsideAnObjectNamesBoth) {
   const std::string path =
       f.Write("s.yaml",
               "objects:\n"
-              "  - {name: shed, primitive: box, position_m: [10, 0, -2], scale: [4, 4, 4]}\n"
+              "  - {name: shed, primitive: box, position_ned_m: [10, 0, -2], scale: [4, 4, 4]}\n"
               "vehicles:\n"
               "  - name: drone1\n"
               "    preset: quad_x\n"
-              "    start: {position_m: [11, 1, -1]}\n");
+              "    start: {position_ned_m: [11, 1, -1]}\n");
   EXPECT_EQ(LoadError(path),
             path +
-                ":6:13: vehicles[0].start.position_m: vehicle 'drone1' starts inside object "
+                ":6:13: vehicles[0].start.position_ned_m: vehicle 'drone1' starts inside object "
                 "'shed' (class structure, instance 2)");
 }
 
 TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
   SceneFiles f("vehicles");
   const std::string a = f.Write(
-      "a.yaml", "vehicles:\n  - {name: d, preset: quad_x, start: {position_m: [0, 0, 1]}}\n");
+      "a.yaml", "vehicles:\n  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, 1]}}\n");
   EXPECT_EQ(
       LoadError(a),
-      a + ":2:39: vehicles[0].start.position_m: vehicle 'd' starts below the ground (z = 1 m; "
+      a + ":2:39: vehicles[0].start.position_ned_m: vehicle 'd' starts below the ground (z = 1 m; "
           "NED z is down, so heights are negative)");
   const std::string b = f.Write("b.yaml",
                                 "vehicles:\n"
                                 "  - {name: d, preset: quad_x}\n"
-                                "  - {name: d, preset: quad_x, start: {position_m: [5, 0, -1]}}\n");
+                                "  - {name: d, preset: quad_x, start: {position_ned_m: [5, 0, -1]}}\n");
   EXPECT_EQ(
       LoadError(b),
       b + ":3:6: vehicles[1].name: duplicate vehicle name 'd' (also vehicles[0] at " + b + ":2)");
@@ -206,7 +207,7 @@ TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
   const std::string path = f.Write("s.yaml",
                                    "objects:\n"
                                    "  - primitive: box\n"
-                                   "    repeat: {count: 65535, step_m: [2, 0, 0]}\n");
+                                   "    repeat: {count: 65535, step_ned_m: [2, 0, 0]}\n");
   EXPECT_EQ(
       LoadError(path),
       path + ":3:5: objects[0].repeat: the scene exceeds 65535 objects (instance ids are 16-bit)");
@@ -218,10 +219,10 @@ TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {
   const std::string path =
       f.Write("s.yaml",
               "objects:\n"
-              "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_m: [0, 0, -1],\n"
-              "     repeat: {count: 3, step_m: [2, 0, 0], rows: 2, row_step_m: [0, 2, 0]}}\n"
-              "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_m: [9, 9, -1]}\n"
-              "  - {primitive: cone, position_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
+              "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_ned_m: [0, 0, -1],\n"
+              "     repeat: {count: 3, step_ned_m: [2, 0, 0], rows: 2, row_step_ned_m: [0, 2, 0]}}\n"
+              "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_ned_m: [9, 9, -1]}\n"
+              "  - {primitive: cone, position_ned_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
   const Scene s = LoadScene(path);
   ASSERT_EQ(s.static_scene.objects.size(), 1u + 6u + 1u + 1u);  // ground, 6 copies, d, cone
   std::set<std::uint32_t> ids;
@@ -244,14 +245,14 @@ TEST(SceneLoaderTest, IncludesConcatenateAndTheIncluderWins) {
   SceneFiles f("include");
   f.Write("tiles/a.yaml",
           "scene: {name: tile, seed: 5}\n"
-          "ground: {size_m: [10, 10]}\n"
-          "objects: [{name: from_a, primitive: box, position_m: [3, 0, -1]}]\n");
-  f.Write("tiles/b.yaml", "objects: [{name: from_b, primitive: sphere, position_m: [6, 0, -1]}]\n");
+          "ground: {size_ne_m: [10, 10]}\n"
+          "objects: [{name: from_a, primitive: box, position_ned_m: [3, 0, -1]}]\n");
+  f.Write("tiles/b.yaml", "objects: [{name: from_b, primitive: sphere, position_ned_m: [6, 0, -1]}]\n");
   const std::string top =
       f.Write("top.yaml",
               "include: [tiles/a.yaml, tiles/b.yaml]\n"
               "scene: {name: top}\n"
-              "objects: [{name: own, primitive: box, position_m: [9, 0, -1]}]\n");
+              "objects: [{name: own, primitive: box, position_ned_m: [9, 0, -1]}]\n");
   const Scene s = LoadScene(top);
   EXPECT_EQ(s.name, "top");
   EXPECT_EQ(s.seed, 1u);  // the includer's scene block replaces the tile's as a whole
@@ -267,7 +268,7 @@ TEST(SceneLoaderTest, SameSceneLoadsIdentically) {
   const std::string text =
       "scene: {seed: 77}\n"
       "generators:\n"
-      "  - forest: {area: {size_m: [100, 100]}, density_per_ha: 200}\n";
+      "  - forest: {area: {size_ne_m: [100, 100]}, density_per_ha: 200}\n";
   const Scene a = LoadSceneFromString(text, "mem.yaml");
   const Scene b = LoadSceneFromString(text, "mem.yaml");
   ASSERT_EQ(a.static_scene.objects.size(), b.static_scene.objects.size());
@@ -283,7 +284,7 @@ TEST(SceneLoaderTest, SameSceneLoadsIdentically) {
 TEST(SceneLoaderTest, CustomClassesGetIdsAndClashesAreErrors) {
   const Scene s = LoadSceneFromString(
       "classes: [{name: crate}, {name: drone_dock, id: 200, color: [0, 1, 0]}]\n"
-      "objects: [{primitive: box, class: drone_dock, position_m: [5, 5, -1]}]\n",
+      "objects: [{primitive: box, class: drone_dock, position_ned_m: [5, 5, -1]}]\n",
       "mem.yaml");
   EXPECT_EQ(s.static_scene.objects.back().class_id, 200);
   ASSERT_NE(s.static_scene.FindClass(200), nullptr);
@@ -308,6 +309,33 @@ TEST(SceneLoaderTest, SunFromTimeOfDayAtEquinoxNoon) {
   EXPECT_NEAR(d.norm(), 1.0, 1e-12);
   EXPECT_GT(d.z(), 0.0);  // light travels down
   EXPECT_GT(d.x(), 0.0);  // and north, from a southern sun
+}
+
+TEST(SceneLoaderTest, FormatOneSpellingsAreErrorsNamingTheNewKey) {
+  const auto error = [](const std::string& text) {
+    try {
+      LoadSceneFromString(text, "scenes/old.yaml");
+    } catch (const engine::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error("objects: [{primitive: box, position_m: [0, 0, -1]}]\n"),
+            "scenes/old.yaml:1:28: objects[0].position_m: renamed to 'position_ned_m' in format 2 "
+            "(names say their frame and unit: docs/architecture.md, \"Names\")");
+  EXPECT_NE(error("vehicles:\n  - name: d\n    preset: quad_x\n"
+                  "    sensors: [{imu: {mount: {position_m: [0, 0, 0]}}}]\n")
+                .find("vehicles[0].sensors[0].imu.mount.position_m: renamed to 'position_frd_m'"),
+            std::string::npos);
+  EXPECT_NE(error("vehicles:\n  - name: d\n    preset: quad_x\n"
+                  "    overrides: {rotors: [{thrust_direction: [0, 0, -1]}]}\n")
+                .find("vehicles[0].overrides.rotors[0].thrust_direction: renamed to "
+                      "'thrust_direction_frd'"),
+            std::string::npos);
+  // A typo of an old spelling suggests the new key.
+  EXPECT_NE(error("objects: [{primitive: box, positon_m: [0, 0, -1]}]\n")
+                .find("unknown key 'positon_m' (did you mean 'position_ned_m'?)"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -117,13 +117,13 @@ TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
 TEST(VehiclesSectionTest, BuildWorldPlacesVehiclesAndMountsSensors) {
   const Scene s = LoadSceneFromString(
       "scene: {seed: 5}\n"
-      "objects: [{name: wall, primitive: box, position_m: [10, 0, -5], scale: [1, 20, 10]}]\n"
+      "objects: [{name: wall, primitive: box, position_ned_m: [10, 0, -5], scale: [1, 20, 10]}]\n"
       "vehicles:\n"
       "  - name: a\n"
       "    preset: quad_x\n"
-      "    start: {position_m: [0, 0, -0.2], yaw_deg: 90}\n"
+      "    start: {position_ned_m: [0, 0, -0.2], yaw_deg: 90}\n"
       "    sensors: [{imu: {}}, {gps: {}}, {rangefinder: {}}]\n"
-      "  - {name: b, preset: octo_x, start: {position_m: [0, 5, -0.2]}}\n",
+      "  - {name: b, preset: octo_x, start: {position_ned_m: [0, 5, -0.2]}}\n",
       "scenes/v.yaml");
   const auto world = BuildWorld(s);
   ASSERT_EQ(world->vehicle_count(), 2u);
@@ -144,7 +144,7 @@ TEST(VehiclesSectionTest, SensorFasterThanThePhysicsIsRejectedNamingIt) {
       "vehicles:\n"
       "  - name: a\n"
       "    preset: quad_x\n"
-      "    start: {position_m: [0, 0, -0.2]}\n"
+      "    start: {position_ned_m: [0, 0, -0.2]}\n"
       "    sensors: [{barometer: {}}, {imu: {rate_hz: 2000}}]\n",
       "scenes/v.yaml");
   try {
@@ -161,7 +161,7 @@ TEST(VehiclesSectionTest, CamerasAreBuiltOnOneSharedRenderScene) {
       "vehicles:\n"
       "  - name: a\n"
       "    preset: quad_x\n"
-      "    start: {position_m: [0, 0, -0.2]}\n"
+      "    start: {position_ned_m: [0, 0, -0.2]}\n"
       "    sensors:\n"
       "      - {name: front, camera: {rate_hz: 10, width_px: 64, height_px: 48}}\n"
       "      - {name: pair, stereo_camera: {camera: {rate_hz: 5, width_px: 32, height_px: 24}}}\n",

@@ -31,7 +31,7 @@ nlohmann::json RendererJson(const engine::World& world) {
 
 nlohmann::json MountJson(const engine::ImageStream& s) {
   const engine::MountConfig& m = s.mount;
-  nlohmann::json out = {{"position_m", {m.position_m.x(), m.position_m.y(), m.position_m.z()}},
+  nlohmann::json out = {{"position_frd_m", {m.position_m.x(), m.position_m.y(), m.position_m.z()}},
                         {"roll_deg", m.roll_deg},
                         {"pitch_deg", m.pitch_deg},
                         {"yaw_deg", m.yaw_deg}};
@@ -96,7 +96,7 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
                                    double sim_s) {
   nlohmann::json m;
   m["format"] = "airis-dataset";
-  m["format_version"] = 1;
+  m["format_version"] = 2;
   m["airis_version"] = kVersion;
   m["complete"] = complete;
   m["scene"] = {

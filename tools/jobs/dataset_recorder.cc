@@ -77,8 +77,10 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
         const engine::TartanAirSlot tartanair{s.rig, s.side};
         rec->writer_camera = writer_.AddCamera(s.name, outputs, tartanair);
         const std::vector<std::string> columns = {
-            "time_ns", "time_s", "frame", "p_n_m",        "p_e_m",         "p_d_m",     "q_w",
-            "q_x",     "q_y",    "q_z",   "latitude_deg", "longitude_deg", "altitude_m"};
+            "time_ns",          "time_s",           "frame",
+            "position_ned_x_m", "position_ned_y_m", "position_ned_z_m",
+            "attitude_cam_to_ned_w", "attitude_cam_to_ned_x", "attitude_cam_to_ned_y",
+            "attitude_cam_to_ned_z", "latitude_deg", "longitude_deg", "altitude_m"};
         rec->poses =
             std::make_unique<engine::CsvWriter>(options_.root / s.name / "poses.csv", columns);
         recordings_.push_back(std::move(rec));

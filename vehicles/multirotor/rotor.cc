@@ -13,19 +13,19 @@ std::span<const engine::EnumName<Spin>> EnumNames(Spin) {
 }
 
 void RotorConfig::Validate() const {
-  for (int i = 0; i < 3; ++i) engine::RequireFinite("position_m", position_m[i]);
+  for (int i = 0; i < 3; ++i) engine::RequireFinite("position_frd_m", position_m[i]);
   engine::Require(thrust_direction.allFinite() && thrust_direction.norm() > 1e-9,
-                  "thrust_direction", "must be a non-zero finite vector");
+                  "thrust_direction_frd", "must be a non-zero finite vector");
   engine::RequirePositive("thrust_coefficient", thrust_coefficient);
   engine::RequireNonNegative("power_coefficient", power_coefficient);
   engine::RequirePositive("diameter_m", diameter_m);
   engine::RequirePositive("max_rpm", max_rpm);
   engine::RequireNonNegative("time_constant_s", time_constant_s);
   if (tiltable) {
-    engine::Require(tilt_axis.allFinite() && tilt_axis.norm() > 1e-9, "tilt_axis",
+    engine::Require(tilt_axis.allFinite() && tilt_axis.norm() > 1e-9, "tilt_axis_frd",
                     "must be a non-zero finite vector");
     if (tilt_pivot_m) {
-      engine::Require(tilt_pivot_m->allFinite(), "tilt_pivot_m", "must be finite");
+      engine::Require(tilt_pivot_m->allFinite(), "tilt_pivot_frd_m", "must be finite");
     }
     engine::RequireInRange("max_tilt_deg", max_tilt_deg, -180.0, 180.0);
     engine::RequirePositive("tilt_rate_deg_s", tilt_rate_deg_s);

@@ -37,9 +37,11 @@ struct RotorConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("position_m", position_m,
+    v.Renamed("position_m", "position_frd_m");
+    v.Field("position_frd_m", position_m,
             "rotor position from the centre of mass [forward, right, down] (m)");
-    v.Field("thrust_direction", thrust_direction,
+    v.Renamed("thrust_direction", "thrust_direction_frd");
+    v.Field("thrust_direction_frd", thrust_direction,
             "thrust direction in the body frame (unit vector; "
             "[0, 0, -1] is up)");
     v.Field("spin", spin, "ccw or cw, seen from the side the thrust points to");
@@ -49,8 +51,10 @@ struct RotorConfig {
     v.Field("max_rpm", max_rpm, "propeller speed at command 1 (rev/min)");
     v.Field("time_constant_s", time_constant_s, "first-order motor lag (s), 0 for none");
     v.Field("tiltable", tiltable, "whether a tilt actuator turns this rotor in flight");
-    v.Field("tilt_axis", tilt_axis, "axis of the tilt in the body frame (unit vector)");
-    v.Field("tilt_pivot_m", tilt_pivot_m,
+    v.Renamed("tilt_axis", "tilt_axis_frd");
+    v.Field("tilt_axis_frd", tilt_axis, "axis of the tilt in the body frame (unit vector)");
+    v.Renamed("tilt_pivot_m", "tilt_pivot_frd_m");
+    v.Field("tilt_pivot_frd_m", tilt_pivot_m,
             "pivot of the tilt in the body frame (m); default: the rotor");
     v.Field("max_tilt_deg", max_tilt_deg, "tilt at tilt command 1 (deg)");
     v.Field("tilt_rate_deg_s", tilt_rate_deg_s, "maximum tilt rate (deg/s)");

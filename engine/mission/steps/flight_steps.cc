@@ -41,7 +41,7 @@ std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_
 }  // namespace
 
 void TakeoffStep::Validate() const {
-  RequirePositive("altitude_m", altitude_m);
+  RequirePositive("height_above_start_m", altitude_m);
   RequireNonNegative("timeout_s", timeout_s);
 }
 

@@ -18,7 +18,8 @@ struct TakeoffStep {
   double timeout_s = 0.0;
   template <class V>
   void Visit(V& v) {
-    v.Field("altitude_m", altitude_m, "height above the start point (m)");
+    v.Renamed("altitude_m", "height_above_start_m");
+    v.Field("height_above_start_m", altitude_m, "height above the start point (m)");
     v.Field("timeout_s", timeout_s,
             "fail the mission if not done after this long (s); 0 = automatic");
   }

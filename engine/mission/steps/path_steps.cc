@@ -177,12 +177,12 @@ std::unique_ptr<ActiveStep> PathStep::Start(const StepContext& c, const VehicleC
 }
 
 void SurveyStep::Validate() const {
-  Require(polygon_ned_m.size() >= 2, "polygon_ned_m",
+  Require(polygon_ne_m.size() >= 2, "polygon_ne_m",
           "needs two corners (a rectangle) or at least three (a polygon)");
-  for (std::size_t i = 0; i < polygon_ned_m.size(); ++i) {
-    RequireFinite("polygon_ned_m[" + std::to_string(i) + "]", polygon_ned_m[i]);
+  for (std::size_t i = 0; i < polygon_ne_m.size(); ++i) {
+    RequireFinite("polygon_ne_m[" + std::to_string(i) + "]", polygon_ne_m[i]);
   }
-  RequirePositive("altitude_m", altitude_m);
+  RequirePositive("height_above_start_m", altitude_m);
   RequirePositive("spacing_m", spacing_m);
   RequireInRange("heading_deg", heading_deg, -360.0, 360.0);
   RequirePositive("speed_m_s", speed_m_s);
@@ -191,7 +191,9 @@ void SurveyStep::Validate() const {
 }
 
 std::vector<Vec3> SurveyStep::CalcWaypoints_W(const Vec3& home_W) const {
-  return CalcLawnmowerWaypoints(polygon_ned_m, spacing_m, DegToRad(heading_deg),
+  std::vector<Vec3> corners;
+  for (const Eigen::Vector2d& c : polygon_ne_m) corners.emplace_back(c.x(), c.y(), 0.0);
+  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg),
                                 home_W.z() - altitude_m);
 }
 

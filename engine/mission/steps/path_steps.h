@@ -49,8 +49,8 @@ struct PathStep {
 struct SurveyStep {
   static constexpr std::string_view kKind = "survey";
   static constexpr bool kNeedsHost = false;
-  std::vector<Vec3> polygon_ned_m;  ///< corners [north, east, (ignored)]; two corners = a rectangle
-  double altitude_m = 30.0;         ///< above the start point
+  std::vector<Eigen::Vector2d> polygon_ne_m;  ///< corners [north, east]; two = a rectangle
+  double altitude_m = 30.0;                   ///< above the start point
   double spacing_m = 20.0;          ///< distance between lines
   double heading_deg = 0.0;         ///< direction of the lines (deg from north)
   double speed_m_s = 6.0;
@@ -58,9 +58,11 @@ struct SurveyStep {
   double timeout_s = 0.0;
   template <class V>
   void Visit(V& v) {
-    v.Field("polygon_ned_m", polygon_ned_m,
-            "corners [north, east, 0] (m); two corners give the rectangle between them");
-    v.Field("altitude_m", altitude_m, "height above the start point (m)");
+    v.Renamed("polygon_ned_m", "polygon_ne_m");
+    v.Field("polygon_ne_m", polygon_ne_m,
+            "corners [north, east] (m); two corners give the rectangle between them");
+    v.Renamed("altitude_m", "height_above_start_m");
+    v.Field("height_above_start_m", altitude_m, "height above the start point (m)");
     v.Field("spacing_m", spacing_m, "distance between survey lines (m)");
     v.Field("heading_deg", heading_deg, "direction of the lines (deg from north)");
     v.Field("speed_m_s", speed_m_s, "speed along the lines (m/s)");

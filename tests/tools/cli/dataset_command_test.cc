@@ -34,7 +34,7 @@ Result RunAiris(const std::string& args) { return testing::RunAiris(&AddDatasetC
 std::string MissionFile() {
   return testing::WriteTempFile("airis_dataset_mission.yaml", R"(name: spin
 steps:
-  - takeoff: {altitude_m: 40}
+  - takeoff: {height_above_start_m: 40}
   - capture: {enabled: true}
   - yaw: {yaw_deg: 120}
   - hover: {duration_s: 3}

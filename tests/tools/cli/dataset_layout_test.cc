@@ -44,20 +44,20 @@ fs::path BallsScene(int seed = 11) {
   std::string objects;
   for (const auto& [name, p] : kBalls) {
     std::ostringstream o;
-    o << "  - {name: " << name << ", primitive: sphere, class: ball, position_m: [" << p.x() << ", "
+    o << "  - {name: " << name << ", primitive: sphere, class: ball, position_ned_m: [" << p.x() << ", "
       << p.y() << ", " << p.z() << "]}\n";
     objects += o.str();
   }
   return WriteTempFile("airis_balls_" + std::to_string(seed) + ".yaml",
                        "scene: {name: balls, seed: " + std::to_string(seed) + R"(}
-ground: {size_m: [100, 100]}
+ground: {size_ne_m: [100, 100]}
 classes:
   - {name: ball, color: [0.9, 0.1, 0.1]}
 objects:
 )" + objects + R"(vehicles:
   - name: drone1
     preset: quad_x
-    start: {position_m: [0, 0, -0.2], yaw_deg: 0}
+    start: {position_ned_m: [0, 0, -0.2], yaw_deg: 0}
     sensors:
       - imu: {rate_hz: 200}
       - name: down
@@ -67,7 +67,7 @@ objects:
           height_px: 240
           hfov_deg: 90
           outputs: {rgb: true, depth_planar: true, segmentation: true}
-          mount: {position_m: [0, 0, 0.1], pitch_deg: -90}
+          mount: {position_frd_m: [0, 0, 0.1], pitch_deg: -90}
       - name: pair
         stereo_camera:
           baseline_m: 0.2
@@ -85,7 +85,7 @@ objects:
 fs::path BallsMission() {
   return WriteTempFile("airis_balls_mission.yaml", R"(name: balls
 steps:
-  - takeoff: {altitude_m: 15}
+  - takeoff: {height_above_start_m: 15}
   - capture: {enabled: true}
   - yaw: {yaw_deg: 90}
   - hover: {duration_s: 2}
@@ -118,8 +118,9 @@ TEST(DatasetLayoutTest, ManifestIntrinsicsAndPosesPutEachBallWhereItWasDrawn) {
   int balls_checked = 0;
   for (std::size_t r = 0; r < poses.rows.size(); ++r) {
     auto col = [&](const char* name) { return poses.Number(r, poses.Column(name)); };
-    const engine::Vec3 p_WC(col("p_n_m"), col("p_e_m"), col("p_d_m"));
-    const engine::Quat q_WC(col("q_w"), col("q_x"), col("q_y"), col("q_z"));
+    const engine::Vec3 p_WC(col("position_ned_x_m"), col("position_ned_y_m"), col("position_ned_z_m"));
+    const engine::Quat q_WC(col("attitude_cam_to_ned_w"), col("attitude_cam_to_ned_x"),
+                     col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z"));
     const std::string name = FrameName(poses.Integer(r, poses.Column("frame")));
     const auto ins =
         engine::DecodePng16(engine::ReadFileBytes(dir / "down/seg_instance" / (name + ".png")));
@@ -288,12 +289,13 @@ TEST(DatasetLayoutTest, TartanAirLayoutHoldsTheSameFramesInTartanAirConventions)
       std::istringstream in(line);
       for (double& x : v) ASSERT_TRUE(in >> x) << line;
       auto col = [&](const char* c) { return poses.Number(r, poses.Column(c)); };
-      EXPECT_EQ(v[0], col("p_n_m"));
-      EXPECT_EQ(v[1], col("p_e_m"));
-      EXPECT_EQ(v[2], col("p_d_m"));
+      EXPECT_EQ(v[0], col("position_ned_x_m"));
+      EXPECT_EQ(v[1], col("position_ned_y_m"));
+      EXPECT_EQ(v[2], col("position_ned_z_m"));
       const engine::Mat3 R_WT = engine::Quat(v[6], v[3], v[4], v[5]).toRotationMatrix();
       const engine::Mat3 R_WC =
-          engine::Quat(col("q_w"), col("q_x"), col("q_y"), col("q_z")).toRotationMatrix();
+          engine::Quat(col("attitude_cam_to_ned_w"), col("attitude_cam_to_ned_x"),
+                     col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z")).toRotationMatrix();
       EXPECT_LT((R_WT.col(0) - R_WC.col(2)).norm(), 1e-12) << tf;
       EXPECT_LT((R_WT.col(1) - R_WC.col(0)).norm(), 1e-12) << tf;
       EXPECT_LT((R_WT.col(2) - R_WC.col(1)).norm(), 1e-12) << tf;

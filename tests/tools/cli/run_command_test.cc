@@ -85,7 +85,7 @@ TEST(RunCommandTest, AnotherSeedChangesTheSensorNoise) {
 TEST(RunCommandTest, FlyingIntoABuildingFailsNamingTheStepAndTheBuilding) {
   // Downtown towers are 60-160 m tall: a level flight at 30 m toward the centre hits one.
   const std::string mission = WriteFile("airis_crash.yaml", R"(steps:
-  - takeoff: {altitude_m: 30}
+  - takeoff: {height_above_start_m: 30}
   - goto: {position_ned_m: [100, 100, -30], speed_m_s: 8}
   - goto: {position_ned_m: [100, -300, -30], speed_m_s: 8}
   - land:

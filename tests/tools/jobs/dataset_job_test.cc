@@ -20,11 +20,11 @@ namespace fs = std::filesystem;
 constexpr const char* kScene =
     "scene: {name: small, seed: 3}\n"
     "objects:\n"
-    "  - {name: crate, primitive: box, position_m: [8, 0, -1], scale: [2, 2, 2], class: car}\n"
+    "  - {name: crate, primitive: box, position_ned_m: [8, 0, -1], scale: [2, 2, 2], class: car}\n"
     "vehicles:\n"
     "  - name: d\n"
     "    preset: quad_x\n"
-    "    start: {position_m: [0, 0, -1], on_ground: true}\n"
+    "    start: {position_ned_m: [0, 0, -1], on_ground: true}\n"
     "    sensors:\n"
     "      - name: cam\n"
     "        camera:\n"
@@ -33,7 +33,7 @@ constexpr const char* kScene =
 
 constexpr const char* kMission =
     "steps:\n"
-    "  - takeoff: {altitude_m: 2}\n"
+    "  - takeoff: {height_above_start_m: 2}\n"
     "  - capture: {enabled: true}\n"
     "  - hover: {duration_s: 0.5}\n"
     "  - capture: {enabled: false}\n";
@@ -95,7 +95,7 @@ TEST(DatasetJobTest, MinObjectAreaBelowOneIsRefusedNamingTheOption) {
 TEST(RunJobTest, TheCommandsStreamHoldsTheSetpointsAndActuatorCommands) {
   RunJobOptions o;
   o.scene.path = airis::testing::WriteTempFile("small.yaml", kScene).string();
-  o.mission = airis::testing::WriteTempFile("takeoff.yaml", "steps: [{takeoff: {altitude_m: 5}}]\n")
+  o.mission = airis::testing::WriteTempFile("takeoff.yaml", "steps: [{takeoff: {height_above_start_m: 5}}]\n")
                   .string();
   o.out = (airis::testing::TestTempDir() / "run").string();
   const RunJobResult r = RunMissionJob(o);

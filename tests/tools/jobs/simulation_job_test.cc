@@ -41,7 +41,7 @@ TEST(SimulationJobTest, AVehicleRestingOnTheGroundAtTheStartIsNoCollision) {
   // The quad's box is 4 cm tall: at z = -0.02 it touches the ground from the first tick.
   const std::string scene =
       "vehicles:\n"
-      "  - {name: d, preset: quad_x, start: {position_m: [0, 0, -0.5], on_ground: true}}\n";
+      "  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, -0.5], on_ground: true}}\n";
   SimulationJob job(Text(scene));
   const double z = job.world().vehicle(0).state().p_W.z();
   EXPECT_NEAR(z, -0.02, 1e-3);  // lowered onto the ground
@@ -54,7 +54,7 @@ TEST(SimulationJobTest, AVehicleRestingOnTheGroundAtTheStartIsNoCollision) {
 TEST(SimulationJobTest, AVehicleDroppedOntoTheGroundDuringAWaitCollides) {
   // Not on_ground: started 18 cm up, it falls onto the ground, which the mission counts.
   SimulationJob job(
-      Text("vehicles: [{name: d, preset: quad_x, start: {position_m: [0, 0, -0.2]}}]\n"));
+      Text("vehicles: [{name: d, preset: quad_x, start: {position_ned_m: [0, 0, -0.2]}}]\n"));
   const MissionOutcome out =
       job.FlyMission(scenes::ParseMission(kWaitOnTheGround, "m.yaml"), MissionFlight{});
   EXPECT_EQ(out.state, engine::MissionRunner::State::kFailed);
@@ -67,7 +67,7 @@ TEST(SimulationJobTest, OnGroundWithNothingBelowIsAnErrorNamingTheKey) {
     SimulationJob job(Text(
         "ground: {enabled: false}\n"
         "vehicles:\n"
-        "  - {name: d, preset: quad_x, start: {position_m: [0, 0, -5], on_ground: true}}\n"));
+        "  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, -5], on_ground: true}}\n"));
     FAIL() << "expected ConfigError";
   } catch (const engine::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("scenes/test.yaml:3:5: vehicles[0].start.on_ground: no "
@@ -82,7 +82,7 @@ TEST(SimulationJobTest, TheStartStateIsTheScenesAttitudeAndVelocity) {
       "vehicles:\n"
       "  - name: d\n"
       "    preset: quad_x\n"
-      "    start: {position_m: [1, 2, -30], roll_deg: 10, pitch_deg: -5, yaw_deg: 90,\n"
+      "    start: {position_ned_m: [1, 2, -30], roll_deg: 10, pitch_deg: -5, yaw_deg: 90,\n"
       "            velocity_ned_m_s: [3, 0, -1], angular_velocity_frd_rad_s: [0, 0, 0.5]}\n"));
   const engine::RigidBodyState& s = job.world().vehicle(0).state();
   EXPECT_EQ(s.p_W, engine::Vec3(1, 2, -30));
