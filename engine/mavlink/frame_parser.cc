@@ -1,0 +1,199 @@
+#include "engine/mavlink/frame_parser.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "engine/mavlink/crc.h"
+
+namespace airis::engine::mavlink {
+namespace {
+
+bool IsStart(std::uint8_t b) { return static_cast<std::uint8_t>(b - kStartV2) <= 1; }  // FD or FE
+
+std::size_t HeaderLength(std::uint8_t start) {
+  return start == kStartV2 ? kHeaderLengthV2 : kHeaderLengthV1;
+}
+
+enum class HeaderCheck { kNeedMore, kOk, kUnknownId, kBadFlags };
+
+// Reads the header of the candidate at p[0] (a start byte), of which `available` bytes are at hand.
+// kOk sets the message's entry and the frame's total length.
+HeaderCheck CheckHeader(const std::uint8_t* p, std::size_t available, const MessageInfo** info,
+                        std::size_t* frame_length) {
+  const std::size_t header_length = HeaderLength(p[0]);
+  if (available < header_length) return HeaderCheck::kNeedMore;
+  std::size_t trailer = kCrcLength;
+  std::uint32_t msgid;
+  if (p[0] == kStartV2) {
+    const std::uint8_t incompat = p[2];
+    if ((incompat & ~kIncompatFlagSigned) != 0) return HeaderCheck::kBadFlags;
+    if (incompat & kIncompatFlagSigned) trailer += kSignatureLength;
+    msgid = p[7] | (std::uint32_t{p[8]} << 8) | (std::uint32_t{p[9]} << 16);
+  } else {
+    msgid = p[5];
+  }
+  *info = FindMessageInfo(msgid);
+  if (*info == nullptr) return HeaderCheck::kUnknownId;
+  *frame_length = header_length + p[1] + trailer;
+  return HeaderCheck::kOk;
+}
+
+// True when the complete frame at p carries the CRC of its bytes and the message's CRC_EXTRA.
+bool CrcMatches(const std::uint8_t* p, const MessageInfo& info) {
+  const std::size_t crc_at = HeaderLength(p[0]) + p[1];
+  std::uint16_t crc = CrcAccumulate(std::span<const std::uint8_t>(p + 1, crc_at - 1));
+  crc = CrcAccumulate(std::span<const std::uint8_t>(&info.crc_extra, 1), crc);
+  return crc == (p[crc_at] | (p[crc_at + 1] << 8));
+}
+
+}  // namespace
+
+const Frame* FrameParser::Next(std::span<const std::uint8_t>& input) {
+  if (held_length_ > 0) {
+    // The frame yielded last is consumed now; bytes after it (left from a rescan) are scanned next.
+    Shift(held_length_);
+    held_length_ = 0;
+    DropUntilStart(0, /*at_boundary=*/true);
+  }
+  for (;;) {
+    if (filled_ == 0 && !Hunt(input)) return nullptr;
+    if (!FillTo(HeaderLength(buf_[0]), input)) return nullptr;
+    const MessageInfo* info = nullptr;
+    std::size_t frame_length = 0;
+    switch (CheckHeader(buf_.data(), filled_, &info, &frame_length)) {
+      case HeaderCheck::kOk:
+        break;
+      case HeaderCheck::kUnknownId:
+        ++stats_.unknown_ids;
+        DropUntilStart(1, /*at_boundary=*/false);
+        continue;
+      case HeaderCheck::kBadFlags:
+        ++stats_.bad_flags;
+        DropUntilStart(1, /*at_boundary=*/false);
+        continue;
+      case HeaderCheck::kNeedMore:
+        return nullptr;  // not reached: FillTo gave the whole header
+    }
+    if (!FillTo(frame_length, input)) {
+      if (!trusted_) {
+        if (const std::size_t k = FindCompleteFrameInside(); k > 0) {
+          ++stats_.false_starts;
+          stats_.bytes_discarded += k;
+          Shift(k);
+          continue;
+        }
+      }
+      return nullptr;
+    }
+    if (!CrcMatches(buf_.data(), *info)) {
+      ++stats_.crc_errors;
+      DropUntilStart(1, /*at_boundary=*/false);
+      continue;
+    }
+    return Yield(*info, frame_length);
+  }
+}
+
+bool FrameParser::Hunt(std::span<const std::uint8_t>& input) {
+  const auto start = std::find_if(input.begin(), input.end(), IsStart);
+  const auto skipped = static_cast<std::size_t>(start - input.begin());
+  if (skipped > 0) boundary_ = false;
+  stats_.bytes_discarded += skipped;
+  input = input.subspan(skipped);
+  if (input.empty()) return false;
+  buf_[0] = input[0];
+  filled_ = 1;
+  trusted_ = boundary_;
+  boundary_ = false;
+  input = input.subspan(1);
+  return true;
+}
+
+bool FrameParser::FillTo(std::size_t want, std::span<const std::uint8_t>& input) {
+  if (filled_ >= want) return true;
+  const std::size_t take = std::min(want - filled_, input.size());
+  std::memcpy(buf_.data() + filled_, input.data(), take);
+  filled_ += take;
+  input = input.subspan(take);
+  return filled_ >= want;
+}
+
+void FrameParser::DropUntilStart(std::size_t from, bool at_boundary) {
+  std::size_t k = std::min(from, filled_);
+  while (k < filled_ && !IsStart(buf_[k])) ++k;
+  stats_.bytes_discarded += k;
+  Shift(k);
+  const bool right_after_frame = at_boundary && k == 0;
+  if (filled_ > 0) {
+    trusted_ = right_after_frame;
+    boundary_ = false;
+  } else {
+    boundary_ = right_after_frame;
+  }
+}
+
+void FrameParser::Shift(std::size_t n) {
+  std::memmove(buf_.data(), buf_.data() + n, filled_ - n);
+  filled_ -= n;
+}
+
+std::size_t FrameParser::FindCompleteFrameInside() const {
+  for (std::size_t k = 1; k < filled_; ++k) {
+    if (!IsStart(buf_[k])) continue;
+    const MessageInfo* info = nullptr;
+    std::size_t frame_length = 0;
+    if (CheckHeader(buf_.data() + k, filled_ - k, &info, &frame_length) == HeaderCheck::kOk &&
+        frame_length <= filled_ - k && CrcMatches(buf_.data() + k, *info)) {
+      return k;
+    }
+  }
+  return 0;
+}
+
+const Frame* FrameParser::Yield(const MessageInfo& info, std::size_t frame_length) {
+  const std::size_t header_length = HeaderLength(buf_[0]);
+  const std::size_t payload_length = buf_[1];
+  Frame& f = frame_;
+  if (buf_[0] == kStartV2) {
+    f.version = 2;
+    f.incompat_flags = buf_[2];
+    f.compat_flags = buf_[3];
+    f.seq = buf_[4];
+    f.sysid = buf_[5];
+    f.compid = buf_[6];
+  } else {
+    f.version = 1;
+    f.incompat_flags = 0;
+    f.compat_flags = 0;
+    f.seq = buf_[2];
+    f.sysid = buf_[3];
+    f.compid = buf_[4];
+  }
+  f.msgid = info.id;
+  f.info = &info;
+  f.wire_payload_length = static_cast<std::uint8_t>(payload_length);
+  const std::size_t crc_at = header_length + payload_length;
+  f.crc = static_cast<std::uint16_t>(buf_[crc_at] | (buf_[crc_at + 1] << 8));
+  if (f.is_signed()) {
+    std::memcpy(f.signature.data(), buf_.data() + crc_at + kCrcLength, kSignatureLength);
+  } else {
+    f.signature.fill(0);
+  }
+
+  // Zero-fill a truncated payload to the message's full length: in place (over the CRC and
+  // signature, already read) unless bytes after the frame are buffered there, then in a copy.
+  const std::size_t length = std::max<std::size_t>(payload_length, info.full_length);
+  std::uint8_t* payload = buf_.data() + header_length;
+  if (length > payload_length && filled_ > frame_length) {
+    std::memcpy(payload_copy_.data(), payload, payload_length);
+    payload = payload_copy_.data();
+  }
+  std::memset(payload + payload_length, 0, length - payload_length);
+  f.payload = std::span<const std::uint8_t>(payload, length);
+
+  ++stats_.frames_ok;
+  held_length_ = frame_length;
+  return &f;
+}
+
+}  // namespace airis::engine::mavlink
