@@ -21,9 +21,8 @@ std::size_t FrameEncoder::FinishFrame(const MessageInfo& info, std::uint8_t* fra
   frame[8] = static_cast<std::uint8_t>(info.id >> 8);
   frame[9] = static_cast<std::uint8_t>(info.id >> 16);
 
-  std::uint16_t crc =
-      CrcAccumulate(std::span<const std::uint8_t>(frame + 1, kHeaderLengthV2 - 1 + len));
-  crc = CrcAccumulate(std::span<const std::uint8_t>(&info.crc_extra, 1), crc);
+  const std::uint16_t crc = CalcFrameCrc(
+      std::span<const std::uint8_t>(frame + 1, kHeaderLengthV2 - 1 + len), info.crc_extra);
   frame[kHeaderLengthV2 + len] = static_cast<std::uint8_t>(crc);
   frame[kHeaderLengthV2 + len + 1] = static_cast<std::uint8_t>(crc >> 8);
   return kHeaderLengthV2 + len + kCrcLength;

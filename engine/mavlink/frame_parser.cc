@@ -41,8 +41,8 @@ HeaderCheck CheckHeader(const std::uint8_t* p, std::size_t available, const Mess
 // True when the complete frame at p carries the CRC of its bytes and the message's CRC_EXTRA.
 bool CrcMatches(const std::uint8_t* p, const MessageInfo& info) {
   const std::size_t crc_at = HeaderLength(p[0]) + p[1];
-  std::uint16_t crc = CrcAccumulate(std::span<const std::uint8_t>(p + 1, crc_at - 1));
-  crc = CrcAccumulate(std::span<const std::uint8_t>(&info.crc_extra, 1), crc);
+  const std::uint16_t crc =
+      CalcFrameCrc(std::span<const std::uint8_t>(p + 1, crc_at - 1), info.crc_extra);
   return crc == (p[crc_at] | (p[crc_at + 1] << 8));
 }
 
@@ -54,6 +54,19 @@ const Frame* FrameParser::Next(std::span<const std::uint8_t>& input) {
     Shift(held_length_);
     held_length_ = 0;
     DropUntilStart(0, /*at_boundary=*/true);
+  }
+  if (filled_ == 0 && !input.empty() && IsStart(input[0])) {
+    // Fast path, the usual case on a clean link: a whole frame at the front of the input is checked
+    // and yielded where it lies, without passing through buf_.
+    const MessageInfo* info = nullptr;
+    std::size_t frame_length = 0;
+    if (CheckHeader(input.data(), input.size(), &info, &frame_length) == HeaderCheck::kOk &&
+        frame_length <= input.size() && CrcMatches(input.data(), *info)) {
+      const Frame* f = Yield(input.data(), *info, frame_length, /*in_buffer=*/false);
+      input = input.subspan(frame_length);
+      boundary_ = true;
+      return f;
+    }
   }
   for (;;) {
     if (filled_ == 0 && !Hunt(input)) return nullptr;
@@ -90,7 +103,7 @@ const Frame* FrameParser::Next(std::span<const std::uint8_t>& input) {
       DropUntilStart(1, /*at_boundary=*/false);
       continue;
     }
-    return Yield(*info, frame_length);
+    return Yield(buf_.data(), *info, frame_length, /*in_buffer=*/true);
   }
 }
 
@@ -150,49 +163,55 @@ std::size_t FrameParser::FindCompleteFrameInside() const {
   return 0;
 }
 
-const Frame* FrameParser::Yield(const MessageInfo& info, std::size_t frame_length) {
-  const std::size_t header_length = HeaderLength(buf_[0]);
-  const std::size_t payload_length = buf_[1];
+const Frame* FrameParser::Yield(const std::uint8_t* p, const MessageInfo& info,
+                                std::size_t frame_length, bool in_buffer) {
+  const std::size_t header_length = HeaderLength(p[0]);
+  const std::size_t payload_length = p[1];
   Frame& f = frame_;
-  if (buf_[0] == kStartV2) {
+  if (p[0] == kStartV2) {
     f.version = 2;
-    f.incompat_flags = buf_[2];
-    f.compat_flags = buf_[3];
-    f.seq = buf_[4];
-    f.sysid = buf_[5];
-    f.compid = buf_[6];
+    f.incompat_flags = p[2];
+    f.compat_flags = p[3];
+    f.seq = p[4];
+    f.sysid = p[5];
+    f.compid = p[6];
   } else {
     f.version = 1;
     f.incompat_flags = 0;
     f.compat_flags = 0;
-    f.seq = buf_[2];
-    f.sysid = buf_[3];
-    f.compid = buf_[4];
+    f.seq = p[2];
+    f.sysid = p[3];
+    f.compid = p[4];
   }
   f.msgid = info.id;
   f.info = &info;
   f.wire_payload_length = static_cast<std::uint8_t>(payload_length);
   const std::size_t crc_at = header_length + payload_length;
-  f.crc = static_cast<std::uint16_t>(buf_[crc_at] | (buf_[crc_at + 1] << 8));
+  f.crc = static_cast<std::uint16_t>(p[crc_at] | (p[crc_at + 1] << 8));
   if (f.is_signed()) {
-    std::memcpy(f.signature.data(), buf_.data() + crc_at + kCrcLength, kSignatureLength);
-  } else {
-    f.signature.fill(0);
+    std::memcpy(f.signature.data(), p + crc_at + kCrcLength, kSignatureLength);
+    signature_set_ = true;
+  } else if (signature_set_) {
+    f.signature.fill(0);  // left from the signed frame before
+    signature_set_ = false;
   }
 
-  // Zero-fill a truncated payload to the message's full length: in place (over the CRC and
-  // signature, already read) unless bytes after the frame are buffered there, then in a copy.
+  // The payload, zero-filled to the message's full length: in place in buf_ (over the CRC and the
+  // signature, already read) unless bytes after the frame are buffered there; else in a copy
+  // (always for a frame read straight from the caller's input, which is const and may go away).
   const std::size_t length = std::max<std::size_t>(payload_length, info.full_length);
-  std::uint8_t* payload = buf_.data() + header_length;
-  if (length > payload_length && filled_ > frame_length) {
-    std::memcpy(payload_copy_.data(), payload, payload_length);
+  std::uint8_t* payload;
+  if (in_buffer && (length == payload_length || filled_ == frame_length)) {
+    payload = buf_.data() + header_length;
+  } else {
+    std::memcpy(payload_copy_.data(), p + header_length, payload_length);
     payload = payload_copy_.data();
   }
-  std::memset(payload + payload_length, 0, length - payload_length);
+  if (length > payload_length) std::memset(payload + payload_length, 0, length - payload_length);
   f.payload = std::span<const std::uint8_t>(payload, length);
 
   ++stats_.frames_ok;
-  held_length_ = frame_length;
+  held_length_ = in_buffer ? frame_length : 0;
   return &f;
 }
 

@@ -55,7 +55,9 @@ struct ParserStats {
 ///   is not held up by garbage before its frame).
 /// - The stream's first candidate counts as found by rescanning (a serial port may start
 /// mid-frame).
-/// - No allocation: one fixed internal buffer of kMaxFrameLength bytes (plus one payload copy).
+/// - No allocation: one fixed internal buffer of kMaxFrameLength bytes, plus one payload copy. A
+/// frame
+///   that lies whole at the front of the input (the usual case) is checked there, without copying.
 ///
 ///   FrameParser parser;
 ///   std::span<const std::uint8_t> bytes(socket_buffer, n_received);
@@ -91,13 +93,16 @@ class FrameParser {
   void Shift(std::size_t n);
   // Offset of the first complete frame with a matching CRC inside buf_[1, filled_), or 0.
   std::size_t FindCompleteFrameInside() const;
-  const Frame* Yield(const MessageInfo& info, std::size_t frame_length);
+  // Fills frame_ from the checked frame at p (buf_.data(), or the caller's input when !in_buffer).
+  const Frame* Yield(const std::uint8_t* p, const MessageInfo& info, std::size_t frame_length,
+                     bool in_buffer);
 
   std::array<std::uint8_t, kMaxFrameLength> buf_{};  // the candidate frame, from its start byte
   std::size_t filled_ = 0;                           // bytes in buf_
   std::size_t held_length_ = 0;  // length of the frame yielded last (still in buf_), else 0
   bool boundary_ = false;        // the next input byte follows a yielded frame directly
   bool trusted_ = false;         // the candidate in buf_ began right after a yielded frame
+  bool signature_set_ = false;   // frame_.signature holds a signature (else all zero)
   // Payload of a yielded frame when zero-filling it in place would overwrite buffered bytes after
   // it.
   std::array<std::uint8_t, kMaxPayloadLength> payload_copy_{};

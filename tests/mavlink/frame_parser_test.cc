@@ -338,6 +338,7 @@ TEST(FrameParserTest, SignedFrameIsAcceptedWithItsSignatureSkipped) {
   EXPECT_EQ(frames[0].header.signature, raw.signature);
   EXPECT_EQ(Describe(DecodeAs<CommandLong>(frames[0])), Describe(cmd));
   EXPECT_FALSE(frames[1].header.is_signed());
+  EXPECT_EQ(frames[1].header.signature, (std::array<std::uint8_t, kSignatureLength>{}));
   EXPECT_EQ(parser.stats().bytes_discarded, 0u);
 }
 
