@@ -152,6 +152,11 @@ std::uint16_t CrcAccumulate(std::span<const std::uint8_t> bytes, std::uint16_t c
   return TableCrc(bytes.data(), bytes.size(), crc);
 }
 
+std::uint16_t detail::CrcAccumulateWithTables(std::span<const std::uint8_t> bytes,
+                                              std::uint16_t crc) {
+  return TableCrc(bytes.data(), bytes.size(), crc);
+}
+
 std::uint16_t CalcFrameCrc(std::span<const std::uint8_t> checked_bytes, std::uint8_t crc_extra) {
   const std::uint16_t crc = CrcAccumulate(checked_bytes, kCrcInit);
   return static_cast<std::uint16_t>((crc >> 8) ^ kTables[0][(crc ^ crc_extra) & 0xFF]);

@@ -31,6 +31,12 @@ constexpr std::uint16_t CrcAccumulate(std::uint8_t byte, std::uint16_t crc) {
 /// cost.
 std::uint16_t CrcAccumulate(std::span<const std::uint8_t> bytes, std::uint16_t crc = kCrcInit);
 
+namespace detail {
+/// The portable path of CrcAccumulate(bytes, crc), tables only: what CPUs without PCLMULQDQ run,
+/// and what tests compare with the fast path.
+std::uint16_t CrcAccumulateWithTables(std::span<const std::uint8_t> bytes, std::uint16_t crc);
+}  // namespace detail
+
 /// The checksum of a frame: the CRC from kCrcInit over `checked_bytes` (the frame after its start
 /// byte, up to the end of the payload), then over the message's `crc_extra`.
 std::uint16_t CalcFrameCrc(std::span<const std::uint8_t> checked_bytes, std::uint8_t crc_extra);

@@ -31,9 +31,10 @@ TEST(CrcTest, EmptyInputLeavesTheInitialValue) {
   EXPECT_EQ(CrcAccumulate(std::span<const std::uint8_t>()), kCrcInit);
 }
 
-// GIVEN random data of every length a frame can have WHEN the sliced CRC runs THEN it equals the
-// bytewise definition, whatever the length modulo the slice width and the starting value.
-TEST(CrcTest, SlicedEqualsBytewiseForEveryLength) {
+// GIVEN random data of every length a frame can have WHEN the fast CRC (carry-less multiplication
+// where the CPU has it) and the table CRC run THEN both equal the bytewise definition, whatever the
+// length modulo the block widths and the starting value.
+TEST(CrcTest, FastAndTableCrcEqualBytewiseForEveryLength) {
   testing::Rng rng(7);
   std::vector<std::uint8_t> data(300);
   for (auto& b : data) b = static_cast<std::uint8_t>(rng.Next());
@@ -41,7 +42,14 @@ TEST(CrcTest, SlicedEqualsBytewiseForEveryLength) {
     const std::span<const std::uint8_t> part(data.data(), n);
     ASSERT_EQ(CrcAccumulate(part), BytewiseCrc(part)) << "length " << n;
     ASSERT_EQ(CrcAccumulate(part, 0x1234), BytewiseCrc(part, 0x1234)) << "length " << n;
+    ASSERT_EQ(detail::CrcAccumulateWithTables(part, 0x1234), BytewiseCrc(part, 0x1234))
+        << "length " << n;
   }
+}
+
+TEST(CrcTest, FrameCrcAppendsCrcExtra) {
+  const auto bytes = AsBytes("a frame's checked bytes, more than thirty-two of them");
+  EXPECT_EQ(CalcFrameCrc(bytes, 108), CrcAccumulate(108, BytewiseCrc(bytes)));
 }
 
 TEST(CrcTest, AccumulatingInPiecesEqualsAllAtOnce) {
