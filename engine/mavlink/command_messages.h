@@ -13,6 +13,7 @@ namespace airis::engine::mavlink {
 
 /// PARAM_VALUE (22): the value of one onboard parameter.
 struct ParamValue {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{22, "PARAM_VALUE", 220, 25, 25};
   float param_value = 0;            ///< the value (integers travel bit-cast or cast, per autopilot)
   std::uint16_t param_count = 0;    ///< total number of onboard parameters
@@ -20,6 +21,7 @@ struct ParamValue {
   std::array<char, 16> param_id{};  ///< name; NUL-terminated only when shorter than 16 (SetText)
   std::uint8_t param_type = 0;      ///< MAV_PARAM_TYPE (kMavParamType*)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("param_value", m.param_value);
@@ -32,6 +34,7 @@ struct ParamValue {
 
 /// PARAM_SET (23): set one parameter; the target answers with PARAM_VALUE.
 struct ParamSet {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{23, "PARAM_SET", 168, 23, 23};
   float param_value = 0;              ///< the new value
   std::uint8_t target_system = 0;     ///< system id
@@ -39,6 +42,7 @@ struct ParamSet {
   std::array<char, 16> param_id{};    ///< name; NUL-terminated only when shorter than 16 (SetText)
   std::uint8_t param_type = 0;        ///< MAV_PARAM_TYPE (kMavParamType*)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("param_value", m.param_value);
@@ -51,6 +55,7 @@ struct ParamSet {
 
 /// COMMAND_INT (75): a command with seven parameters, 5 and 6 as integers, in a stated frame.
 struct CommandInt {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{75, "COMMAND_INT", 158, 35, 35};
   float param1 = 0;  ///< PARAM1 of the MAV_CMD (NaN: unset where the command allows)
   float param2 = 0;  ///< PARAM2 of the MAV_CMD
@@ -68,6 +73,7 @@ struct CommandInt {
   std::uint8_t current = 0;           ///< not used
   std::uint8_t autocontinue = 0;      ///< not used (set 0)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("param1", m.param1);
@@ -88,6 +94,7 @@ struct CommandInt {
 
 /// COMMAND_LONG (76): a command with seven float parameters.
 struct CommandLong {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{76, "COMMAND_LONG", 152, 33, 33};
   float param1 = 0;           ///< parameter 1 of the command (NaN: unset where the command allows)
   float param2 = 0;           ///< parameter 2
@@ -101,6 +108,7 @@ struct CommandLong {
   std::uint8_t target_component = 0;  ///< component that should execute it, 0: all
   std::uint8_t confirmation = 0;      ///< 0: first transmission; 1-255: confirmations (e.g. kill)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("param1", m.param1);
@@ -119,6 +127,7 @@ struct CommandLong {
 
 /// COMMAND_ACK (77): the result of a command.
 struct CommandAck {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{77, "COMMAND_ACK", 143, 3, 10};
   std::uint16_t command = 0;  ///< MAV_CMD of the acknowledged command
   std::uint8_t result = 0;    ///< MAV_RESULT (kMavResult*)
@@ -128,6 +137,7 @@ struct CommandAck {
   std::uint8_t target_system = 0;     ///< extension: system that sent the command
   std::uint8_t target_component = 0;  ///< extension: component that sent the command
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("command", m.command);

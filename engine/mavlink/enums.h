@@ -24,11 +24,9 @@ inline constexpr std::uint16_t kMavCmdDoSetMode = 176;
 /// default), param2 MAV_DO_REPOSITION_FLAGS, param3 loiter radius [m], param4 yaw [rad] (NaN:
 /// current heading mode), param5/6 latitude/longitude, param7 altitude [m].
 inline constexpr std::uint16_t kMavCmdDoReposition = 192;
-/// MAV_CMD_COMPONENT_ARM_DISARM: param1 1 arm, 0 disarm; param2 21196 forces it past the safety
-/// checks.
+/// MAV_CMD_COMPONENT_ARM_DISARM: param1 1 arm, 0 disarm; param2 21196 forces it past the checks.
 inline constexpr std::uint16_t kMavCmdComponentArmDisarm = 400;
-/// MAV_CMD_SET_MESSAGE_INTERVAL: param1 message id, param2 interval [us] (-1: disable, 0: default
-/// rate).
+/// MAV_CMD_SET_MESSAGE_INTERVAL: param1 message id, param2 interval [us] (-1: off, 0: default).
 inline constexpr std::uint16_t kMavCmdSetMessageInterval = 511;
 /// MAV_CMD_REQUEST_MESSAGE: emit one instance of message param1.
 inline constexpr std::uint16_t kMavCmdRequestMessage = 512;
@@ -60,8 +58,7 @@ inline constexpr std::uint8_t kMavResultCommandUnsupportedMavFrame = 9;
 inline constexpr std::uint8_t kMavResultNotInControl = 10;
 
 // MAV_MODE_FLAG (HEARTBEAT.base_mode, HIL_ACTUATOR_CONTROLS.mode): a bitmask.
-/// MAV_MODE_FLAG_CUSTOM_MODE_ENABLED: a system-specific custom mode is enabled (custom_mode holds
-/// it).
+/// MAV_MODE_FLAG_CUSTOM_MODE_ENABLED: a system-specific custom mode is enabled (in custom_mode).
 inline constexpr std::uint8_t kMavModeFlagCustomModeEnabled = 1;
 /// MAV_MODE_FLAG_TEST_ENABLED: a test mode is enabled (temporary system tests).
 inline constexpr std::uint8_t kMavModeFlagTestEnabled = 2;
@@ -140,8 +137,7 @@ inline constexpr std::uint8_t kMavFrameBodyNed = 8;
 inline constexpr std::uint8_t kMavFrameBodyOffsetNed = 9;
 /// MAV_FRAME_GLOBAL_TERRAIN_ALT: WGS84, altitude above ground level.
 inline constexpr std::uint8_t kMavFrameGlobalTerrainAlt = 10;
-/// MAV_FRAME_BODY_FRD: x forward, y right, z down, aligned with the vehicle, origin travelling with
-/// it.
+/// MAV_FRAME_BODY_FRD: x forward, y right, z down, aligned with and travelling with the vehicle.
 inline constexpr std::uint8_t kMavFrameBodyFrd = 12;
 
 // MAV_LANDED_STATE (EXTENDED_SYS_STATE.landed_state).

@@ -43,7 +43,9 @@ class FrameEncoder {
     return FinishFrame(M::kInfo, out.data());
   }
 
+  /// System id written into every frame.
   std::uint8_t sysid() const { return sysid_; }
+  /// Component id written into every frame.
   std::uint8_t compid() const { return compid_; }
   /// Sequence number the next frame will carry.
   std::uint8_t next_seq() const { return seq_; }

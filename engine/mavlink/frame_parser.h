@@ -37,27 +37,22 @@ struct ParserStats {
 /// (KnownMessages()) and whose CRC, seeded with the message's CRC_EXTRA, matches.
 ///
 /// - Accepts MAVLink 2 (0xFD) and MAVLink 1 (0xFE) frames. A payload shorter than the message's
-/// full
-///   length (v2 truncation, or a v1 frame without extensions) is zero-filled to it; a longer one (a
-///   newer sender's extension fields) is kept whole.
+///   full length (v2 truncation, or a v1 frame without extensions) is zero-filled to it; a longer
+///   one (a newer sender's extension fields) is kept whole.
 /// - Signed frames (incompat flag 0x01) are accepted with their 13-byte signature skipped: the
 ///   signature is copied into Frame::signature but NOT verified (no key handling here).
 /// - Resynchronisation: a candidate that fails (unknown id, bad incompatibility flags, CRC
-/// mismatch) is
-///   dropped one byte at a time: scanning resumes at the byte after its start byte, so a false
-///   start byte inside garbage never swallows a good frame that follows. A frame of an unknown
-///   message is therefore not jumped over as a whole (without its CRC_EXTRA it cannot be told from
-///   garbage): its bytes are rescanned.
+///   mismatch) is dropped one byte at a time: scanning resumes at the byte after its start byte,
+///   so a false start byte inside garbage never swallows a good frame that follows. A frame of an
+///   unknown message is therefore not jumped over as a whole (without its CRC_EXTRA it cannot be
+///   told from garbage): its bytes are rescanned.
 /// - No waiting on a false start: when the input runs out while a candidate found by rescanning
-/// (not one
-///   that began right after a good frame) is still incomplete, and a complete frame with a matching
-///   CRC begins inside it, that frame is yielded at once (so a lockstep peer waiting for an answer
-///   is not held up by garbage before its frame).
-/// - The stream's first candidate counts as found by rescanning (a serial port may start
-/// mid-frame).
+///   (not one that began right after a good frame) is still incomplete, and a complete frame with
+///   a matching CRC begins inside it, that frame is yielded at once, so a lockstep peer waiting
+///   for an answer is not held up by garbage before its frame. The stream's first candidate counts
+///   as found by rescanning (a serial port may start mid-frame).
 /// - No allocation: one fixed internal buffer of kMaxFrameLength bytes, plus one payload copy. A
-/// frame
-///   that lies whole at the front of the input (the usual case) is checked there, without copying.
+///   frame that lies whole at the front of the input (the usual case) is checked there.
 ///
 ///   FrameParser parser;
 ///   std::span<const std::uint8_t> bytes(socket_buffer, n_received);
@@ -67,6 +62,7 @@ struct ParserStats {
 ///   }
 class FrameParser {
  public:
+  /// A parser with an empty buffer and zero counters, expecting the stream's first byte.
   FrameParser() = default;
 
   /// Consumes bytes from the front of `input` (it is advanced past them) until one frame is
@@ -103,8 +99,7 @@ class FrameParser {
   bool boundary_ = false;        // the next input byte follows a yielded frame directly
   bool trusted_ = false;         // the candidate in buf_ began right after a yielded frame
   bool signature_set_ = false;   // frame_.signature holds a signature (else all zero)
-  // Payload of a yielded frame when zero-filling it in place would overwrite buffered bytes after
-  // it.
+  // Payload of a yielded frame, zero-filled, when it cannot be zero-filled in place in buf_.
   std::array<std::uint8_t, kMaxPayloadLength> payload_copy_{};
   Frame frame_;
   ParserStats stats_;

@@ -15,6 +15,7 @@ namespace airis::engine::mavlink {
 /// HIL_ACTUATOR_CONTROLS (93): the autopilot's actuator outputs, sent to the simulator after each
 /// control cycle. PX4 sets `time_usec` to the time of the HIL_SENSOR it answers.
 struct HilActuatorControls {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{93, "HIL_ACTUATOR_CONTROLS", 47, 81, 81};
   /// Timestamp [us] (UNIX epoch or time since system boot; the receiver infers which by magnitude).
   std::uint64_t time_usec = 0;
@@ -25,6 +26,7 @@ struct HilActuatorControls {
   std::array<float, 16> controls{};
   std::uint8_t mode = 0;  ///< system mode, MAV_MODE_FLAG bitmap (bit 128: armed)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_usec", m.time_usec);
@@ -37,6 +39,7 @@ struct HilActuatorControls {
 /// HIL_SENSOR (107): IMU, magnetometer and barometer readings in SI units, body frame (FRD, which
 /// common.xml calls "NED body frame").
 struct HilSensor {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{107, "HIL_SENSOR", 108, 64, 65};
   /// Timestamp [us] (UNIX epoch or time since system boot). With id 0, PX4 SITL takes it as its
   /// clock.
@@ -59,6 +62,7 @@ struct HilSensor {
   std::uint32_t fields_updated = 0;
   std::uint8_t id = 0;  ///< extension: sensor id (zero indexed), for multiple sensor inputs
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_usec", m.time_usec);
@@ -83,6 +87,7 @@ struct HilSensor {
 
 /// HIL_GPS (113): a GNSS receiver's raw output (not the estimated position).
 struct HilGps {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{113, "HIL_GPS", 124, 36, 39};
   std::uint64_t time_usec = 0;  ///< timestamp [us] (UNIX epoch or time since system boot)
   std::int32_t lat = 0;         ///< latitude (WGS84) [degE7]
@@ -105,6 +110,7 @@ struct HilGps {
   /// Extension: yaw of the vehicle relative to north [cdeg]; 0: not available, 36000: north.
   std::uint16_t yaw = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_usec", m.time_usec);
@@ -128,6 +134,7 @@ struct HilGps {
 
 /// HIL_STATE_QUATERNION (115): the simulated vehicle's true state (PX4 logs it as ground truth).
 struct HilStateQuaternion {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{115, "HIL_STATE_QUATERNION", 4, 64, 64};
   std::uint64_t time_usec = 0;  ///< timestamp [us] (UNIX epoch or time since system boot)
   /// Attitude as a normalised quaternion, order w, x, y, z ({1, 0, 0, 0} is no rotation).
@@ -147,6 +154,7 @@ struct HilStateQuaternion {
   std::int16_t yacc = 0;            ///< Y acceleration [mG]
   std::int16_t zacc = 0;            ///< Z acceleration [mG]
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_usec", m.time_usec);

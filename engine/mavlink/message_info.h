@@ -22,8 +22,8 @@ struct MessageInfo {
 
 /// A message type of this codec: a plain struct with `static constexpr MessageInfo kInfo` and
 /// `template <class Self, class V> static constexpr void Fields(Self& m, V& v)`, which calls
-/// `v(name, m.field)` for each field in wire order and `v.Extensions()` before the first extension
-/// field.
+/// `v(name, m.field)` for each field in wire order, and `v.Extensions()` before the first
+/// extension field.
 template <class M>
 concept Message = requires {
   { M::kInfo } -> std::convertible_to<const MessageInfo&>;

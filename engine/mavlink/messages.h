@@ -20,6 +20,7 @@ namespace airis::engine::mavlink {
 /// A list of message types.
 template <Message... Ms>
 struct MessageTypes {
+  /// Number of types in the list.
   static constexpr std::size_t kCount = sizeof...(Ms);
   /// Calls `f(M{})` for each type M, in list order.
   template <class F>

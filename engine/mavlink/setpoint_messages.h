@@ -14,6 +14,7 @@ namespace airis::engine::mavlink {
 /// SET_POSITION_TARGET_LOCAL_NED (84): a setpoint in a local NED frame, from an external
 /// controller.
 struct SetPositionTargetLocalNed {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{84, "SET_POSITION_TARGET_LOCAL_NED", 143, 53, 53};
   std::uint32_t time_boot_ms = 0;  ///< time since system boot [ms]
   float x = 0;                     ///< X position in NED [m]
@@ -33,6 +34,7 @@ struct SetPositionTargetLocalNed {
   /// MAV_FRAME: LOCAL_NED (1), LOCAL_OFFSET_NED (7), BODY_NED (8) or BODY_OFFSET_NED (9).
   std::uint8_t coordinate_frame = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -56,6 +58,7 @@ struct SetPositionTargetLocalNed {
 
 /// POSITION_TARGET_LOCAL_NED (85): the setpoint the autopilot is following, local NED frame.
 struct PositionTargetLocalNed {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{85, "POSITION_TARGET_LOCAL_NED", 140, 51, 51};
   std::uint32_t time_boot_ms = 0;  ///< time since system boot [ms]
   float x = 0;                     ///< X position in NED [m]
@@ -73,6 +76,7 @@ struct PositionTargetLocalNed {
   /// MAV_FRAME: LOCAL_NED (1), LOCAL_OFFSET_NED (7), BODY_NED (8) or BODY_OFFSET_NED (9).
   std::uint8_t coordinate_frame = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -95,6 +99,7 @@ struct PositionTargetLocalNed {
 /// SET_POSITION_TARGET_GLOBAL_INT (86): a setpoint in a global frame (WGS84), from an external
 /// controller.
 struct SetPositionTargetGlobalInt {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{86, "SET_POSITION_TARGET_GLOBAL_INT", 5, 53, 53};
   /// time since system boot [ms] (lets the vehicle compensate delay)
   std::uint32_t time_boot_ms = 0;
@@ -115,6 +120,7 @@ struct SetPositionTargetGlobalInt {
   /// MAV_FRAME: GLOBAL (0), GLOBAL_RELATIVE_ALT (3) or GLOBAL_TERRAIN_ALT (10).
   std::uint8_t coordinate_frame = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);

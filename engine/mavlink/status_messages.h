@@ -17,6 +17,7 @@ inline constexpr std::uint8_t kMavlinkVersion = 3;
 
 /// HEARTBEAT (0): a system or component is present and responding; its type and autopilot.
 struct Heartbeat {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{0, "HEARTBEAT", 50, 9, 9};
   std::uint32_t custom_mode = 0;   ///< autopilot-specific flags (PX4: main and sub mode)
   std::uint8_t type = 0;           ///< vehicle or component type, MAV_TYPE (kMavType*)
@@ -27,6 +28,7 @@ struct Heartbeat {
   /// given; defaults to kMavlinkVersion.
   std::uint8_t mavlink_version = kMavlinkVersion;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("custom_mode", m.custom_mode);
@@ -40,6 +42,7 @@ struct Heartbeat {
 
 /// SYS_STATUS (1): sensor and subsystem status, battery and link statistics.
 struct SysStatus {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{1, "SYS_STATUS", 124, 31, 43};
   std::uint32_t onboard_control_sensors_present = 0;  ///< MAV_SYS_STATUS_SENSOR bitmap: 1 = present
   std::uint32_t onboard_control_sensors_enabled = 0;  ///< MAV_SYS_STATUS_SENSOR bitmap: 1 = enabled
@@ -61,6 +64,7 @@ struct SysStatus {
   /// Extension: MAV_SYS_STATUS_SENSOR_EXTENDED bitmap: 1 = healthy.
   std::uint32_t onboard_control_sensors_health_extended = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("onboard_control_sensors_present", m.onboard_control_sensors_present);
@@ -85,10 +89,12 @@ struct SysStatus {
 
 /// SYSTEM_TIME (2): the sender's clock.
 struct SystemTime {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{2, "SYSTEM_TIME", 137, 12, 12};
   std::uint64_t time_unix_usec = 0;  ///< UNIX epoch time [us]
   std::uint32_t time_boot_ms = 0;    ///< time since system boot [ms]
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_unix_usec", m.time_unix_usec);
@@ -98,10 +104,12 @@ struct SystemTime {
 
 /// EXTENDED_SYS_STATE (245): VTOL and landed state.
 struct ExtendedSysState {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{245, "EXTENDED_SYS_STATE", 130, 2, 2};
   std::uint8_t vtol_state = 0;    ///< MAV_VTOL_STATE (kMavVtolState*); undefined if not a VTOL
   std::uint8_t landed_state = 0;  ///< MAV_LANDED_STATE (kMavLandedState*)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("vtol_state", m.vtol_state);
@@ -111,6 +119,7 @@ struct ExtendedSysState {
 
 /// STATUSTEXT (253): a status text for the operator.
 struct StatusText {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{253, "STATUSTEXT", 83, 51, 54};
   std::uint8_t severity = 0;    ///< MAV_SEVERITY (kMavSeverity*), as in RFC 5424
   std::array<char, 50> text{};  ///< UTF-8 text, NUL-terminated only when shorter than 50 (SetText)
@@ -118,6 +127,7 @@ struct StatusText {
   std::uint16_t id = 0;
   std::uint8_t chunk_seq = 0;  ///< extension: this chunk's index, from zero
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("severity", m.severity);

@@ -14,6 +14,7 @@ namespace airis::engine::mavlink {
 
 /// GPS_RAW_INT (24): the GNSS receiver's raw output (not the system's position estimate).
 struct GpsRawInt {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{24, "GPS_RAW_INT", 24, 30, 52};
   std::uint64_t time_usec = 0;  ///< timestamp [us] (UNIX epoch or time since system boot)
   std::int32_t lat = 0;         ///< latitude (WGS84) [degE7]
@@ -36,6 +37,7 @@ struct GpsRawInt {
   /// 36000: north.
   std::uint16_t yaw = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_usec", m.time_usec);
@@ -61,6 +63,7 @@ struct GpsRawInt {
 /// ATTITUDE (30): attitude as Euler angles, aeronautical frame (X front, Y right, Z down; ZYX
 /// intrinsic).
 struct Attitude {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{30, "ATTITUDE", 39, 28, 28};
   std::uint32_t time_boot_ms = 0;  ///< time since system boot [ms]
   float roll = 0;                  ///< roll angle, -pi .. pi [rad]
@@ -70,6 +73,7 @@ struct Attitude {
   float pitchspeed = 0;            ///< pitch angular speed [rad/s]
   float yawspeed = 0;              ///< yaw angular speed [rad/s]
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -84,6 +88,7 @@ struct Attitude {
 
 /// LOCAL_POSITION_NED (32): the filtered local position and velocity, local NED frame.
 struct LocalPositionNed {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{32, "LOCAL_POSITION_NED", 185, 28, 28};
   std::uint32_t time_boot_ms = 0;  ///< time since system boot [ms]
   float x = 0;                     ///< X (north) position [m]
@@ -93,6 +98,7 @@ struct LocalPositionNed {
   float vy = 0;                    ///< Y speed [m/s]
   float vz = 0;                    ///< Z speed [m/s]
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -107,6 +113,7 @@ struct LocalPositionNed {
 
 /// GLOBAL_POSITION_INT (33): the filtered global position (scaled integers).
 struct GlobalPositionInt {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{33, "GLOBAL_POSITION_INT", 104, 28, 28};
   std::uint32_t time_boot_ms = 0;  ///< time since system boot [ms]
   std::int32_t lat = 0;            ///< latitude [degE7]
@@ -118,6 +125,7 @@ struct GlobalPositionInt {
   std::int16_t vz = 0;             ///< ground Z speed, positive down [cm/s]
   std::uint16_t hdg = 0;           ///< heading (yaw), 0 .. 35999 [cdeg]; UINT16_MAX if unknown
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -135,6 +143,7 @@ struct GlobalPositionInt {
 /// RC_CHANNELS (65): RC input as PPM pulse widths (1000 us: 0 %, 2000 us: 100 %); UINT16_MAX:
 /// unused channel.
 struct RcChannels {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{65, "RC_CHANNELS", 118, 42, 42};
   std::uint32_t time_boot_ms = 0;  ///< time since system boot [ms]
   std::uint16_t chan1_raw = 0;     ///< RC channel 1 [us]
@@ -159,6 +168,7 @@ struct RcChannels {
   std::uint8_t chancount = 0;
   std::uint8_t rssi = 0;  ///< signal strength, 0 .. 254 (device units); UINT8_MAX: unknown
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -187,6 +197,7 @@ struct RcChannels {
 
 /// DISTANCE_SENSOR (132): one onboard rangefinder reading.
 struct DistanceSensor {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{132, "DISTANCE_SENSOR", 85, 14, 39};
   std::uint32_t time_boot_ms = 0;      ///< time since system boot [ms]
   std::uint16_t min_distance = 0;      ///< minimum distance the sensor can measure [cm]
@@ -206,6 +217,7 @@ struct DistanceSensor {
   /// Extension: signal quality [%]; 0: unknown, 1: invalid signal, 100: perfect signal.
   std::uint8_t signal_quality = 0;
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("time_boot_ms", m.time_boot_ms);
@@ -227,6 +239,7 @@ struct DistanceSensor {
 /// HOME_POSITION (242): the home position (where the system returns to and lands), global and
 /// local.
 struct HomePosition {
+  /// Id, name, CRC_EXTRA and payload lengths (base, with extensions) from common.xml.
   static constexpr MessageInfo kInfo{242, "HOME_POSITION", 104, 52, 60};
   std::int32_t latitude = 0;   ///< latitude (WGS84) [degE7]
   std::int32_t longitude = 0;  ///< longitude (WGS84) [degE7]
@@ -242,6 +255,7 @@ struct HomePosition {
   float approach_z = 0;         ///< local Z of the end of the approach vector [m]
   std::uint64_t time_usec = 0;  ///< extension: timestamp [us] (UNIX epoch or time since boot)
 
+  /// Calls v(name, field) for each field in wire order (see the Message concept).
   template <class Self, class V>
   static constexpr void Fields(Self& m, V& v) {
     v("latitude", m.latitude);
