@@ -65,8 +65,8 @@ std::uint16_t TableCrc(const std::uint8_t* p, std::size_t n, std::uint16_t crc) 
 // which fits in 128 bits again. The carry-less product of two bit-reversed 64-bit operands is the
 // bit-reversed 128-bit product times x, so the constants are (x^191 mod P) and (x^127 mod P),
 // bit-reversed in 64 bits. A last partial block is folded in the same way after shifting bytes
-// (below). At the end, X itself is 16 bytes of data with the same remainder: the tables finish the
-// CRC over them, from a zero register.
+// (below). At the end, two more folds by x^64 leave 8 bytes of data with the same remainder, which
+// one table step finishes.
 // (The folding method of Gopal et al., "Fast CRC Computation for Generic Polynomials Using
 // PCLMULQDQ Instruction", Intel, 2009.)
 
@@ -89,6 +89,7 @@ constexpr std::uint64_t Reverse64(std::uint64_t v) {
 
 constexpr std::uint64_t kFoldHigh = Reverse64(XPowModP(191));  // multiplies H, the low lane
 constexpr std::uint64_t kFoldLow = Reverse64(XPowModP(127));   // multiplies L, the high lane
+constexpr std::uint64_t kReduce = Reverse64(XPowModP(63));     // folds 64 bits into the rest
 
 // Inputs shorter than this go through the tables alone: the final 16-byte table pass costs more
 // than the folding saves.
@@ -130,9 +131,18 @@ __attribute__((target("pclmul,sse4.1"))) std::uint16_t ClmulCrc(const std::uint8
     const __m128i rest = _mm_blendv_epi8(_mm_shuffle_epi8(x, down), last, down);
     x = _mm_xor_si128(Fold(top, k), rest);
   }
-  alignas(16) std::uint8_t folded[16];
-  _mm_store_si128(reinterpret_cast<__m128i*>(folded), x);
-  return TableCrc(folded, sizeof(folded), 0);
+  // Down to 64 bits: X = H * x^64 + L == H * (x^64 mod P) + L (H the low lane again), twice: the
+  // first leaves 80 significant bits, the second 64, all in the high lane. Those 8 bytes are data
+  // with the same remainder; one table step from a zero register finishes the CRC.
+  const __m128i reduce = _mm_set_epi64x(0, static_cast<long long>(kReduce));
+  const __m128i high_lane = _mm_set_epi64x(-1, 0);
+  x = _mm_xor_si128(_mm_clmulepi64_si128(x, reduce, 0x00), _mm_and_si128(x, high_lane));
+  x = _mm_xor_si128(_mm_clmulepi64_si128(x, reduce, 0x00), _mm_and_si128(x, high_lane));
+  const auto w = static_cast<std::uint64_t>(_mm_extract_epi64(x, 1));
+  return static_cast<std::uint16_t>(kTables[7][w & 0xFF] ^ kTables[6][(w >> 8) & 0xFF] ^
+                                    kTables[5][(w >> 16) & 0xFF] ^ kTables[4][(w >> 24) & 0xFF] ^
+                                    kTables[3][(w >> 32) & 0xFF] ^ kTables[2][(w >> 40) & 0xFF] ^
+                                    kTables[1][(w >> 48) & 0xFF] ^ kTables[0][w >> 56]);
 }
 
 bool HasClmul() {

@@ -37,7 +37,9 @@ inline constexpr std::uint8_t kIncompatFlagSigned = 0x01;
 using FrameBuffer = std::array<std::uint8_t, kMaxFrameLength>;
 
 /// One received frame whose CRC checked out, as FrameParser yields it. Its `payload` points into
-/// the parser's buffer: valid until the parser's next call.
+/// the parser's buffers or, when nothing had to be zero-filled, into the input of the
+/// FrameParser::Next call that yielded it: valid until the parser's next call, and only while that
+/// input is unchanged.
 struct Frame {
   std::uint8_t version = 2;         ///< 2 (start byte 0xFD) or 1 (0xFE)
   std::uint8_t incompat_flags = 0;  ///< v2 only (0 for v1): kIncompatFlagSigned or 0

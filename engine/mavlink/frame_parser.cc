@@ -14,6 +14,26 @@ std::size_t HeaderLength(std::uint8_t start) {
   return start == kStartV2 ? kHeaderLengthV2 : kHeaderLengthV1;
 }
 
+// Copies n <= kMaxPayloadLength bytes in 16-byte blocks, the last one overlapping (and two
+// overlapping 8-, 4- or single-byte moves below 16): GCC turns a memcpy of unknown length into a
+// fixed-size array into `rep movsq`, whose start-up costs more than this whole copy.
+void CopyPayload(std::uint8_t* dst, const std::uint8_t* src, std::size_t n) {
+  if (n >= 16) {
+    for (std::size_t i = 0; i + 16 < n; i += 16) std::memcpy(dst + i, src + i, 16);
+    std::memcpy(dst + n - 16, src + n - 16, 16);
+  } else if (n >= 8) {
+    std::memcpy(dst, src, 8);
+    std::memcpy(dst + n - 8, src + n - 8, 8);
+  } else if (n >= 4) {
+    std::memcpy(dst, src, 4);
+    std::memcpy(dst + n - 4, src + n - 4, 4);
+  } else if (n > 0) {
+    dst[0] = src[0];
+    dst[n / 2] = src[n / 2];
+    dst[n - 1] = src[n - 1];
+  }
+}
+
 enum class HeaderCheck { kNeedMore, kOk, kUnknownId, kBadFlags };
 
 // Reads the header of the candidate at p[0] (a start byte), of which `available` bytes are at hand.
@@ -196,19 +216,23 @@ const Frame* FrameParser::Yield(const std::uint8_t* p, const MessageInfo& info,
     signature_set_ = false;
   }
 
-  // The payload, zero-filled to the message's full length: in place in buf_ (over the CRC and the
-  // signature, already read) unless bytes after the frame are buffered there; else in a copy
-  // (always for a frame read straight from the caller's input, which is const and may go away).
+  // The payload, zero-filled to the message's full length. Nothing to fill: read where it lies (the
+  // caller's input or buf_). Else in place in buf_ (over the CRC and the signature, already read)
+  // unless bytes after the frame are buffered there, or in a copy (the input is const).
   const std::size_t length = std::max<std::size_t>(payload_length, info.full_length);
-  std::uint8_t* payload;
-  if (in_buffer && (length == payload_length || filled_ == frame_length)) {
-    payload = buf_.data() + header_length;
+  if (length == payload_length) {
+    f.payload = std::span<const std::uint8_t>(p + header_length, length);
   } else {
-    std::memcpy(payload_copy_.data(), p + header_length, payload_length);
-    payload = payload_copy_.data();
+    std::uint8_t* payload;
+    if (in_buffer && filled_ == frame_length) {
+      payload = buf_.data() + header_length;
+    } else {
+      CopyPayload(payload_copy_.data(), p + header_length, payload_length);
+      payload = payload_copy_.data();
+    }
+    std::memset(payload + payload_length, 0, length - payload_length);
+    f.payload = std::span<const std::uint8_t>(payload, length);
   }
-  if (length > payload_length) std::memset(payload + payload_length, 0, length - payload_length);
-  f.payload = std::span<const std::uint8_t>(payload, length);
 
   ++stats_.frames_ok;
   held_length_ = in_buffer ? frame_length : 0;

@@ -52,7 +52,8 @@ struct ParserStats {
 ///   for an answer is not held up by garbage before its frame. The stream's first candidate counts
 ///   as found by rescanning (a serial port may start mid-frame).
 /// - No allocation: one fixed internal buffer of kMaxFrameLength bytes, plus one payload copy. A
-///   frame that lies whole at the front of the input (the usual case) is checked there.
+///   frame that lies whole at the front of the input (the usual case) is checked there, and its
+///   payload, unless it needs zero-filling, is read there too.
 ///
 ///   FrameParser parser;
 ///   std::span<const std::uint8_t> bytes(socket_buffer, n_received);
@@ -68,7 +69,8 @@ class FrameParser {
   /// Consumes bytes from the front of `input` (it is advanced past them) until one frame is
   /// complete, and returns it; returns nullptr once `input` is used up without completing a frame
   /// (a partial frame stays buffered for the next call). The Frame and its payload are valid until
-  /// the next call.
+  /// the next call, and only while the bytes of `input` stay unchanged (the payload may be read
+  /// where it lies, without a copy).
   const Frame* Next(std::span<const std::uint8_t>& input);
 
   /// Counters since construction.

@@ -77,7 +77,10 @@ class PayloadWriter {
   explicit PayloadWriter(std::uint8_t* out) : p_(out) {}
   template <class T>
   void operator()(const char* /*name*/, const T& value) {
-    if constexpr (ArrayTraits<T>::value) {
+    if constexpr (ArrayTraits<T>::value && std::endian::native == std::endian::little) {
+      std::memcpy(p_, value.data(), sizeof(T));  // the wire layout of the array: one copy
+      p_ += sizeof(T);
+    } else if constexpr (ArrayTraits<T>::value) {
       for (const auto& e : value) Put(e);
     } else {
       Put(value);
@@ -100,7 +103,10 @@ class PayloadReader {
   explicit PayloadReader(const std::uint8_t* in) : p_(in) {}
   template <class T>
   void operator()(const char* /*name*/, T& value) {
-    if constexpr (ArrayTraits<T>::value) {
+    if constexpr (ArrayTraits<T>::value && std::endian::native == std::endian::little) {
+      std::memcpy(value.data(), p_, sizeof(T));  // the wire layout of the array: one copy
+      p_ += sizeof(T);
+    } else if constexpr (ArrayTraits<T>::value) {
       for (auto& e : value) Get(e);
     } else {
       Get(value);
