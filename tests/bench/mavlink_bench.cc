@@ -1,7 +1,7 @@
-// ns per message of the MAVLink codec on the PX4 lockstep path: HIL_SENSOR goes out at 250 Hz and more
-// per vehicle, HIL_ACTUATOR_CONTROLS comes back once per sensor step. Encode is a whole v2 frame into a
-// buffer (payload, truncation, header, CRC); decode is FrameParser::Next on a frame's bytes (start byte,
-// header, CRC, zero-fill) plus Decode into the struct.
+// ns per message of the MAVLink codec on the PX4 lockstep path: HIL_SENSOR goes out at 250 Hz and
+// more per vehicle, HIL_ACTUATOR_CONTROLS comes back once per sensor step. Encode is a whole v2
+// frame into a buffer (payload, truncation, header, CRC); decode is FrameParser::Next on a frame's
+// bytes (start byte, header, CRC, zero-fill) plus Decode into the struct.
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -103,7 +103,8 @@ BENCHMARK(BM_DecodeHilSensor);
 void BM_DecodeHilActuatorControls(benchmark::State& state) { BM_Decode(state, Controls()); }
 BENCHMARK(BM_DecodeHilActuatorControls);
 
-// The CRC alone over a HIL_ACTUATOR_CONTROLS frame's 90 checked bytes: most of either direction's cost.
+// The CRC alone over a HIL_ACTUATOR_CONTROLS frame's 90 checked bytes: most of either direction's
+// cost.
 void BM_Crc90Bytes(benchmark::State& state) {
   std::array<std::uint8_t, 90> bytes{};
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37);
