@@ -172,9 +172,10 @@ class NodeMavlinkConformanceTest : public ::testing::Test {
     peer_.node = AIRIS_NODE_EXECUTABLE;
     peer_.modules = AIRIS_NODE_MODULES_DIR;
     peer_.script = AIRIS_NODE_PEER_SCRIPT;
-    if (peer_.node.empty()) {
+    if (peer_.node.empty() || !std::filesystem::exists(peer_.node)) {
       if (OnPath("node")) {
-        FAIL() << "node is installed but CMake did not find it when it configured: re-run cmake";
+        FAIL() << "node is installed but not where CMake found it when it configured ("
+               << (peer_.node.empty() ? "nowhere" : peer_.node) << "): re-run cmake";
       }
       GTEST_SKIP()
           << "node (Node.js) is not installed, so the node-mavlink conformance test cannot "
