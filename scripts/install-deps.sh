@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages airis builds and tests with. Idempotent: packages already present are
-# skipped, so a second run costs one dpkg query. Uses sudo only when not root.
+# skipped, so a second run costs one dpkg query. Uses sudo only when not root. (The npm packages of the
+# MAVLink conformance test go into the build folder when CMake configures: scripts/install-node-deps.sh.)
 set -euo pipefail
 
 PACKAGES=(
@@ -15,13 +16,19 @@ PACKAGES=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev  # images (not all of libopencv-dev)
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL + GLES3, llvmpipe when there is no GPU
   libgtest-dev libgmock-dev libbenchmark-dev           # tests and benchmarks
+  nodejs npm               # MAVLink conformance test (node-mavlink: install-node-deps.sh)
 )
+
+# True when package $1 is installed. A Node.js from another source (NodeSource's nodejs package bundles
+# npm and conflicts with Debian's) counts as providing npm when an npm command exists.
+installed() {
+  if dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; then return 0; fi
+  [ "$1" = npm ] && command -v npm >/dev/null 2>&1
+}
 
 missing=()
 for p in "${PACKAGES[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
+  if ! installed "$p"; then missing+=("$p"); fi
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
