@@ -2,4 +2,3 @@
 airis_add_benchmark(bench_mavlink
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/mavlink_bench.cc
   DEPS airis_mavlink)
-target_compile_options(bench_mavlink PRIVATE -Werror)
