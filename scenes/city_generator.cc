@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "scenes/generators.h"
 #include "engine/scene/primitive_meshes.h"
+#include "scenes/generators.h"
 
 namespace airis::scenes {
 
@@ -137,7 +137,8 @@ class CityBuilder {
 
   /// A flat slab centred at (n, e) with its top `thickness` above the ground.
   Eigen::Affine3d Slab(double n, double e, double size_n, double size_e, double thickness) const {
-    return engine::MakePose(Vector3d(n, e, -0.5 * thickness), 0, 0, 0, Vector3d(size_n, size_e, thickness));
+    return engine::MakePose(Vector3d(n, e, -0.5 * thickness), 0, 0, 0,
+                            Vector3d(size_n, size_e, thickness));
   }
 
   void Place(std::uint32_t model, const Eigen::Affine3d& T, std::uint8_t cls,
@@ -203,7 +204,7 @@ class CityBuilder {
         const std::uint32_t model = building_models_[static_cast<int>(roof)][color_pick];
         Place(model,
               engine::MakePose(Vector3d(centre.x(), centre.y(), 0.0), 0, 0, 0,
-                       Vector3d(footprint.x(), footprint.y(), height)),
+                               Vector3d(footprint.x(), footprint.y(), height)),
               r_.building_class, id + "/building" + std::to_string(i) + "_" + std::to_string(j));
         if (ok_) ++report_.buildings;
       }
@@ -250,8 +251,8 @@ class CityBuilder {
         if (u >= p_car) continue;
         const Eigen::Vector2d p = from + dir * ((s + 0.5) * length / slots) + out * lane;
         Place(car_model_,
-              engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw + (flip < 0.5 ? 0.0 : std::numbers::pi), 0,
-                       0, Vector3d::Ones()),
+              engine::MakePose(Vector3d(p.x(), p.y(), 0.0),
+                               yaw + (flip < 0.5 ? 0.0 : std::numbers::pi), 0, 0, Vector3d::Ones()),
               r_.car_class, id + "/car" + std::to_string(k++),
               car_colors_.empty() ? -1 : car_colors_[color]);
       }

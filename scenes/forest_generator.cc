@@ -196,10 +196,11 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
       acc += c.species[++s].weight;
     }
     const double height = Lerp(c.species[s].height_m, u_height);
-    if (!b.AddObject(variants[s][variant],
-                     engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
-                     r.tree_class, CollisionShape::kAuto,
-                     name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
+    if (!b.AddObject(
+            variants[s][variant],
+            engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+            r.tree_class, CollisionShape::kAuto,
+            name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
       report.out_of_instance_ids = true;
       return report;
     }
@@ -220,10 +221,11 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
       const double height = Lerp(g.height_m, rng.Uniform01());
       const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
       if (!AreaContains(c.area, p) || InClearing(c, p)) continue;
-      if (!b.AddObject(bush_model,
-                       engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
-                       r.bush_class, CollisionShape::kAuto,
-                       name + "/bush" + std::to_string(report.bushes))) {
+      if (!b.AddObject(
+              bush_model,
+              engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+              r.bush_class, CollisionShape::kAuto,
+              name + "/bush" + std::to_string(report.bushes))) {
         report.out_of_instance_ids = true;
         return report;
       }

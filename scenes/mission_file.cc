@@ -24,8 +24,9 @@ struct MissionHeader {
 engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
   const YamlReader reader(file);
   if (!root.IsMap()) {
-    reader.Fail(root.Mark(), "", "a mission file must be a map with a 'steps' list (got " +
-                                     YamlReader::Describe(root) + ")");
+    reader.Fail(root.Mark(), "",
+                "a mission file must be a map with a 'steps' list (got " +
+                    YamlReader::Describe(root) + ")");
   }
   MissionHeader header;
   reader.ReadStruct(root, root.Mark(), "", header, {"steps"});
@@ -57,7 +58,8 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
     const auto found = std::find(kind_names.begin(), kind_names.end(), kind);
     if (found == kind_names.end()) {
       std::string problem = "unknown step '" + kind + "'";
-      if (const auto close = engine::ClosestMatch(kind, kind_names)) problem += " (did you mean '" + *close + "'?)";
+      if (const auto close = engine::ClosestMatch(kind, kind_names))
+        problem += " (did you mean '" + *close + "'?)";
       std::string all;
       for (const auto& k : kind_names) all += (all.empty() ? "" : ", ") + k;
       reader.Fail(mark, path, problem + "; steps are " + all);
@@ -66,13 +68,16 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
     mission.steps.push_back(
         MissionStepKinds()[index].read(reader, entry->second, mark, path + "." + kind));
   }
-  if (mission.steps.empty()) reader.Fail(steps.Mark(), "steps", "a mission needs at least one step");
+  if (mission.steps.empty())
+    reader.Fail(steps.Mark(), "steps", "a mission needs at least one step");
   return mission;
 }
 
 }  // namespace
 
-engine::Mission LoadMissionFile(const std::string& path) { return ReadMission(LoadYamlFile(path), path); }
+engine::Mission LoadMissionFile(const std::string& path) {
+  return ReadMission(LoadYamlFile(path), path);
+}
 
 engine::Mission ParseMission(const std::string& text, const std::string& file) {
   return ReadMission(LoadYamlString(text, file), file);

@@ -12,10 +12,10 @@
 #include "engine/core/error.h"
 #include "engine/core/frames.h"
 #include "engine/core/geodetic.h"
-#include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
-#include "engine/world/world.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/scene/static_scene.h"
+#include "engine/world/world.h"
 #include "scenes/sensor_spec.h"
 #include "scenes/vehicle_spec.h"
 
@@ -32,10 +32,10 @@ struct VehicleDescription {
   /// Start state: position of the centre of mass and velocity in world NED, attitude body FRD ->
   /// NED, angular velocity in body axes. With on_ground, the height rests the body on the surface.
   engine::RigidBodyState start;
-  bool on_ground = false;                    ///< starts resting on the surface below it
-  engine::SourceLocation where;              ///< the entry in its scene file
-  std::string key_path;                      ///< e.g. `vehicles[0]`
-  std::shared_ptr<const VehicleSpec> spec;   ///< kind + preset + overrides, validated
+  bool on_ground = false;                   ///< starts resting on the surface below it
+  engine::SourceLocation where;             ///< the entry in its scene file
+  std::string key_path;                     ///< e.g. `vehicles[0]`
+  std::shared_ptr<const VehicleSpec> spec;  ///< kind + preset + overrides, validated
   std::vector<SensorDescription> sensors;
 };
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "engine/core/config.h"
-#include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
+#include "engine/scene/static_scene.h"
 #include "scenes/mesh_loader.h"
 
 namespace airis::scenes {

@@ -6,11 +6,11 @@
 #include <numbers>
 
 #include "engine/core/random.h"
+#include "engine/scene/static_scene_builder.h"
 #include "scenes/builtin_classes.h"
 #include "scenes/generators.h"
 #include "scenes/mesh_loader.h"
 #include "scenes/scene.h"
-#include "engine/scene/static_scene_builder.h"
 #include "scenes/scene_file.h"
 #include "scenes/vehicle_kinds.h"
 
@@ -163,9 +163,10 @@ class SceneAssembler {
         doc_.ground ? TexturePath(entry, "material.texture", g.material.texture) : "";
     const auto material =
         static_cast<std::int32_t>(builder_.Material(ToMaterial(g.material, texture)));
-    builder_.AddObject(builder_.PrimitiveModel(engine::Primitive::kPlane),
-                       engine::MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
-                       engine::CollisionShape::kAuto, "ground", material);
+    builder_.AddObject(
+        builder_.PrimitiveModel(engine::Primitive::kPlane),
+        engine::MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
+        engine::CollisionShape::kAuto, "ground", material);
     ground_instance_ = 1;
   }
 
@@ -194,8 +195,8 @@ class SceneAssembler {
         std::string name = base;
         if (r.rows > 1) name += "_" + std::to_string(row);
         if (r.count > 1 || r.rows > 1) name += "_" + std::to_string(i);
-        const Eigen::Affine3d T =
-            engine::MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg), DegToRad(c.roll_deg), c.scale);
+        const Eigen::Affine3d T = engine::MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg),
+                                                   DegToRad(c.roll_deg), c.scale);
         if (!builder_.AddObject(model, T, cls, c.collision, std::move(name), material)) {
           entry.Fail("repeat", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
                                    " objects (instance ids are 16-bit)");
@@ -273,8 +274,8 @@ class SceneAssembler {
     v.kind = c.kind;
     v.preset = c.preset;
     v.start.p_W = c.start.position_m;
-    v.start.q_WB = engine::QuatFromEuler({DegToRad(c.start.roll_deg), DegToRad(c.start.pitch_deg),
-                                          DegToRad(c.start.yaw_deg)});
+    v.start.q_WB = engine::QuatFromEuler(
+        {DegToRad(c.start.roll_deg), DegToRad(c.start.pitch_deg), DegToRad(c.start.yaw_deg)});
     v.start.v_W = c.start.velocity_ned_m_s;
     v.start.w_B = c.start.angular_velocity_frd_rad_s;
     v.on_ground = c.start.on_ground;
@@ -294,8 +295,8 @@ class SceneAssembler {
     }
     if (has_ground && v.start.p_W.z() > 0.0) {
       entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts below the ground (z = " +
-                                         engine::FormatNumber(v.start.p_W.z()) +
-                                         " m; NED z is down, so heights are negative)");
+                                             engine::FormatNumber(v.start.p_W.z()) +
+                                             " m; NED z is down, so heights are negative)");
     }
     const engine::StaticScene& scene = builder_.scene();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
@@ -305,9 +306,9 @@ class SceneAssembler {
       const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.start.p_W).cast<float>();
       if (!scene.models[o.model].bounds.contains(p_O)) continue;
       const engine::SemanticClass* cls = scene.FindClass(o.class_id);
-      entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts inside object '" + o.name +
-                                         "' (class " + (cls ? cls->name : "?") + ", instance " +
-                                         std::to_string(o.instance_id) + ")");
+      entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts inside object '" +
+                                             o.name + "' (class " + (cls ? cls->name : "?") +
+                                             ", instance " + std::to_string(o.instance_id) + ")");
     }
     return v;
   }

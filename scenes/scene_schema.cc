@@ -41,8 +41,8 @@ std::vector<SchemaSection> SceneSchemaSections() {
   }
   for (const SensorKind& k : SensorKinds()) {
     const std::string prefix = "vehicles[].sensors[]." + std::string(k.name) + ".";
-    out.push_back({"vehicles[].sensors[]." + std::string(k.name),
-                   FieldTableMarkdown(k.fields(), prefix)});
+    out.push_back(
+        {"vehicles[].sensors[]." + std::string(k.name), FieldTableMarkdown(k.fields(), prefix)});
   }
   return out;
 }

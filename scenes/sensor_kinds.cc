@@ -39,9 +39,9 @@ void SensorEntry::ReadFromYaml(const YamlReader& reader, const YAML::Node& node,
     all += (i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + kinds[i];
   }
   if (!node.IsMap()) {
-    reader.Fail(mark, key_path,
-                "expected a map with one sensor (" + all + ") (got " + YamlReader::Describe(node) +
-                    ")");
+    reader.Fail(
+        mark, key_path,
+        "expected a map with one sensor (" + all + ") (got " + YamlReader::Describe(node) + ")");
   }
   where = reader.Where(mark);
   const SensorKind* found = nullptr;
@@ -69,16 +69,17 @@ void SensorEntry::ReadFromYaml(const YamlReader& reader, const YAML::Node& node,
                   problem + "; a sensor entry has `name` and one of " + all);
     }
     if (found) {
-      reader.Fail(key_mark, yaml_detail::JoinKey(key_path, key),
-                  "give one sensor per entry (this one also has '" + std::string(found->name) +
-                      "')");
+      reader.Fail(
+          key_mark, yaml_detail::JoinKey(key_path, key),
+          "give one sensor per entry (this one also has '" + std::string(found->name) + "')");
     }
     found = kind;
     value.reset(item.second);
     value_mark = key_mark;
   }
   if (!found) reader.Fail(mark, key_path, "expected one sensor: " + all);
-  spec = found->read(reader, value, value_mark, yaml_detail::JoinKey(key_path, std::string(found->name)));
+  spec = found->read(reader, value, value_mark,
+                     yaml_detail::JoinKey(key_path, std::string(found->name)));
   if (name.empty()) name = found->name;
 }
 

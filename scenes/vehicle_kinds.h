@@ -53,8 +53,7 @@ VehicleKind VehicleKindOf(std::string_view name, std::string_view doc,
             if (overrides.IsDefined() && !overrides.IsNull()) {
               reader.ReadStruct(overrides, mark, key_path, config);
             }
-            return std::make_shared<const VehicleSpecOf<Config, VehicleT>>(name,
-                                                                           std::move(config));
+            return std::make_shared<const VehicleSpecOf<Config, VehicleT>>(name, std::move(config));
           },
           [] { return ListFields<Config>(); }};
 }

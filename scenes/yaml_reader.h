@@ -159,9 +159,9 @@ class YamlReader {
   [[noreturn]] void FailInvalidField(const YAML::Node& node, const YAML::Mark& mark,
                                      const std::string& key_path,
                                      const engine::InvalidField& e) const;
-  void RejectUnknownKeys(const YAML::Node& node, const std::string& key_path,
-                         const std::vector<std::string>& known,
-                         const std::vector<std::pair<std::string, std::string>>& renamed = {}) const;
+  void RejectUnknownKeys(
+      const YAML::Node& node, const std::string& key_path, const std::vector<std::string>& known,
+      const std::vector<std::pair<std::string, std::string>>& renamed = {}) const;
   /// Index of `key` in map `node` and its key mark, or false.
   static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
                       YAML::Mark* mark);
@@ -185,7 +185,9 @@ class YamlReader::FieldReader {
   }
 
   /// An old spelling of a key (engine/core/config.h): reading it is an error naming the new one.
-  void Renamed(const char* old_key, const char* new_key) { renamed_.emplace_back(old_key, new_key); }
+  void Renamed(const char* old_key, const char* new_key) {
+    renamed_.emplace_back(old_key, new_key);
+  }
 
   std::vector<std::string>& known() { return known_; }
   const std::vector<std::pair<std::string, std::string>>& renamed() const { return renamed_; }

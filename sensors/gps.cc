@@ -15,7 +15,7 @@ using engine::Vec3;
 
 namespace {
 const std::string kColumns[] = {
-    "fix_type",          "latitude_deg", "longitude_deg", "altitude_m",     "velocity_ned_x_m_s",
+    "fix_type",           "latitude_deg", "longitude_deg", "altitude_m",     "velocity_ned_x_m_s",
     "velocity_ned_y_m_s", "eph_m",        "epv_m",         "position_time_s"};
 
 // First-order decay from `initial` to `final` with time constant `tau_s`, started at `start_ns`.

@@ -33,7 +33,8 @@ struct MagnetometerConfig {
     v.Field("noise_gauss", noise_gauss, "white noise per axis, 1 sigma (gauss)");
     v.Field("scale_factor", scale_factor, "per-axis gain [x, y, z] (1 = ideal)");
     v.Renamed("hard_iron_gauss", "hard_iron_sensor_gauss");
-    v.Field("hard_iron_sensor_gauss", hard_iron_gauss, "fixed bias [x, y, z] in sensor axes (gauss)");
+    v.Field("hard_iron_sensor_gauss", hard_iron_gauss,
+            "fixed bias [x, y, z] in sensor axes (gauss)");
     v.Field("soft_iron", soft_iron,
             "3x3 soft-iron matrix, 9 numbers row by row (empty = identity)");
     v.Field("field_update_distance_m", field_update_distance_m,

@@ -31,9 +31,11 @@ SimClock SimClock::FromRateHz(double rate_hz, double min_hz, double max_hz) {
   const double step = 1e9 / rate_hz;
   const double whole = std::round(step);
   if (std::abs(step - whole) > 1e-6) {
-    throw InvalidField("rate_hz", "the tick period 1e9 / rate_hz must be a whole number of nanoseconds "
-                                  "(got " + std::to_string(rate_hz) + " Hz, period " +
-                                      std::to_string(step) + " ns; try 250, 500, 1000, 2000 or 4000)");
+    throw InvalidField("rate_hz",
+                       "the tick period 1e9 / rate_hz must be a whole number of nanoseconds "
+                       "(got " +
+                           std::to_string(rate_hz) + " Hz, period " + std::to_string(step) +
+                           " ns; try 250, 500, 1000, 2000 or 4000)");
   }
   return SimClock(static_cast<TimeNs>(whole));
 }
@@ -51,7 +53,8 @@ RateSchedule::RateSchedule(double rate_hz, TimeNs start_ns) : start_ns_(start_ns
 }
 
 TimeNs RateSchedule::DueTime(std::int64_t k) const {
-  // ceil(k * 1e9 / rate) with rate = rate_uhz / 1e6, i.e. ceil(k * 1e15 / rate_uhz), in 128-bit arithmetic.
+  // ceil(k * 1e9 / rate) with rate = rate_uhz / 1e6, i.e. ceil(k * 1e15 / rate_uhz), in 128-bit
+  // arithmetic.
   const __int128 num = static_cast<__int128>(k) * kNsPerSecond * kMicroHzPerHz;
   const __int128 q = (num + rate_uhz_ - 1) / rate_uhz_;
   return start_ns_ + static_cast<TimeNs>(q);

@@ -4,17 +4,18 @@
 
 namespace airis::engine {
 
-/// Simulated time: an integer count of nanoseconds since the start of the run. Integer time never drifts:
-/// tick n of a clock is at exactly n * step, however long the run.
+/// Simulated time: an integer count of nanoseconds since the start of the run. Integer time never
+/// drifts: tick n of a clock is at exactly n * step, however long the run.
 using TimeNs = std::int64_t;
 
 inline constexpr TimeNs kNsPerSecond = 1'000'000'000;
 
-/// Simulated nanoseconds to seconds (exact for any run shorter than ~104 days; beyond that, to 1 ns).
+/// Simulated nanoseconds to seconds (exact for any run shorter than ~104 days; beyond that, to 1
+/// ns).
 constexpr double ToSeconds(TimeNs t_ns) { return static_cast<double>(t_ns) * 1e-9; }
 
-/// Seconds to simulated nanoseconds, rounded to the nearest nanosecond. Throws InvalidField(`field`) if
-/// `seconds` is not finite or does not fit in 64-bit nanoseconds.
+/// Seconds to simulated nanoseconds, rounded to the nearest nanosecond. Throws
+/// InvalidField(`field`) if `seconds` is not finite or does not fit in 64-bit nanoseconds.
 TimeNs SecondsToNs(double seconds, const char* field = "seconds");
 
 /// The fixed-step clock of a Simulation. Time is tick_count * step_ns, computed, never accumulated.
@@ -23,9 +24,9 @@ class SimClock {
   /// @param step_ns tick period in nanoseconds, > 0.
   explicit SimClock(TimeNs step_ns);
 
-  /// A clock ticking at `rate_hz`. Throws InvalidField("rate_hz") unless 1e9 / rate_hz is a whole number of
-  /// nanoseconds (100 Hz, 250 Hz, 1 kHz, 4 kHz, 10 kHz ... are; 3 kHz is not) and the rate is within
-  /// [min_hz, max_hz].
+  /// A clock ticking at `rate_hz`. Throws InvalidField("rate_hz") unless 1e9 / rate_hz is a whole
+  /// number of nanoseconds (100 Hz, 250 Hz, 1 kHz, 4 kHz, 10 kHz ... are; 3 kHz is not) and the
+  /// rate is within [min_hz, max_hz].
   static SimClock FromRateHz(double rate_hz, double min_hz = 100.0, double max_hz = 10'000.0);
 
   /// Moves to the next tick.
@@ -43,10 +44,11 @@ class SimClock {
   std::int64_t tick_ = 0;
 };
 
-/// When a periodic process (a sensor at 50 Hz, a camera at 30 Hz) is due on the simulated clock. Event k is
-/// due at start + ceil(k / rate) exactly, with the rate held as an exact rational (micro-hertz resolution), so
-/// a rate never drifts: a 50 Hz sensor on a 1 kHz tick fires every 20th tick for ever, and on 3 ms ticks it
-/// still fires exactly 50 times per simulated second (at the first tick at or after each due time).
+/// When a periodic process (a sensor at 50 Hz, a camera at 30 Hz) is due on the simulated clock.
+/// Event k is due at start + ceil(k / rate) exactly, with the rate held as an exact rational
+/// (micro-hertz resolution), so a rate never drifts: a 50 Hz sensor on a 1 kHz tick fires every
+/// 20th tick for ever, and on 3 ms ticks it still fires exactly 50 times per simulated second (at
+/// the first tick at or after each due time).
 class RateSchedule {
  public:
   /// @param rate_hz events per simulated second, > 0 and a whole number of micro-hertz.
@@ -60,8 +62,8 @@ class RateSchedule {
   /// True when the next event is due at or before `now_ns`.
   bool IsDue(TimeNs now_ns) const { return now_ns >= next_due_ns_; }
 
-  /// Consumes every event due at or before `now_ns` and returns how many there were (0 or 1 whenever the
-  /// rate is at most the tick rate).
+  /// Consumes every event due at or before `now_ns` and returns how many there were (0 or 1
+  /// whenever the rate is at most the tick rate).
   int ConsumeDue(TimeNs now_ns);
 
   TimeNs next_due_ns() const { return next_due_ns_; }
@@ -72,7 +74,8 @@ class RateSchedule {
   double period_s() const { return 1.0 / rate_hz(); }
 
  private:
-  std::int64_t rate_uhz_;  // rate in micro-hertz: the exact rational rate_uhz / 1e6 events per second
+  std::int64_t
+      rate_uhz_;  // rate in micro-hertz: the exact rational rate_uhz / 1e6 events per second
   TimeNs start_ns_;
   std::int64_t next_index_ = 0;
   TimeNs next_due_ns_;

@@ -15,7 +15,8 @@ std::string FormatNumber(double value) {
 
 void RequireFinite(std::string_view field, double value) {
   if (!std::isfinite(value)) {
-    throw InvalidField(std::string(field), "must be a finite number (got " + FormatNumber(value) + ")");
+    throw InvalidField(std::string(field),
+                       "must be a finite number (got " + FormatNumber(value) + ")");
   }
 }
 

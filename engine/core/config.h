@@ -15,9 +15,10 @@
 // A key renamed in a new format version stays in the list as `v.Renamed("old_key", "new_key")`:
 // readers refuse the old spelling with a message naming the new one; documentation ignores it.
 //
-// `Visit` is the one list of fields: the YAML reader (scenes/), the documentation generator and error
-// messages are all driven by it. A field may be a number, bool, string, an enum with EnumNames (below), an
-// Eigen vector, a std::vector or std::optional of those, or another struct with its own Visit.
+// `Visit` is the one list of fields: the YAML reader (scenes/), the documentation generator and
+// error messages are all driven by it. A field may be a number, bool, string, an enum with
+// EnumNames (below), an Eigen vector, a std::vector or std::optional of those, or another struct
+// with its own Visit.
 
 #include <Eigen/Core>
 #include <array>

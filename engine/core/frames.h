@@ -8,7 +8,8 @@ namespace airis::engine {
 // Frames used everywhere in airis:
 //   W  world, local NED about the scene's geodetic origin: x north, y east, z down (metres).
 //   B  body, FRD: x forward, y right, z down, origin at the centre of mass.
-// A rotation R_WB (or quaternion q_WB) maps body-frame vectors into the world frame: v_W = R_WB * v_B.
+// A rotation R_WB (or quaternion q_WB) maps body-frame vectors into the world frame: v_W = R_WB *
+// v_B.
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
@@ -30,8 +31,8 @@ EulerAngles EulerFromQuat(const Quat& q_WB);
 /// Skew-symmetric matrix [v]x such that [v]x * w = v.cross(w).
 Mat3 Skew(const Vec3& v);
 
-/// Unit quaternion of a rotation by |rotation_vector| radians about rotation_vector's direction (exponential
-/// map); exact for any angle and accurate to machine precision near zero.
+/// Unit quaternion of a rotation by |rotation_vector| radians about rotation_vector's direction
+/// (exponential map); exact for any angle and accurate to machine precision near zero.
 Quat QuatExp(const Vec3& rotation_vector);
 
 /// Rotation vector (axis * angle, angle in [0, pi]) of a unit quaternion; inverse of QuatExp.

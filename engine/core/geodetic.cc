@@ -7,7 +7,8 @@ namespace airis::engine {
 Vec3 GeodeticToEcef(const GeodeticPosition& g) {
   using namespace wgs84;
   const double sl = std::sin(g.latitude_rad), cl = std::cos(g.latitude_rad);
-  const double n = kSemiMajorAxis_m / std::sqrt(1.0 - kEccentricitySq * sl * sl);  // prime vertical radius
+  const double n =
+      kSemiMajorAxis_m / std::sqrt(1.0 - kEccentricitySq * sl * sl);  // prime vertical radius
   return Vec3((n + g.altitude_m) * cl * std::cos(g.longitude_rad),
               (n + g.altitude_m) * cl * std::sin(g.longitude_rad),
               (n * (1.0 - kEccentricitySq) + g.altitude_m) * sl);
@@ -21,7 +22,8 @@ GeodeticPosition EcefToGeodetic(const Vec3& p_E) {
   const double z = p_E.z();
   GeodeticPosition g;
   g.longitude_rad = std::atan2(p_E.y(), p_E.x());
-  // Bowring (1976): iterate on the parametric latitude beta; each step multiplies the error by ~1e-6.
+  // Bowring (1976): iterate on the parametric latitude beta; each step multiplies the error by
+  // ~1e-6.
   double beta = std::atan2(a * z, b * p);
   double lat = 0.0;
   for (int i = 0; i < 3; ++i) {
@@ -41,9 +43,7 @@ Mat3 NedToEcefRotation(const GeodeticPosition& o) {
   const double so = std::sin(o.longitude_rad), co = std::cos(o.longitude_rad);
   Mat3 r;
   // Columns are the north, east and down unit vectors expressed in ECEF.
-  r << -sl * co, -so, -cl * co,
-       -sl * so, co, -cl * so,
-       cl, 0.0, -sl;
+  r << -sl * co, -so, -cl * co, -sl * so, co, -cl * so, cl, 0.0, -sl;
   return r;
 }
 

@@ -22,15 +22,17 @@ struct GeodeticPosition {
 /// Earth-centred, Earth-fixed Cartesian position (metres) of a geodetic point. Exact.
 Vec3 GeodeticToEcef(const GeodeticPosition& g);
 
-/// Geodetic position of an ECEF point. Bowring's method with three fixed iterations: accurate to well below a
-/// micrometre for any point from the Earth's centre region out to geostationary orbit, and deterministic.
+/// Geodetic position of an ECEF point. Bowring's method with three fixed iterations: accurate to
+/// well below a micrometre for any point from the Earth's centre region out to geostationary orbit,
+/// and deterministic.
 GeodeticPosition EcefToGeodetic(const Vec3& p_E);
 
 /// Rotation from local NED axes at `origin` to ECEF axes (columns: north, east, down in ECEF).
 Mat3 NedToEcefRotation(const GeodeticPosition& origin);
 
-/// The world frame W: a local NED frame tangent to the ellipsoid at a geodetic origin. Conversions are exact
-/// (through ECEF, not flat-earth): a round trip is better than a micrometre at 100 km from the origin.
+/// The world frame W: a local NED frame tangent to the ellipsoid at a geodetic origin. Conversions
+/// are exact (through ECEF, not flat-earth): a round trip is better than a micrometre at 100 km
+/// from the origin.
 class LocalNedFrame {
  public:
   explicit LocalNedFrame(const GeodeticPosition& origin);

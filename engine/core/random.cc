@@ -70,7 +70,8 @@ double RandomStream::Gaussian() {
     has_spare_ = false;
     return spare_;
   }
-  // Marsaglia's polar method: exact N(0,1) pairs from uniforms; only sqrt and log (deterministic in glibc).
+  // Marsaglia's polar method: exact N(0,1) pairs from uniforms; only sqrt and log (deterministic in
+  // glibc).
   double u, v, s;
   do {
     u = 2.0 * Uniform01() - 1.0;

@@ -8,9 +8,9 @@ namespace airis::engine {
 /// FNV-1a 64-bit hash of `text`: stable across runs, builds and machines (unlike std::hash).
 std::uint64_t StableHash(std::string_view text);
 
-/// One reproducible stream of random numbers (xoshiro256++ seeded through SplitMix64). Its output depends only
-/// on the seed: the same bits on every run, build and machine. The Gaussian is our own (Marsaglia's polar
-/// method) because std::normal_distribution differs between standard libraries.
+/// One reproducible stream of random numbers (xoshiro256++ seeded through SplitMix64). Its output
+/// depends only on the seed: the same bits on every run, build and machine. The Gaussian is our own
+/// (Marsaglia's polar method) because std::normal_distribution differs between standard libraries.
 class RandomStream {
  public:
   explicit RandomStream(std::uint64_t seed);
@@ -34,9 +34,9 @@ class RandomStream {
   bool has_spare_ = false;
 };
 
-/// Derives the independent stream of each named component from one scene seed. A component's stream depends
-/// only on the scene seed and its own name (e.g. "vehicles/drone1/imu"), so adding or renaming another
-/// component never changes it.
+/// Derives the independent stream of each named component from one scene seed. A component's stream
+/// depends only on the scene seed and its own name (e.g. "vehicles/drone1/imu"), so adding or
+/// renaming another component never changes it.
 class RandomStreams {
  public:
   explicit RandomStreams(std::uint64_t scene_seed) : scene_seed_(scene_seed) {}

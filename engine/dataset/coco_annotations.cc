@@ -7,8 +7,9 @@
 namespace airis::engine {
 
 std::string EncodeCocoRleCounts(const std::vector<std::uint32_t>& counts) {
-  // pycocotools maskApi.c rleToString: each count (after the second, as the difference from the count two
-  // places earlier) in 5-bit groups, low first; bit 0x20 marks "more follows"; +48 makes it printable.
+  // pycocotools maskApi.c rleToString: each count (after the second, as the difference from the
+  // count two places earlier) in 5-bit groups, low first; bit 0x20 marks "more follows"; +48 makes
+  // it printable.
   std::string out;
   for (std::size_t i = 0; i < counts.size(); ++i) {
     long long x = counts[i];
@@ -90,7 +91,8 @@ std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint
       if (!a.counts.empty() && a.run_end == k) {
         ++a.counts.back();  // the object run goes on
       } else {
-        a.counts.push_back(k - a.run_end);  // background run before it (0 when the image starts with it)
+        a.counts.push_back(
+            k - a.run_end);  // background run before it (0 when the image starts with it)
         a.counts.push_back(1);
       }
       a.run_end = k + 1;

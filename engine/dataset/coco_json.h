@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene/static_scene.h"
 #include "engine/dataset/coco_annotations.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::engine {
 
@@ -19,12 +19,13 @@ struct CocoImage {
   int height = 0;
 };
 
-/// The COCO instances document of one camera: `images`, `categories` (the scene's classes; id = class id),
-/// `annotations` (id from 1 in frame then instance order; category_id = class id; bbox [x, y, w, h]; area in
-/// pixels; iscrowd 0; segmentation {size: [h, w], counts: compressed RLE}; airis extensions: instance_id,
-/// truncated). Deterministic key and element order.
-nlohmann::json BuildCocoJson(const std::vector<CocoImage>& images,
-                             const std::map<std::int64_t, std::vector<InstanceAnnotation>>& annotations,
-                             const std::vector<SemanticClass>& categories);
+/// The COCO instances document of one camera: `images`, `categories` (the scene's classes; id =
+/// class id), `annotations` (id from 1 in frame then instance order; category_id = class id; bbox
+/// [x, y, w, h]; area in pixels; iscrowd 0; segmentation {size: [h, w], counts: compressed RLE};
+/// airis extensions: instance_id, truncated). Deterministic key and element order.
+nlohmann::json BuildCocoJson(
+    const std::vector<CocoImage>& images,
+    const std::map<std::int64_t, std::vector<InstanceAnnotation>>& annotations,
+    const std::vector<SemanticClass>& categories);
 
 }  // namespace airis::engine

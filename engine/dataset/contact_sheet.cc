@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "engine/core/error.h"
@@ -83,8 +83,8 @@ std::vector<std::uint8_t> EncodeFramePanelsPng(const CameraFrame& frame,
   panels.Resize(3 * w, h, 4);
   std::fill(panels.pixels.begin(), panels.pixels.end(), 255);
   Blit(frame.rgba, 1, panels, 0, 0);
-  Blit(ColorizeDepth(frame.depth_perspective_m, std::max(near_seen, 0.1f), far_seen), 1, panels,
-       w, 0);
+  Blit(ColorizeDepth(frame.depth_perspective_m, std::max(near_seen, 0.1f), far_seen), 1, panels, w,
+       0);
   Blit(ColorizeSegmentation(frame.class_id, frame.instance_id, classes), 1, panels, 2 * w, 0);
   return EncodeRgbPng(panels);
 }

@@ -13,7 +13,8 @@ namespace airis::engine {
 CsvWriter::CsvWriter(std::filesystem::path path, std::span<const std::string> columns)
     : path_(std::move(path)), partial_(path_.string() + ".partial"), columns_(columns.size()) {
   out_.open(partial_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw DatasetIoError("cannot create " + partial_.string() + ": " + std::strerror(errno));
+  if (!out_)
+    throw DatasetIoError("cannot create " + partial_.string() + ": " + std::strerror(errno));
   for (const auto& c : columns) Add(c);
   EndRow();
   rows_ = 0;

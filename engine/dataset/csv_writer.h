@@ -9,9 +9,10 @@
 
 namespace airis::engine {
 
-/// A CSV file with a header row. Numbers are written as the shortest text that reads back to the same double
-/// (std::to_chars), so logs are exact and byte-identical across runs. Written to `<path>.partial` and renamed
-/// to `path` by Close(), so an interrupted run never leaves a file that looks complete.
+/// A CSV file with a header row. Numbers are written as the shortest text that reads back to the
+/// same double (std::to_chars), so logs are exact and byte-identical across runs. Written to
+/// `<path>.partial` and renamed to `path` by Close(), so an interrupted run never leaves a file
+/// that looks complete.
 class CsvWriter {
  public:
   /// Opens the file; throws DatasetIoError naming the path.

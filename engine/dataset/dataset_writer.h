@@ -12,9 +12,9 @@
 #include <thread>
 #include <vector>
 
+#include "engine/core/camera_frame.h"
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/tartanair.h"
-#include "engine/core/camera_frame.h"
 
 namespace airis::engine {
 

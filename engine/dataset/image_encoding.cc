@@ -52,7 +52,8 @@ std::vector<std::uint8_t> EncodeDepthMmPng(const Image<float>& depth_m) {
   AIRIS_DEMAND(depth_m.channels == 1);
   cv::Mat mm(depth_m.height, depth_m.width, CV_16UC1);
   auto* out = mm.ptr<std::uint16_t>();
-  for (std::size_t i = 0; i < depth_m.pixels.size(); ++i) out[i] = DepthToMillimetres(depth_m.pixels[i]);
+  for (std::size_t i = 0; i < depth_m.pixels.size(); ++i)
+    out[i] = DepthToMillimetres(depth_m.pixels[i]);
   return Encode(mm);
 }
 

@@ -7,13 +7,13 @@
 
 namespace airis::engine {
 
-// PNG encoders for dataset images. Settings are fixed (zlib level 1, default filter strategy), so the same
-// image always gives the same bytes with the same libpng and zlib.
+// PNG encoders for dataset images. Settings are fixed (zlib level 1, default filter strategy), so
+// the same image always gives the same bytes with the same libpng and zlib.
 
 /// 8-bit sRGB colour PNG from an RGBA8 image (alpha dropped).
 std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba);
-/// 16-bit grey PNG of depth in millimetres: round(depth_m * 1000); 0 where there is no return (sky, not
-/// finite, <= 0, or beyond 65.535 m, the largest 16-bit value).
+/// 16-bit grey PNG of depth in millimetres: round(depth_m * 1000); 0 where there is no return (sky,
+/// not finite, <= 0, or beyond 65.535 m, the largest 16-bit value).
 std::vector<std::uint8_t> EncodeDepthMmPng(const Image<float>& depth_m);
 /// 8-bit grey PNG of class ids.
 std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id);

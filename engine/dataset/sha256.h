@@ -6,8 +6,8 @@
 
 namespace airis::engine {
 
-/// SHA-256 (FIPS 180-4) of `bytes`, as 64 lowercase hex digits. Used to identify the scene and mission
-/// files a dataset was made from.
+/// SHA-256 (FIPS 180-4) of `bytes`, as 64 lowercase hex digits. Used to identify the scene and
+/// mission files a dataset was made from.
 std::string Sha256Hex(std::span<const std::uint8_t> bytes);
 std::string Sha256Hex(const std::string& text);
 

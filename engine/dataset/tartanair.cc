@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/core/camera_model.h"
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
-#include "engine/core/camera_model.h"
 
 namespace airis::engine {
 namespace {
@@ -56,7 +56,8 @@ void WriteTartanAirPoses(const std::filesystem::path& poses_csv,
   const CsvText csv = ReadCsvText(poses_csv);
   const std::size_t px = csv.Column("position_ned_x_m"), py = csv.Column("position_ned_y_m"),
                     pz = csv.Column("position_ned_z_m");
-  const std::size_t qw = csv.Column("attitude_cam_to_ned_w"), qx = csv.Column("attitude_cam_to_ned_x"),
+  const std::size_t qw = csv.Column("attitude_cam_to_ned_w"),
+                    qx = csv.Column("attitude_cam_to_ned_x"),
                     qy = csv.Column("attitude_cam_to_ned_y"),
                     qz = csv.Column("attitude_cam_to_ned_z");
   std::string text;

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/frames.h"
 #include "engine/core/camera_frame.h"
+#include "engine/core/frames.h"
 
 namespace airis::engine {
 

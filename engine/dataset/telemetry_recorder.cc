@@ -15,28 +15,51 @@ std::vector<std::string> TimeColumns(std::vector<std::string> rest) {
 TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& dir,
                                      double truth_rate_hz)
     : world_(world), truth_schedule_(truth_rate_hz) {
-  truth_ = std::make_unique<CsvWriter>(
-      dir / "truth.csv",
-      TimeColumns({"vehicle",
-                   "position_ned_x_m", "position_ned_y_m", "position_ned_z_m",
-                   "velocity_ned_x_m_s", "velocity_ned_y_m_s", "velocity_ned_z_m_s",
-                   "attitude_frd_to_ned_w", "attitude_frd_to_ned_x", "attitude_frd_to_ned_y",
-                   "attitude_frd_to_ned_z", "roll_deg", "pitch_deg", "yaw_deg",
-                   "angular_velocity_frd_x_rad_s", "angular_velocity_frd_y_rad_s",
-                   "angular_velocity_frd_z_rad_s", "acceleration_ned_x_m_s2",
-                   "acceleration_ned_y_m_s2", "acceleration_ned_z_m_s2", "latitude_deg", "longitude_deg",
-                   "altitude_m"}));
+  truth_ =
+      std::make_unique<CsvWriter>(dir / "truth.csv", TimeColumns({"vehicle",
+                                                                  "position_ned_x_m",
+                                                                  "position_ned_y_m",
+                                                                  "position_ned_z_m",
+                                                                  "velocity_ned_x_m_s",
+                                                                  "velocity_ned_y_m_s",
+                                                                  "velocity_ned_z_m_s",
+                                                                  "attitude_frd_to_ned_w",
+                                                                  "attitude_frd_to_ned_x",
+                                                                  "attitude_frd_to_ned_y",
+                                                                  "attitude_frd_to_ned_z",
+                                                                  "roll_deg",
+                                                                  "pitch_deg",
+                                                                  "yaw_deg",
+                                                                  "angular_velocity_frd_x_rad_s",
+                                                                  "angular_velocity_frd_y_rad_s",
+                                                                  "angular_velocity_frd_z_rad_s",
+                                                                  "acceleration_ned_x_m_s2",
+                                                                  "acceleration_ned_y_m_s2",
+                                                                  "acceleration_ned_z_m_s2",
+                                                                  "latitude_deg",
+                                                                  "longitude_deg",
+                                                                  "altitude_m"}));
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
-    std::vector<std::string> cols = {
-        "mode",
-        "position_setpoint_ned_x_m", "position_setpoint_ned_y_m", "position_setpoint_ned_z_m",
-        "velocity_setpoint_ned_x_m_s", "velocity_setpoint_ned_y_m_s", "velocity_setpoint_ned_z_m_s",
-        "acceleration_setpoint_ned_x_m_s2", "acceleration_setpoint_ned_y_m_s2",
-        "acceleration_setpoint_ned_z_m_s2", "speed_limit_m_s", "yaw_setpoint_deg",
-        "attitude_setpoint_frd_to_ned_w", "attitude_setpoint_frd_to_ned_x",
-        "attitude_setpoint_frd_to_ned_y", "attitude_setpoint_frd_to_ned_z",
-        "rates_setpoint_frd_x_rad_s", "rates_setpoint_frd_y_rad_s", "rates_setpoint_frd_z_rad_s",
-        "thrust_fraction"};
+    std::vector<std::string> cols = {"mode",
+                                     "position_setpoint_ned_x_m",
+                                     "position_setpoint_ned_y_m",
+                                     "position_setpoint_ned_z_m",
+                                     "velocity_setpoint_ned_x_m_s",
+                                     "velocity_setpoint_ned_y_m_s",
+                                     "velocity_setpoint_ned_z_m_s",
+                                     "acceleration_setpoint_ned_x_m_s2",
+                                     "acceleration_setpoint_ned_y_m_s2",
+                                     "acceleration_setpoint_ned_z_m_s2",
+                                     "speed_limit_m_s",
+                                     "yaw_setpoint_deg",
+                                     "attitude_setpoint_frd_to_ned_w",
+                                     "attitude_setpoint_frd_to_ned_x",
+                                     "attitude_setpoint_frd_to_ned_y",
+                                     "attitude_setpoint_frd_to_ned_z",
+                                     "rates_setpoint_frd_x_rad_s",
+                                     "rates_setpoint_frd_y_rad_s",
+                                     "rates_setpoint_frd_z_rad_s",
+                                     "thrust_fraction"};
     for (int a = 0; a < world.vehicle(v).actuator_count(); ++a) {
       cols.push_back("actuator_" + std::to_string(a));
     }
@@ -60,13 +83,14 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
   }
   collisions_ = std::make_unique<CsvWriter>(
       dir / "collisions.csv",
-      TimeColumns({"vehicle", "object", "class_id", "instance_id", "point_ned_x_m",
-                   "point_ned_y_m", "point_ned_z_m", "normal_ned_x", "normal_ned_y", "normal_ned_z",
+      TimeColumns({"vehicle", "object", "class_id", "instance_id", "point_ned_x_m", "point_ned_y_m",
+                   "point_ned_z_m", "normal_ned_x", "normal_ned_y", "normal_ned_z",
                    "impulse_n_s"}));
   world.AddCollisionListener([this](const CollisionEvent& e) {
     collisions_->Add(static_cast<std::int64_t>(e.time_ns)).Add(ToSeconds(e.time_ns));
     collisions_->Add(e.vehicle_name).Add(e.object_name);
-    collisions_->Add(static_cast<std::int64_t>(e.class_id)).Add(static_cast<std::int64_t>(e.instance_id));
+    collisions_->Add(static_cast<std::int64_t>(e.class_id))
+        .Add(static_cast<std::int64_t>(e.instance_id));
     for (int i = 0; i < 3; ++i) collisions_->Add(e.point_W[i]);
     for (int i = 0; i < 3; ++i) collisions_->Add(e.normal_W[i]);
     collisions_->Add(e.impulse_Ns);
@@ -115,8 +139,8 @@ void TelemetryRecorder::WriteCommandRow(std::size_t v, TimeNs now_ns) {
   out.EndRow();
 }
 
-void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index, const std::string& step_kind,
-                                           const std::string& what) {
+void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index,
+                                           const std::string& step_kind, const std::string& what) {
   events_->Add(static_cast<std::int64_t>(time_ns)).Add(ToSeconds(time_ns));
   events_->Add(static_cast<std::int64_t>(step_index + 1)).Add(step_kind).Add(what);
   events_->EndRow();

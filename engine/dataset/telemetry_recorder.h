@@ -18,7 +18,8 @@ namespace airis::engine {
 ///   <vehicle>.<sensor>.csv every sample of every sensor, at the sensor's own rate
 ///   collisions.csv        every collision event
 ///   mission_events.csv    every mission step start / finish / failure
-/// Every row starts with the simulated time as integer nanoseconds and as seconds. Units are in the headers.
+/// Every row starts with the simulated time as integer nanoseconds and as seconds. Units are in the
+/// headers.
 class TelemetryRecorder {
  public:
   /// Opens the files and subscribes to the world's sensors and collisions. Throws DatasetIoError.

@@ -15,7 +15,8 @@ MissionSession::MissionSession(Simulation& simulation, Mission mission, std::siz
     if (e.vehicle != vehicle_) return;
     const SemanticClass* c = sim_.world().scene().FindClass(e.class_id);
     // normal_W points from the object toward the vehicle: up (-z in NED) for ground and roofs.
-    runner_.ReportCollision(e.time_ns, (c ? c->name : std::string("object")) + " '" + e.object_name + "'",
+    runner_.ReportCollision(e.time_ns,
+                            (c ? c->name : std::string("object")) + " '" + e.object_name + "'",
                             e.normal_W.z() < -0.7);
   });
 }
@@ -31,7 +32,8 @@ MissionRunner::State MissionSession::Run(TimeNs until_ns) {
   Vehicle& vehicle = sim_.world().vehicle(vehicle_);
   while (sim_.clock().now_ns() < until_ns) {
     const TimeNs now = sim_.clock().now_ns();
-    const MissionRunner::State state = runner_.Update({now, vehicle.state(), vehicle.landed()}, &command_);
+    const MissionRunner::State state =
+        runner_.Update({now, vehicle.state(), vehicle.landed()}, &command_);
     ReportNewEvents();
     if (pending_pose_ >= 0 && callbacks_.on_pose) callbacks_.on_pose(now, pending_pose_);
     pending_pose_ = -1;

@@ -46,7 +46,7 @@ struct StepContext {
   double dt_s = 0.0;       ///< since the previous update of the mission (0 at the first)
   double elapsed_s = 0.0;  ///< since the step started
   const RigidBodyState* state = nullptr;  ///< the vehicle (ground truth, or an estimate)
-  bool landed = false;     ///< its controller detected touchdown and disarmed
+  bool landed = false;                    ///< its controller detected touchdown and disarmed
   Vec3 home_W = Vec3::Zero();
   const LocalNedFrame* frame = nullptr;
   RandomStream* stream = nullptr;  ///< the mission's own stream

@@ -37,8 +37,10 @@ Path::Path(std::span<const Vec3> waypoints, double corner_radius_m) {
     const Vec3 d1 = (pts[i] - pts[i - 1]).normalized();
     const Vec3 d2 = (pts[i + 1] - pts[i]).normalized();
     const double theta = std::acos(std::clamp(d1.dot(d2), -1.0, 1.0));  // turn angle
-    // Tangent length r tan(theta/2), limited to half of each adjacent leg (and the leg already used).
-    const double available = std::min((pts[i] - leg_start).norm(), 0.5 * (pts[i + 1] - pts[i]).norm());
+    // Tangent length r tan(theta/2), limited to half of each adjacent leg (and the leg already
+    // used).
+    const double available =
+        std::min((pts[i] - leg_start).norm(), 0.5 * (pts[i + 1] - pts[i]).norm());
     double radius = corner_radius_m;
     double t = radius * std::tan(0.5 * theta);
     if (theta < 1e-6 || theta > M_PI - 1e-6 || radius <= 0.0) {
@@ -106,7 +108,8 @@ double Path::CalcSpeedLimit(double s_m, double max_speed_m_s, double lateral_acc
   const double s = std::clamp(s_m, 0.0, length_m_);
   // Stop at the end: v^2 = 2 a d.
   double v = std::min(max_speed_m_s, std::sqrt(2.0 * decel_m_s2 * (length_m_ - s)));
-  // Corners ahead, nearest first; once braking distance alone allows max speed, farther ones cannot limit.
+  // Corners ahead, nearest first; once braking distance alone allows max speed, farther ones cannot
+  // limit.
   for (auto it = pieces_.begin() + (&PieceAt(s) - pieces_.data()); it != pieces_.end(); ++it) {
     const double distance = std::max(0.0, it->s0_m - s);
     if (2.0 * decel_m_s2 * distance > max_speed_m_s * max_speed_m_s) break;

@@ -20,8 +20,8 @@ inline Vec3 BodyContactSolver::RelativeVelocity(const Row& row) const {
   return v;
 }
 
-inline void BodyContactSolver::Apply(const Row& row, const Vec3& dir, const Vec3& arm_a, const Vec3& arm_b,
-                              double impulse_Ns) {
+inline void BodyContactSolver::Apply(const Row& row, const Vec3& dir, const Vec3& arm_a,
+                                     const Vec3& arm_b, double impulse_Ns) {
   Body& a = bodies_[static_cast<std::size_t>(row.a)];
   a.v_W += (impulse_Ns * a.inv_m) * dir;
   a.w_W += impulse_Ns * arm_a;

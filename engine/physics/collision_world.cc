@@ -180,9 +180,9 @@ struct CollisionWorld::Bullet {
     std::vector<double> sorted = widths;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
     const double median = sorted[n / 2];
-    // Objects whose footprint covers more than a quarter of everything's (ground planes, terrain) are tested
-    // one by one; everything else, long thin streets and walls included, goes into the grid, where a query
-    // sees only the cells around the vehicle.
+    // Objects whose footprint covers more than a quarter of everything's (ground planes, terrain)
+    // are tested one by one; everything else, long thin streets and walls included, goes into the
+    // grid, where a query sees only the cells around the vehicle.
     Eigen::AlignedBox2d everything;
     for (std::size_t i = 0; i < n; ++i) {
       everything.extend(aabbs[i].lo.head<2>());

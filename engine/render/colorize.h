@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <span>
 
-#include "engine/scene/static_scene.h"
 #include "engine/core/camera_frame.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::engine {
 

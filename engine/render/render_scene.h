@@ -2,9 +2,9 @@
 
 #include <memory>
 
-#include "engine/scene/static_scene.h"
 #include "engine/render/egl_context.h"
 #include "engine/render/gpu_scene.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::engine {
 

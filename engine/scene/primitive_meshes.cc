@@ -10,8 +10,6 @@ namespace airis::engine {
 using Eigen::Vector2f;
 using Eigen::Vector3f;
 
-
-
 namespace {
 
 /// Appends a vertex and returns its index.

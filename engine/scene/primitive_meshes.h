@@ -1,7 +1,7 @@
 #pragma once
 
-// Tessellation of the unit primitives of engine/scene/static_scene.h and of the roof shapes the city
-// generator uses. Every mesh is closed (except the plane), wound counter-clockwise seen from
+// Tessellation of the unit primitives of engine/scene/static_scene.h and of the roof shapes the
+// city generator uses. Every mesh is closed (except the plane), wound counter-clockwise seen from
 // outside.
 
 #include "engine/scene/static_scene.h"

@@ -29,7 +29,8 @@ Eigen::AlignedBox3d StaticScene::ObjectBounds(std::size_t index) const {
   const Eigen::AlignedBox3f& b = models[o.model].bounds;
   Eigen::AlignedBox3d out;
   for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d c = b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(corner)).cast<double>();
+    const Eigen::Vector3d c =
+        b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(corner)).cast<double>();
     out.extend(o.T_WO * c);
   }
   return out;

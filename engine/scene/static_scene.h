@@ -18,7 +18,8 @@ inline constexpr std::uint8_t kNoClass = 0;
 inline constexpr std::uint32_t kNoInstance = 0;
 inline constexpr std::uint32_t kMaxInstances = 65535;
 
-/// A semantic class (building, tree, road, ...): id, name and the colour used in colourised label images.
+/// A semantic class (building, tree, road, ...): id, name and the colour used in colourised label
+/// images.
 struct SemanticClass {
   std::uint8_t id = kNoClass;
   std::string name;
@@ -29,45 +30,48 @@ struct SemanticClass {
 struct Material {
   std::string name;
   Eigen::Vector3f base_color_rgb = Eigen::Vector3f::Constant(0.7f);  ///< linear [0, 1]
-  std::string texture_path;   ///< absolute path of a texture image, empty if none
-  float restitution = 0.3f;   ///< coefficient of restitution for contacts, [0, 1]
-  float friction = 0.6f;      ///< Coulomb friction coefficient, >= 0
+  std::string texture_path;  ///< absolute path of a texture image, empty if none
+  float restitution = 0.3f;  ///< coefficient of restitution for contacts, [0, 1]
+  float friction = 0.6f;     ///< Coulomb friction coefficient, >= 0
 };
 
 /// Analytic shape of a mesh when it has one, so collision and ray casting can use exact primitives.
-/// Unit primitives are centred on their origin: box 1x1x1; sphere diameter 1; cylinder and cone diameter 1,
-/// height 1, axis along local z, cone apex at z = -0.5 (up in NED); plane 1x1 in the x-y plane at z = 0.
+/// Unit primitives are centred on their origin: box 1x1x1; sphere diameter 1; cylinder and cone
+/// diameter 1, height 1, axis along local z, cone apex at z = -0.5 (up in NED); plane 1x1 in the
+/// x-y plane at z = 0.
 enum class Primitive { kNone, kBox, kSphere, kCylinder, kCone, kPlane };
 std::span<const EnumName<Primitive>> EnumNames(Primitive);
 
 /// Triangle geometry in its own frame, loaded once and shared by every object that uses it.
 struct TriangleMesh {
-  std::string name;                         ///< file path or "primitive:box" etc., for messages
-  Primitive primitive = Primitive::kNone;   ///< the analytic shape this mesh tessellates, if any
-  std::vector<Eigen::Vector3f> positions;   ///< metres
-  std::vector<Eigen::Vector3f> normals;     ///< unit, per vertex (same count as positions)
-  std::vector<Eigen::Vector2f> uvs;         ///< texture coordinates (same count, or empty)
-  std::vector<std::uint32_t> indices;       ///< three per triangle, counter-clockwise seen from outside
-  Eigen::AlignedBox3f bounds;               ///< of positions
+  std::string name;                        ///< file path or "primitive:box" etc., for messages
+  Primitive primitive = Primitive::kNone;  ///< the analytic shape this mesh tessellates, if any
+  std::vector<Eigen::Vector3f> positions;  ///< metres
+  std::vector<Eigen::Vector3f> normals;    ///< unit, per vertex (same count as positions)
+  std::vector<Eigen::Vector2f> uvs;        ///< texture coordinates (same count, or empty)
+  std::vector<std::uint32_t> indices;  ///< three per triangle, counter-clockwise seen from outside
+  Eigen::AlignedBox3f bounds;          ///< of positions
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
 /// How an object collides.
 enum class CollisionShape {
-  kAuto,          ///< the primitive when the part is one, else convex hull for small meshes, triangle mesh otherwise
-  kNone,          ///< not collidable (and not hit by rangefinder/lidar rays)
-  kBox,           ///< oriented bounding box of the model
+  kAuto,  ///< the primitive when the part is one, else convex hull for small meshes, triangle mesh
+          ///< otherwise
+  kNone,  ///< not collidable (and not hit by rangefinder/lidar rays)
+  kBox,   ///< oriented bounding box of the model
   kConvexHull,
   kTriangleMesh,  ///< exact triangles, in a bounding volume hierarchy
 };
 std::span<const EnumName<CollisionShape>> EnumNames(CollisionShape);
 
-/// One piece of a model: a mesh with a material, placed in the model's frame (e.g. a tree = trunk + crown).
+/// One piece of a model: a mesh with a material, placed in the model's frame (e.g. a tree = trunk +
+/// crown).
 struct ModelPart {
-  std::uint32_t mesh = 0;                                 ///< index into StaticScene::meshes
-  std::uint32_t material = 0;                             ///< index into StaticScene::materials
-  Eigen::Affine3f T_MP = Eigen::Affine3f::Identity();     ///< part -> model (may scale)
+  std::uint32_t mesh = 0;                              ///< index into StaticScene::meshes
+  std::uint32_t material = 0;                          ///< index into StaticScene::materials
+  Eigen::Affine3f T_MP = Eigen::Affine3f::Identity();  ///< part -> model (may scale)
 };
 
 /// A reusable thing made of parts; identical objects share one model (instancing).
@@ -79,28 +83,31 @@ struct Model {
 
 /// One placed object of the static scene.
 struct StaticObject {
-  std::uint32_t model = 0;                             ///< index into StaticScene::models
-  Eigen::Affine3d T_WO = Eigen::Affine3d::Identity();  ///< model -> world NED (rotation, translation, scale)
-  std::uint8_t class_id = kNoClass;                    ///< semantic class, 1..255
-  std::uint32_t instance_id = kNoInstance;             ///< unique per object, 1..65535, stable per seed
-  std::int32_t material_override = -1;                 ///< material index replacing every part's, or -1
+  std::uint32_t model = 0;  ///< index into StaticScene::models
+  Eigen::Affine3d T_WO =
+      Eigen::Affine3d::Identity();          ///< model -> world NED (rotation, translation, scale)
+  std::uint8_t class_id = kNoClass;         ///< semantic class, 1..255
+  std::uint32_t instance_id = kNoInstance;  ///< unique per object, 1..65535, stable per seed
+  std::int32_t material_override = -1;      ///< material index replacing every part's, or -1
   CollisionShape collision = CollisionShape::kAuto;
-  std::string name;                                    ///< instance name (user's, or generated)
+  std::string name;  ///< instance name (user's, or generated)
 };
 
 /// Lighting and sky of a scene, for the renderer.
 struct SceneLighting {
-  Vec3 sun_direction_W = Vec3(0.3, 0.2, 0.93).normalized();  ///< unit vector from the ground toward the
-                                                               ///< sun is -sun_direction_W (this points down)
+  Vec3 sun_direction_W =
+      Vec3(0.3, 0.2, 0.93).normalized();  ///< unit vector from the ground toward the
+                                          ///< sun is -sun_direction_W (this points down)
   Eigen::Vector3f sun_color_rgb = Eigen::Vector3f(1.0f, 0.96f, 0.9f);
   Eigen::Vector3f sky_zenith_rgb = Eigen::Vector3f(0.25f, 0.45f, 0.85f);
   Eigen::Vector3f sky_horizon_rgb = Eigen::Vector3f(0.75f, 0.85f, 0.95f);
-  float ambient = 0.35f;       ///< sky light fraction
-  float fog_distance_m = 0.0f; ///< distance at which fog reaches 63%, 0 = no fog
+  float ambient = 0.35f;        ///< sky light fraction
+  float fog_distance_m = 0.0f;  ///< distance at which fog reaches 63%, 0 = no fog
 };
 
-/// Everything that does not move: meshes (each stored once), materials, models, placed objects, the class
-/// table and lighting. Built by scenes/, read by collision (Bullet), ray casting (Embree) and rendering.
+/// Everything that does not move: meshes (each stored once), materials, models, placed objects, the
+/// class table and lighting. Built by scenes/, read by collision (Bullet), ray casting (Embree) and
+/// rendering.
 struct StaticScene {
   std::vector<TriangleMesh> meshes;
   std::vector<Material> materials;

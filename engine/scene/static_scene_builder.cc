@@ -41,8 +41,7 @@ std::uint32_t StaticSceneBuilder::Material(const engine::Material& m) {
   return index;
 }
 
-Eigen::AlignedBox3f CalcModelBounds(const Model& model,
-                                    const std::vector<TriangleMesh>& meshes) {
+Eigen::AlignedBox3f CalcModelBounds(const Model& model, const std::vector<TriangleMesh>& meshes) {
   Eigen::AlignedBox3f box;
   box.setEmpty();
   for (const auto& part : model.parts) {
@@ -72,7 +71,8 @@ std::uint32_t StaticSceneBuilder::PrimitiveModel(Primitive primitive) {
   return static_cast<std::uint32_t>(primitive_model_[k]);
 }
 
-bool StaticSceneBuilder::DefineClass(const std::string& name, int id, const Eigen::Vector3f* color) {
+bool StaticSceneBuilder::DefineClass(const std::string& name, int id,
+                                     const Eigen::Vector3f* color) {
   SemanticClass* existing = nullptr;
   for (auto& c : scene_.classes) {
     if (c.name == name) existing = &c;
@@ -122,8 +122,8 @@ std::vector<std::string> StaticSceneBuilder::ClassNames() const {
 }
 
 bool StaticSceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO,
-                             std::uint8_t class_id, CollisionShape collision,
-                             std::string name, std::int32_t material_override) {
+                                   std::uint8_t class_id, CollisionShape collision,
+                                   std::string name, std::int32_t material_override) {
   if (scene_.objects.size() >= kMaxInstances) return false;
   StaticObject o;
   o.model = model;

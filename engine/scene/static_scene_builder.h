@@ -41,8 +41,7 @@ class StaticSceneBuilder {
   /// Places an object; assigns the next instance id. Returns false when the 65535 instance ids are
   /// used up.
   bool AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
-                 CollisionShape collision, std::string name,
-                 std::int32_t material_override = -1);
+                 CollisionShape collision, std::string name, std::int32_t material_override = -1);
 
   /// Reserves room for `n` more objects (generators call this before a batch).
   void ReserveObjects(std::size_t n) { scene_.objects.reserve(scene_.objects.size() + n); }
@@ -61,8 +60,7 @@ class StaticSceneBuilder {
 };
 
 /// Bounds of `model`'s parts in the model frame.
-Eigen::AlignedBox3f CalcModelBounds(const Model& model,
-                                    const std::vector<TriangleMesh>& meshes);
+Eigen::AlignedBox3f CalcModelBounds(const Model& model, const std::vector<TriangleMesh>& meshes);
 
 /// T_WO from a position (m, NED), yaw/pitch/roll (rad, z-y-x) and per-axis scale.
 Eigen::Affine3d MakePose(const Eigen::Vector3d& p_W, double yaw_rad, double pitch_rad,

@@ -19,16 +19,18 @@ struct Ray {
 
 /// What a ray hit: the nearest surface within range, with its labels.
 struct RayHit {
-  float distance_m = std::numeric_limits<float>::infinity();  ///< along the ray; inf when nothing was hit
+  float distance_m =
+      std::numeric_limits<float>::infinity();  ///< along the ray; inf when nothing was hit
   std::uint8_t class_id = kNoClass;
   std::uint32_t instance_id = kNoInstance;
-  Eigen::Vector3f normal_W = Eigen::Vector3f::Zero();  ///< unit surface normal facing the ray origin
+  Eigen::Vector3f normal_W =
+      Eigen::Vector3f::Zero();  ///< unit surface normal facing the ray origin
 
   bool hit() const { return distance_m != std::numeric_limits<float>::infinity(); }
 };
 
-/// Casts rays against a world's collidable geometry (rangefinders, lidar). Thread-compatible: concurrent
-/// Cast calls on one caster are allowed.
+/// Casts rays against a world's collidable geometry (rangefinders, lidar). Thread-compatible:
+/// concurrent Cast calls on one caster are allowed.
 class RayCaster {
  public:
   virtual ~RayCaster() = default;

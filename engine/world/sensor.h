@@ -14,32 +14,36 @@ namespace airis::engine {
 
 class ImageSensor;
 
-/// The truth a sensor may read when it samples: its vehicle after this tick's integration and contacts.
+/// The truth a sensor may read when it samples: its vehicle after this tick's integration and
+/// contacts.
 struct SensorContext {
   TimeNs now_ns = 0;
-  const RigidBodyState* state = nullptr;                 ///< the vehicle's body
-  const RigidBodyAccelerations* accelerations = nullptr; ///< over the last step, contacts included
+  const RigidBodyState* state = nullptr;                  ///< the vehicle's body
+  const RigidBodyAccelerations* accelerations = nullptr;  ///< over the last step, contacts included
   const Environment* environment = nullptr;
-  const RayCaster* rays = nullptr;                       ///< null when the world has no ray caster
+  const RayCaster* rays = nullptr;  ///< null when the world has no ray caster
 };
 
-/// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete sensor).
-/// It samples at its own exact rate on the simulated clock and tells its listeners of each new sample.
-/// Generic consumers (telemetry log, dataset writer) read samples as rows of numbers named by columns();
-/// sensors that produce images are ImageSensors (image() is not null) and give their frames there.
+/// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete
+/// sensor). It samples at its own exact rate on the simulated clock and tells its listeners of each
+/// new sample. Generic consumers (telemetry log, dataset writer) read samples as rows of numbers
+/// named by columns(); sensors that produce images are ImageSensors (image() is not null) and give
+/// their frames there.
 class Sensor {
  public:
-  /// @param name unique within its vehicle, e.g. "imu"; @param rate_hz samples per simulated second.
+  /// @param name unique within its vehicle, e.g. "imu"; @param rate_hz samples per simulated
+  /// second.
   Sensor(std::string name, double rate_hz);
   virtual ~Sensor() = default;
   Sensor(const Sensor&) = delete;
   Sensor& operator=(const Sensor&) = delete;
 
-  /// Called by the Simulation every tick after physics: samples when the schedule says so and notifies the
-  /// listeners. Returns true when a sample was taken.
+  /// Called by the Simulation every tick after physics: samples when the schedule says so and
+  /// notifies the listeners. Returns true when a sample was taken.
   bool Update(const SensorContext& context);
 
-  /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...}; constant over the run.
+  /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...};
+  /// constant over the run.
   virtual std::span<const std::string> columns() const = 0;
   /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
   virtual void CopyLatestRow(std::span<double> out) const = 0;
@@ -48,18 +52,20 @@ class Sensor {
   virtual ImageSensor* image() { return nullptr; }
   virtual const ImageSensor* image() const { return nullptr; }
 
-  /// Calls `listener` after every new sample (in the simulation thread; keep it cheap, do not keep the ref).
+  /// Calls `listener` after every new sample (in the simulation thread; keep it cheap, do not keep
+  /// the ref).
   void AddListener(std::function<void(const Sensor&)> listener) {
     listeners_.push_back(std::move(listener));
   }
 
-  /// A disabled sensor keeps its schedule (its rate stays exact) but takes no samples: cameras are switched
-  /// off while nothing records them. Enabled by default.
+  /// A disabled sensor keeps its schedule (its rate stays exact) but takes no samples: cameras are
+  /// switched off while nothing records them. Enabled by default.
   void set_enabled(bool enabled) { enabled_ = enabled; }
   bool enabled() const { return enabled_; }
 
-  /// When set, a due sample of an enabled sensor is taken only if `gate(now_ns)` returns true; the schedule
-  /// advances either way. A dataset shard uses it to skip the camera frames other shards render.
+  /// When set, a due sample of an enabled sensor is taken only if `gate(now_ns)` returns true; the
+  /// schedule advances either way. A dataset shard uses it to skip the camera frames other shards
+  /// render.
   void set_sample_gate(std::function<bool(TimeNs)> gate) { gate_ = std::move(gate); }
 
   const std::string& name() const { return name_; }

@@ -29,8 +29,9 @@ void Simulation::Step() {
   }
   for (std::size_t i = 0; i < world_->vehicle_count(); ++i) {
     Vehicle& vehicle = world_->vehicle(i);
-    ControlContext context{now_ns, dt_s, &vehicle.state(), &world_->accelerations(i), &environment,
-                           world_->sensors(i)};
+    ControlContext context{now_ns,           dt_s,
+                           &vehicle.state(), &world_->accelerations(i),
+                           &environment,     world_->sensors(i)};
     world_->CalcLocalConditions(i, &context.air_density_kg_m3, &context.gravity_m_s2);
     vehicle.UpdateControl(context);
   }

@@ -32,20 +32,22 @@ struct ActuatorContext {
 
 /// What a controller reads at the end of a tick (DESIGN principle 3: after physics and sensors).
 struct ControlContext {
-  TimeNs now_ns = 0;                                     ///< end of the step just taken
-  double dt_s = 0.0;                                     ///< tick length
-  const RigidBodyState* state = nullptr;                 ///< truth (for truth-based controllers and tests)
-  const RigidBodyAccelerations* accelerations = nullptr; ///< over the step, contacts included
+  TimeNs now_ns = 0;                      ///< end of the step just taken
+  double dt_s = 0.0;                      ///< tick length
+  const RigidBodyState* state = nullptr;  ///< truth (for truth-based controllers and tests)
+  const RigidBodyAccelerations* accelerations = nullptr;  ///< over the step, contacts included
   const Environment* environment = nullptr;
-  std::span<const std::unique_ptr<Sensor>> sensors;      ///< this vehicle's sensors, sampled this tick
-  double air_density_kg_m3 = 0.0;  ///< at the vehicle now (the World's cached local model, as physics uses)
-  double gravity_m_s2 = 0.0;       ///< at the vehicle now, along world +z
+  std::span<const std::unique_ptr<Sensor>> sensors;  ///< this vehicle's sensors, sampled this tick
+  double air_density_kg_m3 =
+      0.0;  ///< at the vehicle now (the World's cached local model, as physics uses)
+  double gravity_m_s2 = 0.0;  ///< at the vehicle now, along world +z
 };
 
-/// A vehicle of the paper's model (3.1): a rigid body (mass, inertia, body box for drag, collision and
-/// cross-sections, contact material) moved by K actuated vertices. The engine knows no concrete vehicle:
-/// vehicles/ implements this. Commands are normalized actuator inputs in [0, 1], set by missions, bridges or
-/// the vehicle's own controller; the vehicle turns them into a wrench each tick (with its actuator dynamics).
+/// A vehicle of the paper's model (3.1): a rigid body (mass, inertia, body box for drag, collision
+/// and cross-sections, contact material) moved by K actuated vertices. The engine knows no concrete
+/// vehicle: vehicles/ implements this. Commands are normalized actuator inputs in [0, 1], set by
+/// missions, bridges or the vehicle's own controller; the vehicle turns them into a wrench each
+/// tick (with its actuator dynamics).
 class Vehicle {
  public:
   /// @param name unique within its world. Validates `body` (throws InvalidField).
@@ -63,14 +65,16 @@ class Vehicle {
 
   /// Number of actuator inputs (for a multirotor: its motors, then its tilt actuators).
   virtual int actuator_count() const = 0;
-  /// Sets the actuator commands for the next ticks. Values are clamped to [0, 1]. Throws SimulationError
-  /// (naming the vehicle and input) on NaN, and std::invalid_argument when the size is not actuator_count().
+  /// Sets the actuator commands for the next ticks. Values are clamped to [0, 1]. Throws
+  /// SimulationError (naming the vehicle and input) on NaN, and std::invalid_argument when the size
+  /// is not actuator_count().
   virtual void SetActuatorCommands(std::span<const double> commands) = 0;
   /// The commands last set, clamped (size actuator_count()).
   virtual std::span<const double> actuator_commands() const = 0;
 
-  /// Advances the actuator dynamics (motor lag, tilt rate limits) over the step starting at context.now_ns
-  /// and returns the wrench to hold over that step. Called once per tick by the Simulation; allocation-free.
+  /// Advances the actuator dynamics (motor lag, tilt rate limits) over the step starting at
+  /// context.now_ns and returns the wrench to hold over that step. Called once per tick by the
+  /// Simulation; allocation-free.
   virtual Wrench UpdateActuators(const ActuatorContext& context) = 0;
 
   /// Tells the vehicle what to do (missions, bridges, learning code) and keeps the command for
@@ -89,16 +93,19 @@ class Vehicle {
     std::array<double, kMaxActuators> u{};
     if (command.mode == CommandMode::kMotors) u = command.motors;
     if (command.mode != CommandMode::kMotors && command.mode != CommandMode::kDisarmed) {
-      throw std::invalid_argument("vehicle '" + name_ +
-                                  "' has no flight controller: it takes only motor commands and disarm");
+      throw std::invalid_argument(
+          "vehicle '" + name_ +
+          "' has no flight controller: it takes only motor commands and disarm");
     }
-    SetActuatorCommands(std::span<const double>(u.data(), static_cast<std::size_t>(actuator_count())));
+    SetActuatorCommands(
+        std::span<const double>(u.data(), static_cast<std::size_t>(actuator_count())));
   }
   /// True once the vehicle's controller has detected touchdown after a land command and disarmed.
   virtual bool landed() const { return false; }
 
-  /// Controller hook, called at the end of every tick after the sensors sampled (a flight controller reads
-  /// its sensors here and sets the commands for the next tick). The default does nothing (open loop).
+  /// Controller hook, called at the end of every tick after the sensors sampled (a flight
+  /// controller reads its sensors here and sets the commands for the next tick). The default does
+  /// nothing (open loop).
   virtual void UpdateControl(const ControlContext& context) { (void)context; }
 
  private:

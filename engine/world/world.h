@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "engine/core/clock.h"
-#include "engine/scene/static_scene.h"
 #include "engine/environment/environment.h"
 #include "engine/physics/body_contact_solver.h"
 #include "engine/physics/collision_world.h"
 #include "engine/physics/contact_solver.h"
+#include "engine/scene/static_scene.h"
 #include "engine/world/ray_caster.h"
 #include "engine/world/sensor.h"
 #include "engine/world/vehicle.h"
@@ -39,8 +39,8 @@ struct CollisionEvent {
 
 /// Physics settings of a world (a scene's `physics:` block).
 struct PhysicsConfig {
-  double rate_hz = 1000.0;  ///< ticks per simulated second, 100 to 10000, whole ns per tick
-  int contact_iterations = 12;       ///< sequential-impulse sweeps per tick
+  double rate_hz = 1000.0;      ///< ticks per simulated second, 100 to 10000, whole ns per tick
+  int contact_iterations = 12;  ///< sequential-impulse sweeps per tick
   double penetration_slop_m = 1e-4;  ///< penetration left uncorrected (stable resting contact)
   /// A step that moves a body farther than this fraction of its smallest half-extent is swept first
   /// (continuous collision: nothing tunnels through thin walls).

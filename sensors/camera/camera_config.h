@@ -4,9 +4,9 @@
 #include <span>
 #include <string>
 
-#include "engine/core/config.h"
 #include "engine/core/camera_frame.h"
 #include "engine/core/camera_model.h"
+#include "engine/core/config.h"
 #include "engine/world/mount.h"
 
 namespace airis::sensors {

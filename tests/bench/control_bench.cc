@@ -6,8 +6,8 @@
 
 #include "engine/world/simulation.h"
 #include "scenes/scene.h"
-#include "scenes/world_builder.h"
 #include "scenes/vehicle_kinds.h"
+#include "scenes/world_builder.h"
 #include "vehicles/multirotor/flight_controller.h"
 #include "vehicles/multirotor/multirotor.h"
 
@@ -16,12 +16,13 @@ namespace {
 
 using engine::Vec3;
 
-// One FlightController::Update of the reference quad in position mode, the state moving along a circle so
-// every loop and the allocation do real work (no saturation shortcut).
+// One FlightController::Update of the reference quad in position mode, the state moving along a
+// circle so every loop and the allocation do real work (no saturation shortcut).
 void BM_FlightControllerUpdate(benchmark::State& state) {
   const vehicles::Multirotor quad("quad", scenes::LoadMultirotorPreset("quad_x"));
   vehicles::FlightController fc(vehicles::FlightControllerConfig{},
-                                {quad.body().mass_kg(), quad.body().inertia_B()}, quad.CalcActuatorEffects(1.225));
+                                {quad.body().mass_kg(), quad.body().inertia_B()},
+                                quad.CalcActuatorEffects(1.225));
   engine::VehicleCommand c;
   c.mode = engine::CommandMode::kPosition;
   c.position_W = Vec3(5, 5, -20);
@@ -45,9 +46,10 @@ void BM_FlightControllerUpdate(benchmark::State& state) {
 }
 BENCHMARK(BM_FlightControllerUpdate);
 
-// The whole stack of DESIGN.md's tick in the city: the quad of scenes/city.yaml with its IMU (1 kHz),
-// barometer, magnetometer and GPS, its controller holding a point 25 m above the streets, wind with Dryden
-// gusts, collision queries among the city's objects. Cameras are switched off (rendering is measured apart).
+// The whole stack of DESIGN.md's tick in the city: the quad of scenes/city.yaml with its IMU (1
+// kHz), barometer, magnetometer and GPS, its controller holding a point 25 m above the streets,
+// wind with Dryden gusts, collision queries among the city's objects. Cameras are switched off
+// (rendering is measured apart).
 void BM_WholeStackCityTick(benchmark::State& state) {
   const scenes::Scene scene = scenes::LoadScene("scenes/city.yaml");
   engine::Simulation sim(scenes::BuildWorld(scene));
@@ -65,8 +67,8 @@ void BM_WholeStackCityTick(benchmark::State& state) {
   sim.RunFor(2.0);  // warm up: settle, fill caches
   for (auto _ : state) sim.Step();
   state.SetItemsProcessed(state.iterations());
-  state.counters["ticks_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                                     benchmark::Counter::kIsRate);
+  state.counters["ticks_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_WholeStackCityTick);
 

@@ -62,7 +62,8 @@ void BM_PoissonDisc36ha(benchmark::State& state) {
   std::size_t points = 0;
   {
     engine::RandomStream warm(1);
-    points = PoissonDiscSample(Eigen::Vector2d(-300, -300), Eigen::Vector2d(300, 300), 3.0, warm).size();
+    points =
+        PoissonDiscSample(Eigen::Vector2d(-300, -300), Eigen::Vector2d(300, 300), 3.0, warm).size();
   }
   for (auto _ : state) {
     engine::RandomStream stream(1);
@@ -98,7 +99,8 @@ void BM_LoadForestScene10k(benchmark::State& state) {
   const std::string text =
       "scene: {name: bench, seed: 1}\n"
       "generators:\n"
-      "  - forest: {area: {size_ne_m: [600, 600]}, density_per_ha: 280, clearings: [{center_ne_m: [0, "
+      "  - forest: {area: {size_ne_m: [600, 600]}, density_per_ha: 280, clearings: [{center_ne_m: "
+      "[0, "
       "0], radius_m: 10}]}\n"
       "vehicles:\n"
       "  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, -0.2]}}\n";

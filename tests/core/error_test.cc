@@ -8,7 +8,8 @@ namespace {
 TEST(ConfigErrorTest, MessageCarriesFileLineColumnKeyAndProblem) {
   const ConfigError e({"scenes/forest.yaml", 42, 7}, "vehicles[0].barometer.rate_hz",
                       "must be > 0 (got -5)");
-  EXPECT_STREQ(e.what(), "scenes/forest.yaml:42:7: vehicles[0].barometer.rate_hz: must be > 0 (got -5)");
+  EXPECT_STREQ(e.what(),
+               "scenes/forest.yaml:42:7: vehicles[0].barometer.rate_hz: must be > 0 (got -5)");
   EXPECT_EQ(e.where().line, 42);
   EXPECT_EQ(e.key_path(), "vehicles[0].barometer.rate_hz");
 }
@@ -20,7 +21,8 @@ TEST(ConfigErrorTest, UnknownPartsAreLeftOut) {
 }
 
 TEST(DemandDeathTest, AbortsWithFileAndLine) {
-  EXPECT_DEATH(AIRIS_DEMAND(1 + 1 == 3), "error_test.cc:[0-9]+: AIRIS_DEMAND\\(1 \\+ 1 == 3\\) failed");
+  EXPECT_DEATH(AIRIS_DEMAND(1 + 1 == 3),
+               "error_test.cc:[0-9]+: AIRIS_DEMAND\\(1 \\+ 1 == 3\\) failed");
 }
 
 }  // namespace

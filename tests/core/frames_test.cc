@@ -31,10 +31,10 @@ TEST(FramesTest, EulerRoundTrip) {
 
 TEST(FramesTest, EulerMatchesElementaryRotationProduct) {
   const EulerAngles e{0.1, 0.2, 0.3};
-  const Mat3 expected = (Eigen::AngleAxisd(e.yaw_rad, Vec3::UnitZ()) *
-                         Eigen::AngleAxisd(e.pitch_rad, Vec3::UnitY()) *
-                         Eigen::AngleAxisd(e.roll_rad, Vec3::UnitX()))
-                            .toRotationMatrix();
+  const Mat3 expected =
+      (Eigen::AngleAxisd(e.yaw_rad, Vec3::UnitZ()) * Eigen::AngleAxisd(e.pitch_rad, Vec3::UnitY()) *
+       Eigen::AngleAxisd(e.roll_rad, Vec3::UnitX()))
+          .toRotationMatrix();
   EXPECT_LT((QuatFromEuler(e).toRotationMatrix() - expected).norm(), 1e-15);
 }
 

@@ -20,8 +20,8 @@ TEST(RandomStreamTest, SameSeedSameBits) {
 }
 
 TEST(RandomStreamTest, FirstOutputsArePinnedSoNoSilentChangeAltersDatasets) {
-  // Pinned values: a change of generator, seeding or Gaussian method would silently change every dataset made
-  // with a given seed, so it must show up here first.
+  // Pinned values: a change of generator, seeding or Gaussian method would silently change every
+  // dataset made with a given seed, so it must show up here first.
   RandomStream s(1);
   EXPECT_EQ(s.NextU64(), 0xcfc5d07f6f03c29bULL);
   RandomStream g(1);
@@ -30,8 +30,8 @@ TEST(RandomStreamTest, FirstOutputsArePinnedSoNoSilentChangeAltersDatasets) {
 }
 
 TEST(RandomStreamTest, GaussianHasUnitMomentsAndNormalTails) {
-  // N = 10^6 draws: the standard error of the mean is 1e-3 and of the variance ~1.4e-3, so 5 sigma bounds are
-  // 5e-3 and 7e-3. P(|x| > 2) = 0.0455 with standard error 2.1e-4.
+  // N = 10^6 draws: the standard error of the mean is 1e-3 and of the variance ~1.4e-3, so 5 sigma
+  // bounds are 5e-3 and 7e-3. P(|x| > 2) = 0.0455 with standard error 2.1e-4.
   RandomStream s(123);
   constexpr int kN = 1'000'000;
   double sum = 0, sum2 = 0, sum3 = 0;
@@ -60,7 +60,8 @@ TEST(RandomStreamTest, UniformIntIsUnbiasedOverSmallRange) {
 }
 
 TEST(RandomStreamsTest, ComponentStreamsAreIndependentOfEachOther) {
-  // Adding a component never changes another's stream: a stream depends only on (seed, its own name).
+  // Adding a component never changes another's stream: a stream depends only on (seed, its own
+  // name).
   const RandomStreams streams(2024);
   RandomStream imu = streams.Stream("vehicles/drone/imu");
   RandomStream baro = streams.Stream("vehicles/drone/barometer");

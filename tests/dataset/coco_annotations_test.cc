@@ -21,8 +21,9 @@ std::vector<bool> MaskFromCounts(const std::vector<std::uint32_t>& counts, int w
 }
 
 TEST(CocoRleTest, EncodesAsPycocotoolsDoes) {
-  // Worked by hand from pycocotools' rleToString: 5, 3, 2 are single characters '5', '3', '2'; 40 needs two
-  // 5-bit groups (8 with the continuation bit -> 'X', then 1 -> '1'); the 4th count is stored as 40 - 40 = 0.
+  // Worked by hand from pycocotools' rleToString: 5, 3, 2 are single characters '5', '3', '2'; 40
+  // needs two 5-bit groups (8 with the continuation bit -> 'X', then 1 -> '1'); the 4th count is
+  // stored as 40 - 40 = 0.
   EXPECT_EQ(EncodeCocoRleCounts({5, 3, 2}), "532");
   EXPECT_EQ(EncodeCocoRleCounts({0, 40, 10, 40}), "0X1:0");
   // Negative difference (count smaller than the one two places earlier) uses the sign group.
@@ -35,7 +36,8 @@ TEST(CocoRleTest, RandomCountsRoundTrip) {
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<std::uint32_t> counts;
     const int n = static_cast<int>(rng.UniformInt(1, 40));
-    for (int i = 0; i < n; ++i) counts.push_back(static_cast<std::uint32_t>(rng.UniformInt(i == 0 ? 0 : 1, 300000)));
+    for (int i = 0; i < n; ++i)
+      counts.push_back(static_cast<std::uint32_t>(rng.UniformInt(i == 0 ? 0 : 1, 300000)));
     ASSERT_EQ(DecodeCocoRleCounts(EncodeCocoRleCounts(counts)), counts);
   }
 }

@@ -28,7 +28,8 @@ void WriteFrames(const std::filesystem::path& root, int workers, int pending, in
   DatasetOutputs outputs;
   outputs.depth_npy = true;
   const int cam = writer.AddCamera("front", outputs);
-  for (int i = 0; i < frames; ++i) writer.Submit(cam, i, testing::MakeFrame(64, 48, 3.0f + i, 10 + i, 5));
+  for (int i = 0; i < frames; ++i)
+    writer.Submit(cam, i, testing::MakeFrame(64, 48, 3.0f + i, 10 + i, 5));
   writer.Flush();
   EXPECT_EQ(writer.frames_written(), frames);
   ASSERT_EQ(writer.annotations(cam).size(), static_cast<std::size_t>(frames));

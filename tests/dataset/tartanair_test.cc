@@ -8,8 +8,8 @@
 #include <limits>
 #include <sstream>
 
-#include "engine/dataset/file_io.h"
 #include "engine/core/camera_model.h"
+#include "engine/dataset/file_io.h"
 #include "tests/fixtures/temp_dir.h"
 
 namespace airis::engine {
@@ -65,7 +65,8 @@ TEST(TartanAirTest, PoseFileHasOneLinePerFrameAndMalformedCsvNamesTheLine) {
   const fs::path dir = airis::testing::TestTempDir() / "airis_tartanair_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string header = "time_ns,time_s,frame,position_ned_x_m,position_ned_y_m,position_ned_z_m,"
+  const std::string header =
+      "time_ns,time_s,frame,position_ned_x_m,position_ned_y_m,position_ned_z_m,"
       "attitude_cam_to_ned_w,attitude_cam_to_ned_x,attitude_cam_to_ned_y,attitude_cam_to_ned_z\n";
   std::ofstream(dir / "poses.csv") << header << "0,0,0,1.5,-2,-10,1,0,0,0\n"
                                    << "5,5e-9,1,1.25,-2,-10,0,1,0,0\n";
@@ -96,7 +97,8 @@ TEST(TartanAirTest, PoseFileHasOneLinePerFrameAndMalformedCsvNamesTheLine) {
   };
   expect_error("bad.csv", header + "0,0,0,1.5,-2,-10,1,0,0,0\n5,5e-9,1,north,-2,-10,0,1,0,0\n",
                "bad.csv:3: column 4: 'north' is not a number");
-  expect_error("short.csv", "time_ns,frame\n0,0\n", "short.csv: no column 'position_ned_x_m' in the header");
+  expect_error("short.csv", "time_ns,frame\n0,0\n",
+               "short.csv: no column 'position_ned_x_m' in the header");
 }
 
 TEST(TartanAirTest, ClassIdsAreWrittenAsUint8Npy) {

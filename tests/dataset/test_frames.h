@@ -7,8 +7,9 @@
 
 namespace airis::engine::testing {
 
-/// A synthetic labeled frame: sky everywhere except a box of instance 7 (class 3) at columns [x0, x1) and rows
-/// [y0, y1) at depth `depth_m`, and instance 9 (class 5) at the bottom-right corner (truncated).
+/// A synthetic labeled frame: sky everywhere except a box of instance 7 (class 3) at columns [x0,
+/// x1) and rows [y0, y1) at depth `depth_m`, and instance 9 (class 5) at the bottom-right corner
+/// (truncated).
 inline std::shared_ptr<CameraFrame> MakeFrame(int w, int h, float depth_m, int x0 = 10, int y0 = 5,
                                               int x1 = 30, int y1 = 25) {
   auto f = std::make_shared<CameraFrame>();
@@ -33,7 +34,8 @@ inline std::shared_ptr<CameraFrame> MakeFrame(int w, int h, float depth_m, int x
       f->depth_planar_m.at(u, v) = d;
       f->class_id.at(u, v) = cls;
       f->instance_id.at(u, v) = inst;
-      for (int c = 0; c < 3; ++c) f->rgba.at(u, v, c) = static_cast<std::uint8_t>((u * 7 + v * 3 + c * 50) & 255);
+      for (int c = 0; c < 3; ++c)
+        f->rgba.at(u, v, c) = static_cast<std::uint8_t>((u * 7 + v * 3 + c * 50) & 255);
       f->rgba.at(u, v, 3) = 255;
     }
   }

@@ -11,9 +11,9 @@ namespace {
 
 constexpr TimeNs kTickNs = 1'000'000;  // 1 kHz
 
-// A kinematic stand-in for a flying vehicle: it moves toward its position command at a bounded speed,
-// follows velocity feed-forward, turns instantly, and lands by descending to z = 0. Enough to test the
-// mission logic (sequencing, timing, failures) without the physics.
+// A kinematic stand-in for a flying vehicle: it moves toward its position command at a bounded
+// speed, follows velocity feed-forward, turns instantly, and lands by descending to z = 0. Enough
+// to test the mission logic (sequencing, timing, failures) without the physics.
 class PointVehicle {
  public:
   void Apply(const VehicleCommand& c, double dt) {
@@ -60,7 +60,8 @@ struct FlightResult {
   TimeNs end_ns;
 };
 
-FlightResult Fly(MissionRunner& runner, PointVehicle& vehicle, double max_s, MissionHost* = nullptr) {
+FlightResult Fly(MissionRunner& runner, PointVehicle& vehicle, double max_s,
+                 MissionHost* = nullptr) {
   VehicleCommand command;
   TimeNs t = 0;
   while (t <= SecondsToNs(max_s)) {
@@ -177,7 +178,8 @@ TEST(MissionRunnerTest, TimeoutFailsNamingFileLineStepAndDistance) {
 }
 
 TEST(MissionRunnerTest, AutomaticTimeoutScalesWithTheStep) {
-  // A goto of 100 m at 5 m/s may take up to 3 x 20 s + 30 s = 90 s; a vehicle capped at 1 m/s needs 100 s.
+  // A goto of 100 m at 5 m/s may take up to 3 x 20 s + 30 s = 90 s; a vehicle capped at 1 m/s needs
+  // 100 s.
   Mission m;
   m.steps = {Step(GotoAt(Vec3(100, 0, 0), 5.0), 2)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
@@ -210,8 +212,9 @@ TEST(MissionRunnerTest, CollisionFailsWhenAbortOnCollision) {
   runner.Update({0, RigidBodyState{}, false}, &c);
   runner.ReportCollision(SecondsToNs(1.25), "building 'tower_3'");
   EXPECT_EQ(runner.state(), MissionRunner::State::kFailed);
-  EXPECT_NE(runner.failure().find("step 1 (hover): collided with building 'tower_3' at t = 1.250 s"),
-            std::string::npos)
+  EXPECT_NE(
+      runner.failure().find("step 1 (hover): collided with building 'tower_3' at t = 1.250 s"),
+      std::string::npos)
       << runner.failure();
 }
 
@@ -295,15 +298,15 @@ TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
     if (runner.current_step() == 1) {
       if (orbit_start < 0) orbit_start = t;
       const Vec3 to_center = orbit.center_ned_m - v.state.p_W;
-      EXPECT_NEAR(std::remainder(c.yaw_rad - std::atan2(to_center.y(), to_center.x()), 2 * M_PI), 0.0,
-                  1e-9);
+      EXPECT_NEAR(std::remainder(c.yaw_rad - std::atan2(to_center.y(), to_center.x()), 2 * M_PI),
+                  0.0, 1e-9);
     }
     v.Apply(c, 1e-3);
     t += kTickNs;
   }
   ASSERT_EQ(runner.state(), MissionRunner::State::kSucceeded) << runner.failure();
-  // One turn of 2 pi 10 m at 5 m/s = 12.57 s, plus the start-up ramp at kPathAccel: reaching v at a loses
-  // v / (2 a) = 1.25 s against full speed from the start.
+  // One turn of 2 pi 10 m at 5 m/s = 12.57 s, plus the start-up ramp at kPathAccel: reaching v at a
+  // loses v / (2 a) = 1.25 s against full speed from the start.
   const double ramp_loss_s = 5.0 / (2.0 * kPathAccel_m_s2);
   EXPECT_NEAR(ToSeconds(t - orbit_start), 2 * M_PI * 10 / 5 + ramp_loss_s, 0.01);
 }
@@ -314,8 +317,8 @@ TEST(MissionRunnerTest, HostStepsReachTheHostAndRandomPosesAreSeeded) {
     RandomPosesStep poses;
     poses.count = 5;
     poses.dwell_s = 0.1;
-    m.steps = {Step(CaptureStep{true, 10.0, {}}, 2), Step(SetWindStep{Vec3(3, 1, 0)}, 3), Step(poses, 4),
-               Step(CaptureStep{false, 0.0, {}}, 5)};
+    m.steps = {Step(CaptureStep{true, 10.0, {}}, 2), Step(SetWindStep{Vec3(3, 1, 0)}, 3),
+               Step(poses, 4), Step(CaptureStep{false, 0.0, {}}, 5)};
     RecordingHost host;
     MissionRunner runner(m, Frame(), RandomStream(seed), &host);
     PointVehicle v;

@@ -9,8 +9,8 @@ namespace airis::engine {
 namespace {
 
 TEST(PathTest, RightAngleCornerIsAQuarterCircleOfTheGivenRadius) {
-  // L-shaped path 0 -> (10,0,0) -> (10,10,0) with r = 2: the arc replaces 2 m of each leg (tan 45 deg = 1),
-  // so the length is 8 + pi/2 * 2 + 8.
+  // L-shaped path 0 -> (10,0,0) -> (10,10,0) with r = 2: the arc replaces 2 m of each leg (tan 45
+  // deg = 1), so the length is 8 + pi/2 * 2 + 8.
   const std::vector<Vec3> pts = {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10, 10, 0)};
   const Path path(pts, 2.0);
   EXPECT_NEAR(path.length_m(), 16.0 + M_PI, 1e-12);
@@ -23,7 +23,8 @@ TEST(PathTest, RightAngleCornerIsAQuarterCircleOfTheGivenRadius) {
   EXPECT_LT((path.TangentAt(path.length_m()) - Vec3::UnitY()).norm(), 1e-12);
   // Curvature: 1/r toward the centre on the arc, zero on the legs.
   const double mid_arc = 8.0 + M_PI / 2;
-  EXPECT_LT((path.CurvatureAt(mid_arc) - (Vec3(8, 2, 0) - path.PositionAt(mid_arc)) / 4.0).norm(), 1e-12);
+  EXPECT_LT((path.CurvatureAt(mid_arc) - (Vec3(8, 2, 0) - path.PositionAt(mid_arc)) / 4.0).norm(),
+            1e-12);
   EXPECT_EQ(path.CurvatureAt(4.0), Vec3::Zero());
 }
 
@@ -41,7 +42,8 @@ TEST(PathTest, SpeedLimitSlowsForCornersAndStopsAtTheEnd) {
 }
 
 TEST(PathTest, PositionAndTangentAreContinuous) {
-  const std::vector<Vec3> pts = {Vec3(0, 0, -5), Vec3(20, 3, -8), Vec3(25, 30, -8), Vec3(0, 40, -2)};
+  const std::vector<Vec3> pts = {Vec3(0, 0, -5), Vec3(20, 3, -8), Vec3(25, 30, -8),
+                                 Vec3(0, 40, -2)};
   const Path path(pts, 5.0);
   const double ds = 1e-4;
   for (double s = ds; s < path.length_m(); s += 0.37) {
@@ -52,7 +54,8 @@ TEST(PathTest, PositionAndTangentAreContinuous) {
 }
 
 TEST(PathTest, RadiusShrinksOnShortLegs) {
-  // Legs of 2 m cannot take a 10 m radius: the corner still passes within the legs and ends on the last point.
+  // Legs of 2 m cannot take a 10 m radius: the corner still passes within the legs and ends on the
+  // last point.
   const std::vector<Vec3> pts = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0)};
   const Path path(pts, 10.0);
   EXPECT_LT(path.length_m(), 4.0);
@@ -72,7 +75,8 @@ TEST(LawnmowerTest, RectangleGivesAlternatingLinesHalfASpacingInside) {
 }
 
 TEST(LawnmowerTest, TriangleLinesEndOnItsEdges) {
-  // Triangle (0,0) (100,0) (0,100); lines along north at east = 25, 75 end on the hypotenuse n + e = 100.
+  // Triangle (0,0) (100,0) (0,100); lines along north at east = 25, 75 end on the hypotenuse n + e
+  // = 100.
   const std::vector<Vec3> tri = {Vec3(0, 0, 0), Vec3(100, 0, 0), Vec3(0, 100, 0)};
   const auto wp = CalcLawnmowerWaypoints(tri, 50.0, 0.0, -10.0);
   ASSERT_EQ(wp.size(), 4u);

@@ -176,8 +176,8 @@ TEST(CollisionWorldTest, TwoBodiesFarFromTheOriginHaveExactFaceContacts) {
   ASSERT_EQ(contacts.size(), 4u);
   EXPECT_NEAR((contacts[0].normal_W + Vec3::UnitX()).norm(), 0.0, kSinglePrecision_m);
   // 1 mm apart: nothing.
-  world.FindBodyContacts(a, p_b + Vec3(0.181, 0.0, 0.0), Quat::Identity(), b, p_b,
-                         Quat::Identity(), contacts);
+  world.FindBodyContacts(a, p_b + Vec3(0.181, 0.0, 0.0), Quat::Identity(), b, p_b, Quat::Identity(),
+                         contacts);
   EXPECT_TRUE(contacts.empty());
 }
 

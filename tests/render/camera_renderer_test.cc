@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "tools/bench/synthetic_scenes.h"
 #include "tests/render/render_test_util.h"
+#include "tools/bench/synthetic_scenes.h"
 
 namespace airis::engine {
 namespace {

@@ -8,8 +8,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "engine/render/camera_renderer.h"
-#include "tests/render/render_test_util.h"
 #include "tests/fixtures/temp_dir.h"
+#include "tests/render/render_test_util.h"
 
 namespace airis::engine {
 namespace {

@@ -2,7 +2,6 @@
 
 #include <memory>
 
-
 namespace airis::engine::testing {
 
 EglContext& SharedContext() {

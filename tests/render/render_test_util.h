@@ -3,9 +3,9 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 
-#include "engine/scene/static_scene.h"
 #include "engine/core/camera_model.h"
 #include "engine/render/egl_context.h"
+#include "engine/scene/static_scene.h"
 #include "tests/fixtures/box_scenes.h"
 
 namespace airis::engine::testing {

@@ -37,7 +37,7 @@ steps:
   - set_wind: {velocity_ned_m_s: [2, 0, 0]}
   - land:
 )",
-                                             "missions/m.yaml");
+                                         "missions/m.yaml");
   EXPECT_EQ(m.name, "demo");
   EXPECT_EQ(m.vehicle, "drone");
   EXPECT_TRUE(m.abort_on_collision);
@@ -55,21 +55,25 @@ steps:
 }
 
 TEST(MissionFileTest, UnknownStepSuggestsTheClosestKind) {
-  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - gotoo: {position_ned_m: [1, 2, 3]}\n")
+  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - gotoo: {position_ned_m: "
+                    "[1, 2, 3]}\n")
                 .substr(0, 62),
             "missions/m.yaml:3:5: steps[1]: unknown step 'gotoo' (did you m");
   EXPECT_NE(ErrorOf("steps:\n  - gotoo: {}\n").find("did you mean 'goto'?"), std::string::npos);
 }
 
 TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
-  const std::string e = ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - goto: {position_ned_m: [1, 2, 3], sped_m_s: 3}\n");
+  const std::string e = ErrorOf(
+      "steps:\n  - takeoff: {height_above_start_m: 5}\n  - goto: {position_ned_m: [1, 2, 3], "
+      "sped_m_s: 3}\n");
   EXPECT_NE(e.find("missions/m.yaml:3:"), std::string::npos) << e;
   EXPECT_NE(e.find("steps[1].goto"), std::string::npos) << e;
   EXPECT_NE(e.find("speed_m_s"), std::string::npos) << e;
 }
 
 TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
-  const std::string e = ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");
+  const std::string e =
+      ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");
   EXPECT_EQ(e, "missions/m.yaml:4:7: steps[1].takeoff.height_above_start_m: must be > 0 (got -5)");
 }
 

@@ -57,7 +57,8 @@ TEST(SceneLoaderTest, UnknownKeyInAnObjectNamesFileLineColumnAndSuggestion) {
                                    "    positon_m: [0, 0, -1]\n");
   EXPECT_EQ(
       LoadError(path),
-      path + ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_ned_m'?)");
+      path +
+          ":3:5: objects[0].positon_m: unknown key 'positon_m' (did you mean 'position_ned_m'?)");
 }
 
 TEST(SceneLoaderTest, WrongTypeAndOutOfRangeNameTheKey) {
@@ -191,10 +192,11 @@ TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
       LoadError(a),
       a + ":2:39: vehicles[0].start.position_ned_m: vehicle 'd' starts below the ground (z = 1 m; "
           "NED z is down, so heights are negative)");
-  const std::string b = f.Write("b.yaml",
-                                "vehicles:\n"
-                                "  - {name: d, preset: quad_x}\n"
-                                "  - {name: d, preset: quad_x, start: {position_ned_m: [5, 0, -1]}}\n");
+  const std::string b =
+      f.Write("b.yaml",
+              "vehicles:\n"
+              "  - {name: d, preset: quad_x}\n"
+              "  - {name: d, preset: quad_x, start: {position_ned_m: [5, 0, -1]}}\n");
   EXPECT_EQ(
       LoadError(b),
       b + ":3:6: vehicles[1].name: duplicate vehicle name 'd' (also vehicles[0] at " + b + ":2)");
@@ -216,13 +218,13 @@ TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
 TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {
   SceneFiles f("repeat");
   f.Write("cube.obj", kCube);
-  const std::string path =
-      f.Write("s.yaml",
-              "objects:\n"
-              "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_ned_m: [0, 0, -1],\n"
-              "     repeat: {count: 3, step_ned_m: [2, 0, 0], rows: 2, row_step_ned_m: [0, 2, 0]}}\n"
-              "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_ned_m: [9, 9, -1]}\n"
-              "  - {primitive: cone, position_ned_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
+  const std::string path = f.Write(
+      "s.yaml",
+      "objects:\n"
+      "  - {name: c, mesh: cube.obj, mesh_axes: ned, position_ned_m: [0, 0, -1],\n"
+      "     repeat: {count: 3, step_ned_m: [2, 0, 0], rows: 2, row_step_ned_m: [0, 2, 0]}}\n"
+      "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_ned_m: [9, 9, -1]}\n"
+      "  - {primitive: cone, position_ned_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
   const Scene s = LoadScene(path);
   ASSERT_EQ(s.static_scene.objects.size(), 1u + 6u + 1u + 1u);  // ground, 6 copies, d, cone
   std::set<std::uint32_t> ids;
@@ -247,7 +249,8 @@ TEST(SceneLoaderTest, IncludesConcatenateAndTheIncluderWins) {
           "scene: {name: tile, seed: 5}\n"
           "ground: {size_ne_m: [10, 10]}\n"
           "objects: [{name: from_a, primitive: box, position_ned_m: [3, 0, -1]}]\n");
-  f.Write("tiles/b.yaml", "objects: [{name: from_b, primitive: sphere, position_ned_m: [6, 0, -1]}]\n");
+  f.Write("tiles/b.yaml",
+          "objects: [{name: from_b, primitive: sphere, position_ned_m: [6, 0, -1]}]\n");
   const std::string top =
       f.Write("top.yaml",
               "include: [tiles/a.yaml, tiles/b.yaml]\n"

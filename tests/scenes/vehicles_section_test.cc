@@ -5,8 +5,8 @@
 #include <string>
 
 #include "scenes/scene.h"
-#include "scenes/world_builder.h"
 #include "scenes/vehicle_kinds.h"
+#include "scenes/world_builder.h"
 #include "sensors/imu.h"
 #include "vehicles/multirotor/multirotor.h"
 
@@ -40,8 +40,8 @@ TEST(VehiclesSectionTest, OverridesChangeOnlyTheKeysGiven) {
       "scenes/v.yaml");
   ASSERT_EQ(s.vehicles.size(), 1u);
   const vehicles::MultirotorConfig reference = LoadMultirotorPreset("hexa_x");
-  const auto* airframe = VehicleConfigOf<vehicles::MultirotorConfig, vehicles::Multirotor>(
-      *s.vehicles[0].spec);
+  const auto* airframe =
+      VehicleConfigOf<vehicles::MultirotorConfig, vehicles::Multirotor>(*s.vehicles[0].spec);
   ASSERT_NE(airframe, nullptr);
   EXPECT_EQ(airframe->mass_kg, 1.6);
   EXPECT_EQ(airframe->friction, 0.7);
@@ -152,7 +152,9 @@ TEST(VehiclesSectionTest, SensorFasterThanThePhysicsIsRejectedNamingIt) {
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("scenes/v.yaml:2:5: vehicles[0].sensors[1].imu.rate_hz:"), std::string::npos) << what;
+    EXPECT_NE(what.find("scenes/v.yaml:2:5: vehicles[0].sensors[1].imu.rate_hz:"),
+              std::string::npos)
+        << what;
   }
 }
 

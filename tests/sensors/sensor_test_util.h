@@ -3,11 +3,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/scene/static_scene.h"
-#include "tests/fixtures/box_scenes.h"
 #include "engine/environment/environment.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/scene/static_scene.h"
 #include "engine/world/sensor.h"
+#include "tests/fixtures/box_scenes.h"
 
 namespace airis::sensors::testing {
 

@@ -10,9 +10,10 @@ namespace {
 
 using engine::Vec3;
 
-// Reference quadrotor of parameters.md: F_max = 4.179446 N, tau_max = 0.0555622 N m per rotor, rotors at
-// (+-0.160867, +-0.160867, 0.025) m; order 0 FR CCW, 1 RL CCW, 2 FL CW, 3 RR CW. A CCW rotor (seen from above)
-// pushes the body clockwise: reaction torque along +z (positive yaw in FRD).
+// Reference quadrotor of parameters.md: F_max = 4.179446 N, tau_max = 0.0555622 N m per rotor,
+// rotors at
+// (+-0.160867, +-0.160867, 0.025) m; order 0 FR CCW, 1 RL CCW, 2 FL CW, 3 RR CW. A CCW rotor (seen
+// from above) pushes the body clockwise: reaction torque along +z (positive yaw in FRD).
 constexpr double kFmax = 4.179446;
 constexpr double kTauMax = 0.0555622;
 constexpr double kArm = 0.160867;
@@ -29,7 +30,8 @@ std::vector<ActuatorEffect> QuadX() {
 }
 
 std::vector<ActuatorEffect> RingLayout(int n) {
-  // Hexa-x / octo-x: rotors on a circle, alternating spin, first rotor at half spacing from the nose.
+  // Hexa-x / octo-x: rotors on a circle, alternating spin, first rotor at half spacing from the
+  // nose.
   std::vector<ActuatorEffect> out;
   for (int i = 0; i < n; ++i) {
     const double a = 2.0 * M_PI * (i + 0.5) / n;
@@ -69,7 +71,8 @@ TEST(ControlAllocatorTest, YawGivesWayWhenSaturatedThrustAndRollPitchAreKept) {
   EXPECT_NEAR(got.thrust_n, 9.80665, 1e-9);
   EXPECT_NEAR(got.torque_B.x(), 0.0, 1e-12);
   EXPECT_NEAR(got.torque_B.y(), 0.0, 1e-12);
-  // Headroom at hover: the CW pair can rise by 1 - 0.5866, the CCW pair fall by as much... yaw = 4 tau dU.
+  // Headroom at hover: the CW pair can rise by 1 - 0.5866, the CCW pair fall by as much... yaw = 4
+  // tau dU.
   EXPECT_NEAR(got.torque_B.z(), 4 * kTauMax * (1.0 - 0.5866), 2e-4);
   for (double ui : u) {
     EXPECT_GE(ui, 0.0);
@@ -80,8 +83,9 @@ TEST(ControlAllocatorTest, YawGivesWayWhenSaturatedThrustAndRollPitchAreKept) {
 TEST(ControlAllocatorTest, LargeRollShiftsThrustToKeepTheMoment) {
   const ControlAllocator allocator(QuadX());
   std::vector<double> u(4);
-  // Roll = arm * F_max * (u_left1 + u_left2 - u_right1 - u_right2): this one needs the left pair 0.9 above the
-  // right pair, impossible at 2 N of thrust (0.12 per rotor), so thrust must rise to fit it.
+  // Roll = arm * F_max * (u_left1 + u_left2 - u_right1 - u_right2): this one needs the left pair
+  // 0.9 above the right pair, impossible at 2 N of thrust (0.12 per rotor), so thrust must rise to
+  // fit it.
   const double roll = 0.9 * 2 * kArm * kFmax;
   allocator.Allocate({2.0, Vec3(roll, 0.0, 0.0)}, u);
   const WrenchSetpoint got = allocator.CalcWrench(u);

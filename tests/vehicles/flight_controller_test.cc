@@ -22,7 +22,8 @@ std::vector<ActuatorEffect> ReferenceQuadX() {
     const Vec3 force(0, 0, -kF);
     return ActuatorEffect{force, Vec3(x, y, 0.025).cross(force) + Vec3(0, 0, ccw * kTau)};
   };
-  return {rotor(kArm, kArm, 1), rotor(-kArm, -kArm, 1), rotor(kArm, -kArm, -1), rotor(-kArm, kArm, -1)};
+  return {rotor(kArm, kArm, 1), rotor(-kArm, -kArm, 1), rotor(kArm, -kArm, -1),
+          rotor(-kArm, kArm, -1)};
 }
 
 VehicleParameters ReferenceQuadParameters() {
@@ -67,7 +68,8 @@ TEST(FlightControllerTest, TargetToTheNorthPitchesTheNoseDown) {
   s.p_W = Vec3(0, 0, -10);
   std::vector<double> u(4);
   fc.Update(kDt, s, kG, 1.0, u);
-  // Nose down = negative pitch torque in FRD: the rear rotors (1: RL, 3: RR) push harder than the front ones.
+  // Nose down = negative pitch torque in FRD: the rear rotors (1: RL, 3: RR) push harder than the
+  // front ones.
   const WrenchSetpoint w = fc.allocator().CalcWrench(u);
   EXPECT_LT(w.torque_B.y(), 0.0);
   EXPECT_GT(u[1] + u[3], u[0] + u[2]);

@@ -1,4 +1,5 @@
-// Closed-loop tests of the built-in flight controller on the full physics (paper quad and every preset).
+// Closed-loop tests of the built-in flight controller on the full physics (paper quad and every
+// preset).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,11 +8,11 @@
 
 #include "engine/mission/mission_runner.h"
 #include "engine/world/simulation.h"
+#include "scenes/vehicle_kinds.h"
 #include "tests/fixtures/box_scenes.h"
 #include "tests/fixtures/test_environment.h"
-#include "scenes/vehicle_kinds.h"
-#include "vehicles/multirotor/preset_files.h"
 #include "vehicles/multirotor/multirotor.h"
+#include "vehicles/multirotor/preset_files.h"
 
 namespace airis::vehicles {
 namespace {
@@ -25,8 +26,8 @@ struct Flight {
   Multirotor* vehicle = nullptr;
 };
 
-// A vehicle alone over a ground plane at z = 0, starting at `start_W` (in the air: hovering; on the ground: at
-// rest), in an environment with `wind_ned_m_s` of steady wind.
+// A vehicle alone over a ground plane at z = 0, starting at `start_W` (in the air: hovering; on the
+// ground: at rest), in an environment with `wind_ned_m_s` of steady wind.
 Flight MakeFlight(const MultirotorConfig& config, const Vec3& start_W,
                   const Vec3& wind_ned_m_s = Vec3::Zero()) {
   engine::EnvironmentConfig env;
@@ -40,7 +41,8 @@ Flight MakeFlight(const MultirotorConfig& config, const Vec3& start_W,
   if (start_W.z() < -1.0) {
     std::vector<double> hover(static_cast<std::size_t>(vehicle->actuator_count()),
                               vehicle->CalcHoverCommand(1.225, 9.80665));
-    for (int i = vehicle->rotor_count(); i < vehicle->actuator_count(); ++i) hover[static_cast<std::size_t>(i)] = 0;
+    for (int i = vehicle->rotor_count(); i < vehicle->actuator_count(); ++i)
+      hover[static_cast<std::size_t>(i)] = 0;
     vehicle->ResetActuators(hover);
   }
   world->AddVehicle(std::move(vehicle));
@@ -69,8 +71,8 @@ TEST(FlightTest, HoverHoldsPositionWithinFiveCentimetresForAMinute) {
 }
 
 TEST(FlightTest, FiveMetrePerSecondWindIsRejectedWithinHalfAMetre) {
-  // GIVEN a hovering quad, WHEN a 5 m/s wind starts (a step in drag), THEN it never drifts more than 0.5 m
-  // and the velocity integrator brings it back to within 5 cm.
+  // GIVEN a hovering quad, WHEN a 5 m/s wind starts (a step in drag), THEN it never drifts more
+  // than 0.5 m and the velocity integrator brings it back to within 5 cm.
   const Vec3 target(0, 0, -10);
   Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), target);
   f.vehicle->SetCommand(PositionCommand(target));
@@ -112,7 +114,8 @@ TEST(FlightTest, AltitudeStepSettlesWithBoundedOvershoot) {
 }
 
 TEST(FlightTest, YawStepSettlesWithBoundedOvershoot) {
-  // A 90 degree turn. Bound: overshoot below 5 degrees; within 1 degree after 4 s; position held within 5 cm.
+  // A 90 degree turn. Bound: overshoot below 5 degrees; within 1 degree after 4 s; position held
+  // within 5 cm.
   const Vec3 target(0, 0, -10);
   Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), target);
   f.vehicle->SetCommand(PositionCommand(target, M_PI / 2));
@@ -128,7 +131,8 @@ TEST(FlightTest, YawStepSettlesWithBoundedOvershoot) {
 }
 
 TEST(FlightTest, VelocityStepSettlesWithBoundedOvershoot) {
-  // From hover, 5 m/s north. Bound: overshoot below 5% (0.25 m/s); within 0.05 m/s after 4 s; height held.
+  // From hover, 5 m/s north. Bound: overshoot below 5% (0.25 m/s); within 0.05 m/s after 4 s;
+  // height held.
   Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, -20));
   VehicleCommand c;
   c.mode = CommandMode::kVelocity;
@@ -145,9 +149,9 @@ TEST(FlightTest, VelocityStepSettlesWithBoundedOvershoot) {
 }
 
 TEST(FlightTest, RateStepSettlesWithBoundedOvershoot) {
-  // Body yaw rate step to 1 rad/s at hover thrust. Bound: overshoot below 10%. The PI loop's integral tail
-  // decays with time constant about K_p / K_i = 10 / 4 = 2.5 s (yaw defaults): within 2% after 3 s, within
-  // 0.5% after 10 s.
+  // Body yaw rate step to 1 rad/s at hover thrust. Bound: overshoot below 10%. The PI loop's
+  // integral tail decays with time constant about K_p / K_i = 10 / 4 = 2.5 s (yaw defaults): within
+  // 2% after 3 s, within 0.5% after 10 s.
   Flight f = MakeFlight(scenes::LoadMultirotorPreset("quad_x"), Vec3(0, 0, -20));
   VehicleCommand c;
   c.mode = CommandMode::kRatesThrust;
@@ -199,22 +203,25 @@ TEST(FlightTest, EveryPresetFliesASquareAndEndsWithinThirtyCentimetres) {
     SCOPED_TRACE(preset.name);
     Flight f = MakeFlight(scenes::LoadMultirotorPreset(preset.name), Vec3(0, 0, -10));
     engine::PathStep square;
-    square.waypoints_ned_m = {Vec3(20, 0, -10), Vec3(20, 20, -10), Vec3(0, 20, -10), Vec3(0, 0, -10)};
+    square.waypoints_ned_m = {Vec3(20, 0, -10), Vec3(20, 20, -10), Vec3(0, 20, -10),
+                              Vec3(0, 0, -10)};
     square.speed_m_s = 5.0;
     engine::Mission mission;
-    mission.steps = {engine::MissionStep::Of(square), engine::MissionStep::Of(engine::HoverStep{2.0, 0.0})};
-    engine::MissionRunner runner(mission, f.sim->world().environment().frame(), engine::RandomStream(1),
-                                 nullptr);
+    mission.steps = {engine::MissionStep::Of(square),
+                     engine::MissionStep::Of(engine::HoverStep{2.0, 0.0})};
+    engine::MissionRunner runner(mission, f.sim->world().environment().frame(),
+                                 engine::RandomStream(1), nullptr);
     VehicleCommand command;
-    while (runner.Update({f.sim->clock().now_ns(), f.vehicle->state(), f.vehicle->landed()}, &command) ==
-               engine::MissionRunner::State::kRunning &&
+    while (runner.Update({f.sim->clock().now_ns(), f.vehicle->state(), f.vehicle->landed()},
+                         &command) == engine::MissionRunner::State::kRunning &&
            f.sim->clock().now_s() < 120.0) {
       f.vehicle->SetCommand(command);
       f.sim->Step();
     }
     ASSERT_EQ(runner.state(), engine::MissionRunner::State::kSucceeded) << runner.failure();
     EXPECT_LT((f.vehicle->state().p_W - Vec3(0, 0, -10)).norm(), 0.3);
-    // Measured 0.13 m for every preset (gains are normalised by mass and inertia); the bound leaves margin.
+    // Measured 0.13 m for every preset (gains are normalised by mass and inertia); the bound leaves
+    // margin.
     EXPECT_LT(runner.max_tracking_error_m(), 0.25);
   }
 }

@@ -8,9 +8,9 @@
 #include "engine/core/error.h"
 #include "engine/environment/atmosphere.h"
 #include "engine/world/simulation.h"
+#include "scenes/vehicle_kinds.h"
 #include "tests/fixtures/box_scenes.h"
 #include "tests/fixtures/test_environment.h"
-#include "scenes/vehicle_kinds.h"
 #include "vehicles/multirotor/preset_files.h"
 
 namespace airis::vehicles {
@@ -18,8 +18,8 @@ namespace {
 
 using engine::ActuatorContext;
 using engine::Vec3;
-using testing::MakeEnvironment;
 using testing::BoxSceneBuilder;
+using testing::MakeEnvironment;
 
 constexpr double kG0 = 9.80665;
 constexpr double kRhoSeaLevel = 1.225;
@@ -29,8 +29,8 @@ constexpr double kRhoSeaLevel = 1.225;
 std::unique_ptr<engine::Simulation> Fly(std::unique_ptr<Multirotor> quad, Multirotor** quad_out,
                                         double origin_altitude_m = 0.0) {
   *quad_out = quad.get();
-  auto world =
-      std::make_unique<engine::World>(BoxSceneBuilder().Build(), MakeEnvironment(origin_altitude_m));
+  auto world = std::make_unique<engine::World>(BoxSceneBuilder().Build(),
+                                               MakeEnvironment(origin_altitude_m));
   world->AddVehicle(std::move(quad));
   return std::make_unique<engine::Simulation>(std::move(world));
 }

@@ -15,10 +15,10 @@
 namespace airis::engine {
 namespace {
 
+using testing::BoxSceneBuilder;
 using testing::MakeEnvironment;
 using testing::PassiveBody;
 using testing::QuadBody;
-using testing::BoxSceneBuilder;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box

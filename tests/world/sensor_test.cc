@@ -1,10 +1,10 @@
 // The generic Sensor contract: exact schedule, enable switch, and the sample gate.
+#include "engine/world/sensor.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
-
-#include "engine/world/sensor.h"
 
 namespace airis::engine {
 namespace {
@@ -13,7 +13,9 @@ class TimeSensor final : public Sensor {
  public:
   using Sensor::Sensor;
   std::span<const std::string> columns() const override { return columns_; }
-  void CopyLatestRow(std::span<double> out) const override { out[0] = static_cast<double>(times.back()); }
+  void CopyLatestRow(std::span<double> out) const override {
+    out[0] = static_cast<double>(times.back());
+  }
   std::vector<TimeNs> times;
 
  protected:
@@ -39,7 +41,8 @@ TEST(SensorTest, GateSkipsSamplesWithoutShiftingTheSchedule) {
   Tick(gated, 0, 1'000'000'000);
   // Due at 0, 100, ..., 1000 ms: 11 asked, the 2nd, 4th, ... taken, at their exact due times.
   ASSERT_EQ(asked.size(), 11u);
-  EXPECT_EQ(gated.times, (std::vector<TimeNs>{100'000'000, 300'000'000, 500'000'000, 700'000'000, 900'000'000}));
+  EXPECT_EQ(gated.times,
+            (std::vector<TimeNs>{100'000'000, 300'000'000, 500'000'000, 700'000'000, 900'000'000}));
   EXPECT_EQ(notified, 5);
   EXPECT_EQ(gated.last_sample_ns(), 900'000'000);
 }

@@ -16,10 +16,10 @@
 namespace airis::engine {
 namespace {
 
+using testing::BoxSceneBuilder;
 using testing::MakeEnvironment;
 using testing::PassiveBody;
 using testing::QuadBody;
-using testing::BoxSceneBuilder;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box
@@ -54,8 +54,8 @@ struct Rig {
 };
 
 // Vehicles "a", "b", ... with the given bodies in `scene`, each recording its collision events.
-std::unique_ptr<Rig> MakeRig(const BoxSceneBuilder& scene, const std::vector<RigidBodyConfig>& bodies,
-                             double rate_hz = 1000.0) {
+std::unique_ptr<Rig> MakeRig(const BoxSceneBuilder& scene,
+                             const std::vector<RigidBodyConfig>& bodies, double rate_hz = 1000.0) {
   auto rig = std::make_unique<Rig>();
   auto world = std::make_unique<World>(scene.Build(), MakeEnvironment());
   for (std::size_t i = 0; i < bodies.size(); ++i) {

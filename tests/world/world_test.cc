@@ -14,10 +14,10 @@
 namespace airis::engine {
 namespace {
 
+using testing::BoxSceneBuilder;
 using testing::MakeEnvironment;
 using testing::PassiveBody;
 using testing::QuadBody;
-using testing::BoxSceneBuilder;
 
 // A simulation of one PassiveBody in `scene`; returns the simulation and a pointer to the body.
 std::pair<std::unique_ptr<Simulation>, PassiveBody*> MakeSim(const BoxSceneBuilder& scene,

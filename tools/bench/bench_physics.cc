@@ -139,7 +139,8 @@ PhysicsTickScenario::PhysicsTickScenario(int box_count, double extent_m, std::ui
   auto scene =
       std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(box_count, extent_m, seed));
   auto world = std::make_unique<engine::World>(scene, BenchEnvironment());
-  auto quad = std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
+  auto quad =
+      std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   s_->quad = quad.get();
   world->AddVehicle(std::move(quad));
   const Vec3 p(0.0, 0.0, -3.0);

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "engine/scene/static_scene.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/scene/static_scene.h"
 
 namespace airis::tools {
 

@@ -9,8 +9,8 @@
 #include "engine/render/camera_renderer.h"
 #include "engine/render/egl_context.h"
 #include "engine/render/gpu_scene.h"
-#include "tools/bench/synthetic_scenes.h"
 #include "scenes/scene.h"
+#include "tools/bench/synthetic_scenes.h"
 
 namespace airis::tools {
 
@@ -124,8 +124,8 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   if (options.synthetic) {
     cases.push_back({"synthetic_city", [] { return MakeSyntheticCity(10'000, 1000.0, 1); },
                      city_flight, "synthetic: 10,000 box buildings over 1 km^2 + ground"});
-    cases.push_back({"synthetic_forest",
-                     [] { return MakeSyntheticForest(5'000, 500.0, 1); }, forest_flight,
+    cases.push_back({"synthetic_forest", [] { return MakeSyntheticForest(5'000, 500.0, 1); },
+                     forest_flight,
                      "synthetic: 5,000 trees (trunk + crown) over 0.25 km^2 + ground"});
   }
   for (SceneCase& c : cases) {

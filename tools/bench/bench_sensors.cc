@@ -11,13 +11,13 @@
 #include "engine/world/embree_ray_caster.h"
 #include "engine/world/simulation.h"
 #include "engine/world/world.h"
+#include "scenes/vehicle_kinds.h"
 #include "sensors/barometer.h"
 #include "sensors/gps.h"
 #include "sensors/imu.h"
 #include "sensors/lidar.h"
 #include "sensors/magnetometer.h"
 #include "sensors/rangefinder.h"
-#include "scenes/vehicle_kinds.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::tools {
@@ -103,7 +103,8 @@ QuadTickRates MeasureReferenceQuadTicks(double seconds) {
         engine::Environment(engine::EnvironmentConfig{},
                             {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
                             streams.Stream("environment")));
-    auto quad = std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
+    auto quad =
+        std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
     quad->state().p_W = Vec3(0, 0, -50);
     // Hover for the air and gravity at 50 m, so the open-loop quad stays near its start.
     const double rho = world->environment().CalcAir(quad->state().p_W).density_kg_m3;

@@ -49,7 +49,8 @@ std::uint64_t ParseSeed(const std::string& name, const std::string& text) {
   std::uint64_t value = 0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) {
-    throw engine::ConfigError({}, "--" + name, "must be a whole number from 0 to 2^64 - 1 (got '" + text + "')");
+    throw engine::ConfigError({}, "--" + name,
+                              "must be a whole number from 0 to 2^64 - 1 (got '" + text + "')");
   }
   return value;
 }

@@ -4,19 +4,19 @@
 #include <functional>
 #include <string>
 
-
 namespace airis::tools {
 
-/// Runs a command body and turns the errors users can cause into one clear line on stderr and exit code 2
-/// (ConfigError, std::out_of_range and std::invalid_argument from models; SimulationError: exit code 3; any other
-/// std::exception, such as a full disk or no EGL display: exit code 1, its message).
-/// Returns the body's exit code otherwise. No stack traces, no noise.
+/// Runs a command body and turns the errors users can cause into one clear line on stderr and exit
+/// code 2 (ConfigError, std::out_of_range and std::invalid_argument from models; SimulationError:
+/// exit code 3; any other std::exception, such as a full disk or no EGL display: exit code 1, its
+/// message). Returns the body's exit code otherwise. No stack traces, no noise.
 int RunReportingErrors(const std::function<int()>& body);
 
 /// Parses `text` as a finite double for option `--name`, or throws ConfigError naming the option.
 double ParseFiniteNumber(const std::string& name, const std::string& text);
 
-/// Parses `text` as an unsigned 64-bit seed for option `--name`, or throws ConfigError naming the option.
+/// Parses `text` as an unsigned 64-bit seed for option `--name`, or throws ConfigError naming the
+/// option.
 std::uint64_t ParseSeed(const std::string& name, const std::string& text);
 
 }  // namespace airis::tools

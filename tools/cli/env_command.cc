@@ -7,9 +7,9 @@
 
 #include "engine/core/config.h"
 #include "engine/core/error.h"
-#include "tools/jobs/environment_query.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
+#include "tools/jobs/environment_query.h"
 
 namespace airis::tools {
 namespace {
@@ -73,8 +73,8 @@ int RunEnv(const EnvOptions& options) {
     std::cout << out.dump(2) << "\n";
     return 0;
   }
-  std::printf("position         %.6f N, %.6f E, %.1f m above the WGS84 ellipsoid\n",
-              q.latitude_deg, q.longitude_deg, q.altitude_m);
+  std::printf("position         %.6f N, %.6f E, %.1f m above the WGS84 ellipsoid\n", q.latitude_deg,
+              q.longitude_deg, q.altitude_m);
   std::printf("date             %.4f (magnetic model %s)\n", q.date_decimal_year,
               r.magnetic_model.c_str());
   std::printf("gravity          %.6f m/s^2\n", r.gravity_m_s2);

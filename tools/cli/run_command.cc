@@ -1,4 +1,5 @@
-// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--realtime [FACTOR]] [--until SECONDS]`
+// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--realtime [FACTOR]]
+// [--until SECONDS]`
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,7 +20,7 @@ struct RunOptions {
   std::string mission;
   std::string out;
   std::string seed;
-  std::string realtime;      // empty: as fast as possible
+  std::string realtime;  // empty: as fast as possible
   bool realtime_given = false;
   std::string until;
   std::string truth_rate = "100";
@@ -88,11 +89,13 @@ void AddRunCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "fly a mission in a scene and write a telemetry log");
   cmd->add_option("scene", options->scene, "scene file (YAML)")->required();
   cmd->add_option("--mission", options->mission, "mission file (YAML)")->required();
-  cmd->add_option("--out", options->out, "folder for the telemetry log (CSV per stream); must be empty");
+  cmd->add_option("--out", options->out,
+                  "folder for the telemetry log (CSV per stream); must be empty");
   cmd->add_option("--seed", options->seed, "scene seed (default: the scene's)");
-  cmd->add_option("--realtime", options->realtime,
-                  "pace to wall time at this exact factor (default as fast as possible; 1 when given "
-                  "without a value)")
+  cmd->add_option(
+         "--realtime", options->realtime,
+         "pace to wall time at this exact factor (default as fast as possible; 1 when given "
+         "without a value)")
       ->expected(0, 1);
   cmd->add_option("--until", options->until, "stop after this many simulated seconds");
   cmd->add_option("--truth-rate", options->truth_rate, "ground-truth log rate (Hz, default 100)");

@@ -1,12 +1,12 @@
-// `airis scene check|stats|schema|preview`: validate a scene file, summarise it, print the format's key
-// tables, render a preview image.
+// `airis scene check|stats|schema|preview`: validate a scene file, summarise it, print the format's
+// key tables, render a preview image.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <algorithm>
-#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,8 +15,8 @@
 #include "scenes/scene_schema.h"
 #include "scenes/scene_stats.h"
 #include "tools/cli/cli_util.h"
-#include "tools/jobs/preview_render.h"
 #include "tools/cli/commands.h"
+#include "tools/jobs/preview_render.h"
 
 namespace airis::tools {
 namespace {
@@ -150,7 +150,9 @@ int RunPreview(const SceneOptions& o) {
     std::string item;
     std::stringstream in(o.pose);
     while (std::getline(in, item, ',')) v.push_back(ParseFiniteNumber("pose", item));
-    if (v.size() != 5) throw engine::ConfigError({}, "--pose", "expected n,e,d,yaw_deg,pitch_deg (got '" + o.pose + "')");
+    if (v.size() != 5)
+      throw engine::ConfigError({}, "--pose",
+                                "expected n,e,d,yaw_deg,pitch_deg (got '" + o.pose + "')");
     preview.camera_position_m = Eigen::Vector3d(v[0], v[1], v[2]);
     preview.yaw_deg = v[3];
     preview.pitch_deg = v[4];
@@ -165,8 +167,8 @@ int RunPreview(const SceneOptions& o) {
   } else {
     r = RenderPreviewPng(scenes::LoadScene(o.file).static_scene, preview, o.out);
   }
-  std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n", o.out.c_str(),
-              r.triangles, r.gl_renderer.c_str());
+  std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
+              o.out.c_str(), r.triangles, r.gl_renderer.c_str());
   return 0;
 }
 
@@ -199,8 +201,10 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   CLI::App* preview = cmd->add_subcommand(
       "preview", "Render RGB | depth | segmentation side by side from a camera, a pose or above");
   preview->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
-  preview->add_option("--camera", options->camera, "a camera of the scene's vehicles, at its start pose");
-  preview->add_option("--pose", options->pose, "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
+  preview->add_option("--camera", options->camera,
+                      "a camera of the scene's vehicles, at its start pose");
+  preview->add_option("--pose", options->pose,
+                      "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
   preview->add_option("--out", options->out, "PNG to write (default preview.png)");
   preview->callback([options, &exit_code] {
     exit_code = RunReportingErrors([&] { return RunPreview(*options); });

@@ -33,9 +33,9 @@ void RemoveUnfinishedFiles(const fs::path& root) {
 DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
                                const std::function<void(const JobProgress&)>& progress) {
   if (o.min_object_area_px < 1) {
-    throw engine::ConfigError({}, "--min-object-area-px",
-                              "must be at least 1 (got " + std::to_string(o.min_object_area_px) +
-                                  ")");
+    throw engine::ConfigError(
+        {}, "--min-object-area-px",
+        "must be at least 1 (got " + std::to_string(o.min_object_area_px) + ")");
   }
   if (o.workers < 1 || o.workers > 64) {
     throw engine::ConfigError({}, "--workers",
@@ -94,10 +94,10 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   r.succeeded = outcome.succeeded();
   if (!r.succeeded) r.failure = outcome.failure;
   r.simulated_s = outcome.simulated_s;
-  engine::WriteFileAtomically(manifest_path,
-                              MakeDatasetManifest(source, job.scene(), mission, job.world(),
-                                                  recorder, r.succeeded, r.simulated_s)
-                                  .dump(1));
+  engine::WriteFileAtomically(
+      manifest_path, MakeDatasetManifest(source, job.scene(), mission, job.world(), recorder,
+                                         r.succeeded, r.simulated_s)
+                         .dump(1));
   for (const auto& c : recorder.cameras()) r.frames += c.frames;
   r.cameras = recorder.cameras().size();
   r.wall_s = job.wall_s();

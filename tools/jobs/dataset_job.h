@@ -17,10 +17,10 @@ struct DatasetJobOptions {
   SceneSource scene;    ///< the scene file and the seed that replaces its own
   std::string mission;  ///< mission file (YAML)
   std::string out;      ///< dataset folder: empty or absent, or an interrupted run's with resume
-  std::vector<std::string> cameras;   ///< record only these (empty: all)
-  engine::DatasetOutputs outputs;     ///< which files per frame
+  std::vector<std::string> cameras;  ///< record only these (empty: all)
+  engine::DatasetOutputs outputs;    ///< which files per frame
   ShardSpec shard;
-  int workers = 2;      ///< image encoding threads, 1 to 64
+  int workers = 2;  ///< image encoding threads, 1 to 64
   /// Instances with fewer visible pixels get no COCO annotation (they stay in the label images).
   std::int64_t min_object_area_px = 16;
   bool resume = false;  ///< continue an interrupted run in `out`
@@ -39,9 +39,9 @@ struct DatasetJobResult {
 /// Flies the mission through the scene and writes the dataset into options.out
 /// (docs/dataset-format.md): frames, poses, COCO files, labels, streams, the contact sheet, and
 /// manifest.json (written first marked incomplete, replaced at the end). Calls `progress` about
-/// every 100 simulated ms (with the frames written and an ETA). Throws ConfigError for bad options or input files (naming file, line and
-/// key), DatasetIoError when the folder cannot be written, SimulationError when the simulation
-/// diverges.
+/// every 100 simulated ms (with the frames written and an ETA). Throws ConfigError for bad options
+/// or input files (naming file, line and key), DatasetIoError when the folder cannot be written,
+/// SimulationError when the simulation diverges.
 DatasetJobResult RunDatasetJob(const DatasetJobOptions& options,
                                const std::function<void(const JobProgress&)>& progress = {});
 

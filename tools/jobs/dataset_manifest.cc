@@ -21,7 +21,8 @@ nlohmann::json RendererJson(const engine::World& world) {
     for (const auto& s : world.sensors(v)) {
       if (const engine::ImageSensor* image = s->image()) {
         const engine::RendererInfo r = image->renderer();
-        return {{"gl_vendor", r.gl_vendor}, {"gl_renderer", r.gl_renderer},
+        return {{"gl_vendor", r.gl_vendor},
+                {"gl_renderer", r.gl_renderer},
                 {"gl_version", r.gl_version}};
       }
     }
@@ -92,16 +93,18 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
 
 nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene& scene,
                                    const engine::Mission& mission, const engine::World& world,
-                                   const DatasetRecorder& recorder, bool complete,
-                                   double sim_s) {
+                                   const DatasetRecorder& recorder, bool complete, double sim_s) {
   nlohmann::json m;
   m["format"] = "airis-dataset";
   m["format_version"] = 2;
   m["airis_version"] = kVersion;
   m["complete"] = complete;
-  m["scene"] = {
-      {"file", o.scene_file}, {"sha256", FileHash(o.scene_file)}, {"name", scene.name}, {"seed", scene.seed}};
-  m["mission"] = {{"file", o.mission_file}, {"sha256", FileHash(o.mission_file)}, {"name", mission.name}};
+  m["scene"] = {{"file", o.scene_file},
+                {"sha256", FileHash(o.scene_file)},
+                {"name", scene.name},
+                {"seed", scene.seed}};
+  m["mission"] = {
+      {"file", o.mission_file}, {"sha256", FileHash(o.mission_file)}, {"name", mission.name}};
   m["renderer"] = RendererJson(world);
   nlohmann::json& cams = m["cameras"] = nlohmann::json::array();
   std::int64_t frames = 0;

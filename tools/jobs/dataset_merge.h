@@ -14,13 +14,14 @@ struct MergeSummary {
 };
 
 /// Joins the folders of `airis dataset --shard K/N` runs (all N of one dataset, complete) into
-/// `out` (created; it must be empty or absent: nothing is overwritten), so that it holds what the unsharded run writes
-/// (docs/dataset-format.md, "Shards"): frame files copied; poses.csv and camera streams joined in
-/// time order; each camera's COCO file joined with annotation ids renumbered in frame order;
-/// TartanAir pose files and preview.png made again; the manifest (written last) without the shard
-/// entry and with the summed frame counts. Throws DatasetIoError naming the shard folder and the
-/// problem when a shard is missing, repeated, incomplete, or made from a different scene, mission,
-/// seed or version, and ConfigError("--out") when `out` is not an empty folder.
+/// `out` (created; it must be empty or absent: nothing is overwritten), so that it holds what the
+/// unsharded run writes (docs/dataset-format.md, "Shards"): frame files copied; poses.csv and
+/// camera streams joined in time order; each camera's COCO file joined with annotation ids
+/// renumbered in frame order; TartanAir pose files and preview.png made again; the manifest
+/// (written last) without the shard entry and with the summed frame counts. Throws DatasetIoError
+/// naming the shard folder and the problem when a shard is missing, repeated, incomplete, or made
+/// from a different scene, mission, seed or version, and ConfigError("--out") when `out` is not an
+/// empty folder.
 MergeSummary MergeDatasetShards(const std::vector<std::filesystem::path>& shards,
                                 const std::filesystem::path& out);
 

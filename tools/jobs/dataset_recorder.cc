@@ -76,11 +76,19 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
         const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs);
         const engine::TartanAirSlot tartanair{s.rig, s.side};
         rec->writer_camera = writer_.AddCamera(s.name, outputs, tartanair);
-        const std::vector<std::string> columns = {
-            "time_ns",          "time_s",           "frame",
-            "position_ned_x_m", "position_ned_y_m", "position_ned_z_m",
-            "attitude_cam_to_ned_w", "attitude_cam_to_ned_x", "attitude_cam_to_ned_y",
-            "attitude_cam_to_ned_z", "latitude_deg", "longitude_deg", "altitude_m"};
+        const std::vector<std::string> columns = {"time_ns",
+                                                  "time_s",
+                                                  "frame",
+                                                  "position_ned_x_m",
+                                                  "position_ned_y_m",
+                                                  "position_ned_z_m",
+                                                  "attitude_cam_to_ned_w",
+                                                  "attitude_cam_to_ned_x",
+                                                  "attitude_cam_to_ned_y",
+                                                  "attitude_cam_to_ned_z",
+                                                  "latitude_deg",
+                                                  "longitude_deg",
+                                                  "altitude_m"};
         rec->poses =
             std::make_unique<engine::CsvWriter>(options_.root / s.name / "poses.csv", columns);
         recordings_.push_back(std::move(rec));
@@ -178,7 +186,8 @@ void DatasetRecorder::Finish() {
     if (info.outputs.segmentation) {
       const nlohmann::json coco = engine::BuildCocoJson(
           rec.images, writer_.annotations(rec.writer_camera), world_.scene().classes);
-      engine::WriteFileAtomically(options_.root / info.stream.name / "coco_instances.json", coco.dump(1));
+      engine::WriteFileAtomically(options_.root / info.stream.name / "coco_instances.json",
+                                  coco.dump(1));
     }
     if (info.outputs.tartanair) {
       engine::WriteTartanAirPoses(rec.poses->path(),
@@ -213,10 +222,10 @@ void DatasetRecorder::WritePreview() const {
     if (!o.rgb || !o.depth_png || !o.segmentation || rec.images.empty()) continue;
     std::vector<std::int64_t> frames;
     for (const auto& image : rec.images) frames.push_back(image.frame_index);
-    engine::WriteContactSheet(
-        options_.root / info_[i].stream.name, frames,
-        static_cast<float>(info_[i].stream.intrinsics.near_m),
-        engine::CalcSegmentationPalette(world_.scene().classes), options_.root / "preview.png");
+    engine::WriteContactSheet(options_.root / info_[i].stream.name, frames,
+                              static_cast<float>(info_[i].stream.intrinsics.near_m),
+                              engine::CalcSegmentationPalette(world_.scene().classes),
+                              options_.root / "preview.png");
     return;
   }
 }

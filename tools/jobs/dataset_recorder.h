@@ -36,9 +36,9 @@ class DatasetRecorder {
   };
   /// A dataset camera as the manifest describes it.
   struct CameraInfo {
-    engine::ImageStream stream;      ///< name, intrinsics, rate, mount
+    engine::ImageStream stream;  ///< name, intrinsics, rate, mount
     std::string vehicle;
-    engine::DatasetOutputs outputs;  ///< the files it writes per frame
+    engine::DatasetOutputs outputs;   ///< the files it writes per frame
     engine::TartanAirSlot tartanair;  ///< its place in the TartanAir layout (outputs.tartanair)
     std::int64_t frames = 0;
   };

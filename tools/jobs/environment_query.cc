@@ -43,10 +43,10 @@ void EnvironmentQuery::Validate() const {
     const WorldMagneticModel& model = WorldMagneticModel::Wmm2025();
     const double end = model.epoch() + WorldMagneticModel::kValidityYears;
     if (!(date_decimal_year >= model.epoch() && date_decimal_year < end)) {
-      throw engine::InvalidField("date_decimal_year",
-                                 "must be in [" + engine::FormatNumber(model.epoch()) + ", " +
-                                     engine::FormatNumber(end) + ") for " + model.name() +
-                                     " (got " + engine::FormatNumber(date_decimal_year) + ")");
+      throw engine::InvalidField(
+          "date_decimal_year", "must be in [" + engine::FormatNumber(model.epoch()) + ", " +
+                                   engine::FormatNumber(end) + ") for " + model.name() + " (got " +
+                                   engine::FormatNumber(date_decimal_year) + ")");
     }
   } else {
     RequireRange("altitude_m", altitude_m, engine::ussa1976::kMinAltitude_m,
@@ -68,8 +68,9 @@ EnvironmentReport CalcEnvironmentAt(const EnvironmentQuery& q) {
     dipole = std::make_unique<engine::TiltedDipoleField>();
   }
   const engine::MagneticFieldModel& model =
-      dipole ? *dipole
-             : static_cast<const engine::MagneticFieldModel&>(engine::WorldMagneticModel::Wmm2025());
+      dipole
+          ? *dipole
+          : static_cast<const engine::MagneticFieldModel&>(engine::WorldMagneticModel::Wmm2025());
   r.field = engine::DescribeField(model.CalcField_nT(where, q.date_decimal_year));
   r.magnetic_model = model.name();
   return r;

@@ -10,9 +10,9 @@ namespace airis::tools {
 
 /// A point and date at which to evaluate the environment models (`airis env`, `airis.env_at`).
 struct EnvironmentQuery {
-  double latitude_deg = 47.641468;    ///< WGS84 geodetic latitude, -90 to 90
+  double latitude_deg = 47.641468;     ///< WGS84 geodetic latitude, -90 to 90
   double longitude_deg = -122.140165;  ///< east positive, -180 to 180
-  double altitude_m = 122.0;  ///< above the WGS84 ellipsoid, used as height above sea level
+  double altitude_m = 122.0;          ///< above the WGS84 ellipsoid, used as height above sea level
   double date_decimal_year = 2026.0;  ///< for the magnetic model
   engine::MagneticModelKind magnetic = engine::MagneticModelKind::kWmm;
 
@@ -24,10 +24,10 @@ struct EnvironmentQuery {
 
 /// Gravity, air and magnetic field at a point.
 struct EnvironmentReport {
-  double gravity_m_s2 = 0.0;            ///< inverse-square gravity at the altitude
-  engine::AtmosphereSample air;         ///< U.S. Standard Atmosphere 1976
-  engine::MagneticFieldSample field;    ///< NED field, declination, inclination, intensity
-  std::string magnetic_model;           ///< the model's name ("WMM2025", "tilted dipole")
+  double gravity_m_s2 = 0.0;          ///< inverse-square gravity at the altitude
+  engine::AtmosphereSample air;       ///< U.S. Standard Atmosphere 1976
+  engine::MagneticFieldSample field;  ///< NED field, declination, inclination, intensity
+  std::string magnetic_model;         ///< the model's name ("WMM2025", "tilted dipole")
 };
 
 /// Validates `query` and evaluates the models there.

@@ -13,8 +13,8 @@ namespace airis::tools {
 /// What `airis run` does: fly a mission and (with `out`) write its telemetry log.
 struct RunJobOptions {
   SceneSource scene;
-  std::string mission;  ///< mission file (YAML)
-  std::string out;      ///< telemetry folder (must be empty or absent); empty: no log
+  std::string mission;             ///< mission file (YAML)
+  std::string out;                 ///< telemetry folder (must be empty or absent); empty: no log
   std::optional<double> realtime;  ///< pace simulated time to wall time at this factor (> 0)
   engine::TimeNs until_ns = std::numeric_limits<engine::TimeNs>::max();  ///< stop early
   double truth_rate_hz = 100.0;  ///< ground-truth rows per simulated second

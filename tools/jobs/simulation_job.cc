@@ -42,9 +42,9 @@ std::size_t SimulationJob::MissionVehicle(const engine::Mission& mission) const 
   if (mission.vehicle.empty()) return 0;
   const int index = w.FindVehicle(mission.vehicle);
   if (index < 0) {
-    throw engine::ConfigError({mission.file, 0, 0}, "vehicle",
-                              "no vehicle '" + mission.vehicle + "' in the scene (it has " + names +
-                                  ")");
+    throw engine::ConfigError(
+        {mission.file, 0, 0}, "vehicle",
+        "no vehicle '" + mission.vehicle + "' in the scene (it has " + names + ")");
   }
   return static_cast<std::size_t>(index);
 }
@@ -71,8 +71,8 @@ MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
   // Slices of ticks, so that the progress line can be refreshed between them.
   while (state == engine::MissionRunner::State::kRunning &&
          sim.clock().now_ns() < flight.until_ns) {
-    const engine::TimeNs end = std::min(flight.until_ns,
-                                        sim.clock().now_ns() + flight.progress_every_ns);
+    const engine::TimeNs end =
+        std::min(flight.until_ns, sim.clock().now_ns() + flight.progress_every_ns);
     state = session.Run(end);
     if (!flight.progress || steps == 0) continue;
     JobProgress p;

@@ -2,8 +2,8 @@
 
 #include <chrono>
 #include <cstdint>
-#include <limits>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,13 +26,13 @@ struct SceneSource {
 
 /// Where a running job is (for progress lines). Fields a job does not track stay at their defaults.
 struct JobProgress {
-  int step = 0;             ///< mission step being flown, 1-based
-  int steps = 0;            ///< steps in the mission
-  std::string step_kind;    ///< "takeoff", "survey", ...
-  double simulated_s = 0;   ///< simulated time so far
-  double wall_s = 0;        ///< wall time since the job started
+  int step = 0;                                    ///< mission step being flown, 1-based
+  int steps = 0;                                   ///< steps in the mission
+  std::string step_kind;                           ///< "takeoff", "survey", ...
+  double simulated_s = 0;                          ///< simulated time so far
+  double wall_s = 0;                               ///< wall time since the job started
   engine::Vec3 position_W = engine::Vec3::Zero();  ///< the mission vehicle, world NED (m)
-  std::int64_t frames = 0;  ///< dataset frames written so far
+  std::int64_t frames = 0;                         ///< dataset frames written so far
   /// Wall seconds still to go, from the share of the mission's nominal duration flown so far; < 0
   /// while unknown (the first 2% and past the nominal end).
   double eta_s = -1;
@@ -40,13 +40,14 @@ struct JobProgress {
 
 /// How a mission flight ended.
 struct MissionOutcome {
-  engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;  ///< kRunning: --until
-  std::string failure;        ///< why it failed ("file:line: step 3 (goto): ...")
+  engine::MissionRunner::State state =
+      engine::MissionRunner::State::kRunning;  ///< kRunning: --until
+  std::string failure;                         ///< why it failed ("file:line: step 3 (goto): ...")
   int steps_done = 0;
   int steps = 0;
   double distance_flown_m = 0.0;
   double max_tracking_error_m = 0.0;
-  double simulated_s = 0.0;   ///< the clock at the end
+  double simulated_s = 0.0;  ///< the clock at the end
   bool succeeded() const { return state == engine::MissionRunner::State::kSucceeded; }
 };
 

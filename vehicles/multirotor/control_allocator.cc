@@ -11,7 +11,8 @@ namespace {
 
 using CommandVector = Eigen::Matrix<double, ControlAllocator::kMaxActuators, 1>;
 
-Eigen::Matrix<double, 4, Eigen::Dynamic> BuildEffectiveness(std::span<const ActuatorEffect> effects) {
+Eigen::Matrix<double, 4, Eigen::Dynamic> BuildEffectiveness(
+    std::span<const ActuatorEffect> effects) {
   Eigen::Matrix<double, 4, Eigen::Dynamic> B(4, static_cast<Eigen::Index>(effects.size()));
   for (std::size_t i = 0; i < effects.size(); ++i) {
     const auto c = static_cast<Eigen::Index>(i);
@@ -21,8 +22,10 @@ Eigen::Matrix<double, 4, Eigen::Dynamic> BuildEffectiveness(std::span<const Actu
   return B;
 }
 
-// Largest k in [0, 1] such that lo <= base + k * delta <= hi for the first n elements (base assumed inside).
-double MaxScaleWithin(const CommandVector& base, const CommandVector& delta, int n, double lo, double hi) {
+// Largest k in [0, 1] such that lo <= base + k * delta <= hi for the first n elements (base assumed
+// inside).
+double MaxScaleWithin(const CommandVector& base, const CommandVector& delta, int n, double lo,
+                      double hi) {
   double k = 1.0;
   for (int i = 0; i < n; ++i) {
     if (delta[i] > 1e-12) k = std::min(k, (hi - base[i]) / delta[i]);
@@ -36,7 +39,8 @@ double MaxScaleWithin(const CommandVector& base, const CommandVector& delta, int
 bool ControlAllocator::CanControl(std::span<const ActuatorEffect> effects) {
   if (effects.size() < 4 || effects.size() > static_cast<std::size_t>(kMaxActuators)) return false;
   const auto B = BuildEffectiveness(effects);
-  // Rank 4 <=> the Gram matrix B B^T is well conditioned (its eigenvalues are the squared singular values).
+  // Rank 4 <=> the Gram matrix B B^T is well conditioned (its eigenvalues are the squared singular
+  // values).
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(B * B.transpose());
   const Eigen::Vector4d& ev = eig.eigenvalues();  // ascending
   return ev[0] > 1e-18 * ev[3];
@@ -59,7 +63,8 @@ void ControlAllocator::Allocate(const WrenchSetpoint& setpoint, std::span<double
   CommandVector u_rp = pinv_.col(1) * setpoint.torque_B.x() + pinv_.col(2) * setpoint.torque_B.y();
   const CommandVector u_yaw = pinv_.col(3) * setpoint.torque_B.z();
 
-  // 1. Roll/pitch must fit in [0, 1] at some thrust: if their spread exceeds the range, scale them down.
+  // 1. Roll/pitch must fit in [0, 1] at some thrust: if their spread exceeds the range, scale them
+  // down.
   const int n = count_;
   const double spread = u_rp.head(n).maxCoeff() - u_rp.head(n).minCoeff();
   if (spread > 1.0) u_rp *= 1.0 / spread;

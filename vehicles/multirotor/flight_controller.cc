@@ -60,7 +60,8 @@ void FlightController::SetTarget(const engine::VehicleCommand& target) {
                                 target.mode == engine::CommandMode::kPosition ||
                                 target.mode == engine::CommandMode::kLand;
   if (!was_velocity_loop && is_velocity_loop) velocity_integral_.setZero();
-  if (target_.mode == engine::CommandMode::kDisarmed || target_.mode == engine::CommandMode::kMotors) {
+  if (target_.mode == engine::CommandMode::kDisarmed ||
+      target_.mode == engine::CommandMode::kMotors) {
     rate_integral_.setZero();
   }
   if (target.mode != engine::CommandMode::kDisarmed) landed_ = false;
@@ -91,17 +92,20 @@ Vec3 FlightController::CalcVelocitySetpoint(const engine::RigidBodyState& state)
 Vec3 FlightController::CalcAccelerationSetpoint(double dt_s, const Vec3& v_sp,
                                                 const engine::RigidBodyState& state) {
   const Vec3 error = v_sp - state.v_W;
-  const Vec3 a_free = config_.velocity_gain_1_s * error + velocity_integral_ + target_.acceleration_W;
+  const Vec3 a_free =
+      config_.velocity_gain_1_s * error + velocity_integral_ + target_.acceleration_W;
   Vec3 a_sp = a_free;
   const double h = a_sp.head<2>().norm();
   const bool horizontal_saturated = h > config_.max_horizontal_accel_m_s2;
   if (horizontal_saturated) a_sp.head<2>() *= config_.max_horizontal_accel_m_s2 / h;
-  a_sp.z() = std::clamp(a_sp.z(), -config_.max_vertical_accel_m_s2, config_.max_vertical_accel_m_s2);
+  a_sp.z() =
+      std::clamp(a_sp.z(), -config_.max_vertical_accel_m_s2, config_.max_vertical_accel_m_s2);
   const bool vertical_saturated = a_sp.z() != a_free.z();
-  // Anti-windup by conditional integration and integral separation: the integral exists to cancel steady
-  // disturbances (wind, thrust model error), so an axis integrates only while its acceleration is not at its
-  // limit and its velocity error is small; transients of large moves then neither charge it nor leave it to
-  // creep back. It acts from the next tick on and is bounded.
+  // Anti-windup by conditional integration and integral separation: the integral exists to cancel
+  // steady disturbances (wind, thrust model error), so an axis integrates only while its
+  // acceleration is not at its limit and its velocity error is small; transients of large moves
+  // then neither charge it nor leave it to creep back. It acts from the next tick on and is
+  // bounded.
   const double separation = config_.integral_separation_m_s;
   if (!horizontal_saturated && error.head<2>().norm() < separation) {
     velocity_integral_.head<2>() += config_.velocity_integral_gain_1_s2 * dt_s * error.head<2>();
@@ -116,7 +120,8 @@ Vec3 FlightController::CalcAccelerationSetpoint(double dt_s, const Vec3& v_sp,
   return a_sp;
 }
 
-Vec3 FlightController::CalcRateSetpoint(const Quat& q_sp, const engine::RigidBodyState& state) const {
+Vec3 FlightController::CalcRateSetpoint(const Quat& q_sp,
+                                        const engine::RigidBodyState& state) const {
   Quat q_err = state.q_WB.conjugate() * q_sp;  // rotation from current to desired, body axes
   if (q_err.w() < 0.0) q_err.coeffs() = -q_err.coeffs();
   const Vec3 e = engine::QuatLog(q_err);
@@ -128,7 +133,8 @@ Vec3 FlightController::CalcRateSetpoint(const Quat& q_sp, const engine::RigidBod
   return w_sp;
 }
 
-Vec3 FlightController::CalcTorque(double dt_s, const Vec3& w_sp, const engine::RigidBodyState& state) {
+Vec3 FlightController::CalcTorque(double dt_s, const Vec3& w_sp,
+                                  const engine::RigidBodyState& state) {
   const Vec3 error = w_sp - state.w_B;
   const Vec3 alpha = config_.rate_gain_1_s.cwiseProduct(error) + rate_integral_;
   rate_integral_ += dt_s * config_.rate_integral_gain_1_s2.cwiseProduct(error);
@@ -158,22 +164,26 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
   WrenchSetpoint wrench;
   Vec3 w_sp;
   if (target_.mode == engine::CommandMode::kRatesThrust) {
-    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n() * effect_scale;
+    wrench.thrust_n =
+        std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n() * effect_scale;
     w_sp = target_.rates_B;
   } else if (target_.mode == engine::CommandMode::kAttitudeThrust) {
-    wrench.thrust_n = std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n() * effect_scale;
+    wrench.thrust_n =
+        std::clamp(target_.thrust_fraction, 0.0, 1.0) * allocator_.max_thrust_n() * effect_scale;
     w_sp = CalcRateSetpoint(target_.attitude_WB.normalized(), state);
   } else {
     const Vec3 v_sp = CalcVelocitySetpoint(state);
     const Vec3 a_sp = CalcAccelerationSetpoint(dt_s, v_sp, state);
-    // Specific force the rotors must give: f = a - g (NED, g along +z); tilt-limited, always upward.
+    // Specific force the rotors must give: f = a - g (NED, g along +z); tilt-limited, always
+    // upward.
     Vec3 f = a_sp - Vec3(0.0, 0.0, gravity_m_s2);
     f.z() = std::min(f.z(), -0.1 * gravity_m_s2);
     const double max_horizontal = -f.z() * std::tan(max_tilt_rad_);
     const double h = f.head<2>().norm();
     if (h > max_horizontal) f.head<2>() *= max_horizontal / h;
     const Vec3 z_B = -f.normalized();  // desired body z (down) axis in the world
-    // Thrust along the current body up axis (so a vehicle still rotating does not overshoot in height).
+    // Thrust along the current body up axis (so a vehicle still rotating does not overshoot in
+    // height).
     const Vec3 up_now = -(state.q_WB * Vec3::UnitZ());
     wrench.thrust_n = std::max(0.0, vehicle_.mass_kg * f.dot(up_now));
     // Desired attitude: body z from the thrust vector, heading from the yaw setpoint.
@@ -197,7 +207,8 @@ void FlightController::Update(double dt_s, const engine::RigidBodyState& state, 
     }
   }
   wrench.torque_B = CalcTorque(dt_s, w_sp, state);
-  // The allocator knows the actuators at construction strength; ask it for the wrench they must give there.
+  // The allocator knows the actuators at construction strength; ask it for the wrench they must
+  // give there.
   wrench.thrust_n /= effect_scale;
   wrench.torque_B /= effect_scale;
   allocator_.Allocate(wrench, u);

@@ -39,13 +39,14 @@ Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
   commands_.assign(rotors_.size() + static_cast<std::size_t>(tilt_channels), 0.0);
   if (commands_.size() > static_cast<std::size_t>(engine::kMaxActuators) ||
       !ControlAllocator::CanControl(CalcActuatorEffects(kReferenceDensity_kg_m3))) {
-    throw engine::InvalidField("rotors", "the rotors cannot control thrust, roll, pitch and yaw "
-                                         "independently (or there are more than " +
-                                             std::to_string(engine::kMaxActuators) + " actuators)");
+    throw engine::InvalidField("rotors",
+                               "the rotors cannot control thrust, roll, pitch and yaw "
+                               "independently (or there are more than " +
+                                   std::to_string(engine::kMaxActuators) + " actuators)");
   }
   const auto effects = CalcActuatorEffects(kReferenceDensity_kg_m3);
-  controller_.emplace(config_.controller,
-                      VehicleParameters{body().mass_kg(), body().inertia_B()}, effects);
+  controller_.emplace(config_.controller, VehicleParameters{body().mass_kg(), body().inertia_B()},
+                      effects);
   allocated_tilt_rad_.assign(rotors_.size(), 0.0);
 }
 
@@ -54,8 +55,9 @@ std::vector<ActuatorEffect> Multirotor::CalcActuatorEffects(double air_density_k
   effects.reserve(rotors_.size());
   for (const Rotor& r : rotors_) {
     const Vec3 force = (r.thrust_per_density * air_density_kg_m3) * r.direction_B;
-    effects.push_back({force, r.position_B.cross(force) +
-                                  (r.torque_per_density_signed * air_density_kg_m3) * r.direction_B});
+    effects.push_back(
+        {force, r.position_B.cross(force) +
+                    (r.torque_per_density_signed * air_density_kg_m3) * r.direction_B});
   }
   return effects;
 }
@@ -82,7 +84,8 @@ void Multirotor::UpdateControl(const engine::ControlContext& context) {
     controller_->SetActuators(CalcActuatorEffects(kReferenceDensity_kg_m3));
     for (std::size_t i = 0; i < rotors_.size(); ++i) allocated_tilt_rad_[i] = rotors_[i].tilt_rad;
   }
-  // Air and gravity from the World's cached local model (the atmosphere is not evaluated again here).
+  // Air and gravity from the World's cached local model (the atmosphere is not evaluated again
+  // here).
   const std::span<double> motors(control_u_.data(), rotors_.size());
   controller_->Update(context.dt_s, state, context.gravity_m_s2,
                       context.air_density_kg_m3 / kReferenceDensity_kg_m3, motors);
@@ -105,7 +108,8 @@ void Multirotor::CheckCommands(std::span<const double> commands) const {
 
 void Multirotor::SetActuatorCommands(std::span<const double> commands) {
   CheckCommands(commands);
-  for (std::size_t i = 0; i < commands.size(); ++i) commands_[i] = std::clamp(commands[i], 0.0, 1.0);
+  for (std::size_t i = 0; i < commands.size(); ++i)
+    commands_[i] = std::clamp(commands[i], 0.0, 1.0);
 }
 
 void Multirotor::ResetActuators(std::span<const double> commands) {
@@ -180,12 +184,14 @@ double Multirotor::CalcMaxThrust_N(int i, double air_density_kg_m3) const {
 }
 
 double Multirotor::CalcMaxTorque_Nm(int i, double air_density_kg_m3) const {
-  return std::abs(rotors_[static_cast<std::size_t>(i)].torque_per_density_signed) * air_density_kg_m3;
+  return std::abs(rotors_[static_cast<std::size_t>(i)].torque_per_density_signed) *
+         air_density_kg_m3;
 }
 
 double Multirotor::CalcHoverCommand(double air_density_kg_m3, double gravity_m_s2) const {
   double lift = 0.0;
-  for (const Rotor& r : rotors_) lift += r.thrust_per_density * air_density_kg_m3 * -r.base_direction_B.z();
+  for (const Rotor& r : rotors_)
+    lift += r.thrust_per_density * air_density_kg_m3 * -r.base_direction_B.z();
   return body().mass_kg() * gravity_m_s2 / lift;
 }
 

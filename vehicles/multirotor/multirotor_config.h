@@ -10,28 +10,29 @@
 
 namespace airis::vehicles {
 
-/// The four rotors of the reference quad-x (parameters.md), in PX4's order: 0 front-right CCW, 1 rear-left
-/// CCW, 2 front-left CW, 3 rear-right CW; at (+-0.160867, +-0.160867, +0.025) m (arms of 0.2275 m at 45 deg,
-/// rotor plane 2.5 cm below the centre of mass).
+/// The four rotors of the reference quad-x (parameters.md), in PX4's order: 0 front-right CCW, 1
+/// rear-left CCW, 2 front-left CW, 3 rear-right CW; at (+-0.160867, +-0.160867, +0.025) m (arms of
+/// 0.2275 m at 45 deg, rotor plane 2.5 cm below the centre of mass).
 std::vector<RotorConfig> ReferenceQuadXRotors();
 
-/// Description of a multirotor airframe: a box body with motors at the vertices (paper 3.1). The defaults
-/// ARE the reference quadrotor of parameters.md (quad-x, 1 kg, box 0.18 x 0.11 x 0.04 m), so a preset file
-/// overrides only what differs.
+/// Description of a multirotor airframe: a box body with motors at the vertices (paper 3.1). The
+/// defaults ARE the reference quadrotor of parameters.md (quad-x, 1 kg, box 0.18 x 0.11 x 0.04 m),
+/// so a preset file overrides only what differs.
 struct MultirotorConfig {
-  double mass_kg = 1.0;                          ///< total, motors included
-  double motor_mass_kg = 0.055;                  ///< per rotor, for the computed inertia
-  Vec3 box_size_m = Vec3(0.180, 0.110, 0.040);   ///< body box [x, y, z] (drag, collision, inertia)
-  /// Principal moments [Ixx, Iyy, Izz] (kg m^2). When absent, the inertia is computed as the reference
-  /// implementation does: a solid box of mass_kg - rotors * motor_mass_kg plus a point mass per rotor.
+  double mass_kg = 1.0;                         ///< total, motors included
+  double motor_mass_kg = 0.055;                 ///< per rotor, for the computed inertia
+  Vec3 box_size_m = Vec3(0.180, 0.110, 0.040);  ///< body box [x, y, z] (drag, collision, inertia)
+  /// Principal moments [Ixx, Iyy, Izz] (kg m^2). When absent, the inertia is computed as the
+  /// reference implementation does: a solid box of mass_kg - rotors * motor_mass_kg plus a point
+  /// mass per rotor.
   std::optional<Vec3> inertia_kg_m2;
-  Vec3 inertia_products_kg_m2 = Vec3::Zero();    ///< [Ixy, Ixz, Iyz], used with inertia_kg_m2 only
-  double linear_drag_coefficient = 0.325;        ///< C_lin per face of the box
-  double angular_drag_coefficient = 0.325;       ///< drag coefficient of the spinning box's faces
-  double restitution = 0.55;                     ///< contact restitution
-  double friction = 0.5;                         ///< Coulomb friction coefficient
+  Vec3 inertia_products_kg_m2 = Vec3::Zero();  ///< [Ixy, Ixz, Iyz], used with inertia_kg_m2 only
+  double linear_drag_coefficient = 0.325;      ///< C_lin per face of the box
+  double angular_drag_coefficient = 0.325;     ///< drag coefficient of the spinning box's faces
+  double restitution = 0.55;                   ///< contact restitution
+  double friction = 0.5;                       ///< Coulomb friction coefficient
   std::vector<RotorConfig> rotors = ReferenceQuadXRotors();
-  FlightControllerConfig controller;             ///< gains and limits of the built-in flight controller
+  FlightControllerConfig controller;  ///< gains and limits of the built-in flight controller
 
   template <class V>
   void Visit(V& v) {
@@ -49,8 +50,8 @@ struct MultirotorConfig {
     v.Field("rotors", rotors, "the rotors (vertices)");
     v.Field("controller", controller, "built-in flight controller gains and limits");
   }
-  /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, no rotors, or motors heavier than
-  /// the vehicle.
+  /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, no rotors, or motors heavier
+  /// than the vehicle.
   void Validate() const;
 
   /// The rigid body: mass, inertia (given or computed), box, drag and material. Validates first.

@@ -4,8 +4,8 @@
 
 namespace airis::vehicles {
 
-/// Where a flight controller reads its vehicle's state. Ground truth by default; an estimator fed by the
-/// simulated sensors (context.sensors) implements the same interface to replace it.
+/// Where a flight controller reads its vehicle's state. Ground truth by default; an estimator fed
+/// by the simulated sensors (context.sensors) implements the same interface to replace it.
 class StateSource {
  public:
   virtual ~StateSource() = default;

@@ -30,8 +30,8 @@ class HoldStep final : public ActiveStep {
 };
 
 template <class Done>
-std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_s,
-                                     double timeout_s, Done done) {
+std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_s, double timeout_s,
+                                     Done done) {
   auto step = std::make_unique<HoldStep<Done>>(hold, std::move(done));
   step->nominal_s = nominal_s;
   step->timeout_s = timeout_s;
@@ -81,8 +81,7 @@ void GotoStep::Validate() const {
 
 Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame) const {
   if (position_ned_m) return *position_ned_m;
-  return frame.ToNed(
-      {DegToRad((*geodetic)[0]), DegToRad((*geodetic)[1]), (*geodetic)[2]});
+  return frame.ToNed({DegToRad((*geodetic)[0]), DegToRad((*geodetic)[1]), (*geodetic)[2]});
 }
 
 double GotoStep::EstimateDuration_s(StepPlan& plan) const {
@@ -120,10 +119,9 @@ double HoverStep::EstimateDuration_s(StepPlan&) const { return duration_s; }
 std::unique_ptr<ActiveStep> HoverStep::Start(const StepContext& c, const VehicleCommand&) const {
   // The position where the step began, not the previous step's target.
   const double duration = duration_s;
-  return MakeHold(HoldCommand(c.state->p_W, YawOf(*c.state)), duration, timeout_s,
-                  [duration](const StepContext& c, VehicleCommand*) {
-                    return c.elapsed_s >= duration;
-                  });
+  return MakeHold(
+      HoldCommand(c.state->p_W, YawOf(*c.state)), duration, timeout_s,
+      [duration](const StepContext& c, VehicleCommand*) { return c.elapsed_s >= duration; });
 }
 
 void YawStep::Validate() const {
@@ -139,11 +137,10 @@ std::unique_ptr<ActiveStep> YawStep::Start(const StepContext&, const VehicleComm
   VehicleCommand turn = hold;
   turn.yaw_rad = DegToRad(yaw_deg);
   const double yaw = turn.yaw_rad;
-  return MakeHold(turn, std::numbers::pi, timeout_s,
-                  [yaw](const StepContext& c, VehicleCommand*) {
-                    return std::abs(WrapPi(YawOf(*c.state) - yaw)) < kYawTolerance_rad &&
-                           std::abs(c.state->w_B.z()) < 0.1;
-                  });
+  return MakeHold(turn, std::numbers::pi, timeout_s, [yaw](const StepContext& c, VehicleCommand*) {
+    return std::abs(WrapPi(YawOf(*c.state) - yaw)) < kYawTolerance_rad &&
+           std::abs(c.state->w_B.z()) < 0.1;
+  });
 }
 
 void LandStep::Validate() const { RequireNonNegative("timeout_s", timeout_s); }

@@ -19,8 +19,8 @@ class FnStep final : public ActiveStep {
 };
 
 template <class Fn>
-std::unique_ptr<ActiveStep> MakeStep(const VehicleCommand& hold, double nominal_s,
-                                     double timeout_s, Fn fn) {
+std::unique_ptr<ActiveStep> MakeStep(const VehicleCommand& hold, double nominal_s, double timeout_s,
+                                     Fn fn) {
   auto step = std::make_unique<FnStep<Fn>>(std::move(fn));
   step->nominal_s = nominal_s;
   step->timeout_s = timeout_s;
@@ -40,11 +40,12 @@ class RandomPoses final : public ActiveStep {
     // Pose k is taken at k * dwell; the step ends one dwell after the last pose.
     while (index_ < r.count && context.elapsed_s >= index_ * r.dwell_s) {
       RigidBodyState pose;
-      for (int i = 0; i < 3; ++i) pose.p_W[i] = context.stream->Uniform(r.min_ned_m[i], r.max_ned_m[i]);
+      for (int i = 0; i < 3; ++i)
+        pose.p_W[i] = context.stream->Uniform(r.min_ned_m[i], r.max_ned_m[i]);
       const double tilt = DegToRad(r.max_tilt_deg);
-      pose.q_WB = QuatFromEuler({context.stream->Uniform(-tilt, tilt),
-                                 context.stream->Uniform(-tilt, tilt),
-                                 context.stream->Uniform(-std::numbers::pi, std::numbers::pi)});
+      pose.q_WB =
+          QuatFromEuler({context.stream->Uniform(-tilt, tilt), context.stream->Uniform(-tilt, tilt),
+                         context.stream->Uniform(-std::numbers::pi, std::numbers::pi)});
       context.host->HoldVehicleAt(pose, index_);
       hold_ = HoldCommand(pose.p_W, EulerFromQuat(pose.q_WB).yaw_rad);
       target_W = pose.p_W;

@@ -53,7 +53,7 @@ struct RandomPosesStep {
   Vec3 min_ned_m = Vec3(-10, -10, -20);
   Vec3 max_ned_m = Vec3(10, 10, -2);
   double max_tilt_deg = 15.0;  ///< roll and pitch drawn uniformly in +-this
-  double dwell_s = 0.1;  ///< simulated time spent at each pose (one camera frame per pose)
+  double dwell_s = 0.1;        ///< simulated time spent at each pose (one camera frame per pose)
   template <class V>
   void Visit(V& v) {
     v.Field("count", count, "number of poses");

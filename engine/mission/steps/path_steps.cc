@@ -87,8 +87,7 @@ class FollowPath final : public ActiveStep {
 
 class FollowOrbit final : public ActiveStep {
  public:
-  FollowOrbit(const OrbitStep& orbit, const Vec3& start_W, const Vec3& hold_W)
-      : orbit_(orbit) {
+  FollowOrbit(const OrbitStep& orbit, const Vec3& start_W, const Vec3& hold_W) : orbit_(orbit) {
     const Vec3 r = start_W - orbit.center_ned_m;
     phase_rad_ = r.head<2>().norm() > 1e-6 ? std::atan2(r.y(), r.x()) : 0.0;
     nominal_s = 2.0 * kPi * orbit.radius_m * orbit.turns / orbit.speed_m_s;
@@ -193,16 +192,14 @@ void SurveyStep::Validate() const {
 std::vector<Vec3> SurveyStep::CalcWaypoints_W(const Vec3& home_W) const {
   std::vector<Vec3> corners;
   for (const Eigen::Vector2d& c : polygon_ne_m) corners.emplace_back(c.x(), c.y(), 0.0);
-  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg),
-                                home_W.z() - altitude_m);
+  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg), home_W.z() - altitude_m);
 }
 
 double SurveyStep::EstimateDuration_s(StepPlan& plan) const {
   return PathLength(CalcWaypoints_W(plan.home_W), corner_radius_m, plan) / speed_m_s;
 }
 
-std::unique_ptr<ActiveStep> SurveyStep::Start(const StepContext& c,
-                                              const VehicleCommand&) const {
+std::unique_ptr<ActiveStep> SurveyStep::Start(const StepContext& c, const VehicleCommand&) const {
   return std::make_unique<FollowPath>(CalcWaypoints_W(c.home_W), c.state->p_W, corner_radius_m,
                                       speed_m_s, std::nullopt, timeout_s);
 }

@@ -51,8 +51,8 @@ struct SurveyStep {
   static constexpr bool kNeedsHost = false;
   std::vector<Eigen::Vector2d> polygon_ne_m;  ///< corners [north, east]; two = a rectangle
   double altitude_m = 30.0;                   ///< above the start point
-  double spacing_m = 20.0;          ///< distance between lines
-  double heading_deg = 0.0;         ///< direction of the lines (deg from north)
+  double spacing_m = 20.0;                    ///< distance between lines
+  double heading_deg = 0.0;                   ///< direction of the lines (deg from north)
   double speed_m_s = 6.0;
   double corner_radius_m = 3.0;
   double timeout_s = 0.0;

@@ -14,10 +14,10 @@
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "tests/fixtures/temp_dir.h"
 #include "tests/tools/cli/dataset_test_util.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
-#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {

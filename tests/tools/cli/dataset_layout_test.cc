@@ -16,10 +16,10 @@
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "tests/fixtures/temp_dir.h"
 #include "tests/tools/cli/dataset_test_util.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
-#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {
@@ -44,8 +44,8 @@ fs::path BallsScene(int seed = 11) {
   std::string objects;
   for (const auto& [name, p] : kBalls) {
     std::ostringstream o;
-    o << "  - {name: " << name << ", primitive: sphere, class: ball, position_ned_m: [" << p.x() << ", "
-      << p.y() << ", " << p.z() << "]}\n";
+    o << "  - {name: " << name << ", primitive: sphere, class: ball, position_ned_m: [" << p.x()
+      << ", " << p.y() << ", " << p.z() << "]}\n";
     objects += o.str();
   }
   return WriteTempFile("airis_balls_" + std::to_string(seed) + ".yaml",
@@ -118,9 +118,10 @@ TEST(DatasetLayoutTest, ManifestIntrinsicsAndPosesPutEachBallWhereItWasDrawn) {
   int balls_checked = 0;
   for (std::size_t r = 0; r < poses.rows.size(); ++r) {
     auto col = [&](const char* name) { return poses.Number(r, poses.Column(name)); };
-    const engine::Vec3 p_WC(col("position_ned_x_m"), col("position_ned_y_m"), col("position_ned_z_m"));
+    const engine::Vec3 p_WC(col("position_ned_x_m"), col("position_ned_y_m"),
+                            col("position_ned_z_m"));
     const engine::Quat q_WC(col("attitude_cam_to_ned_w"), col("attitude_cam_to_ned_x"),
-                     col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z"));
+                            col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z"));
     const std::string name = FrameName(poses.Integer(r, poses.Column("frame")));
     const auto ins =
         engine::DecodePng16(engine::ReadFileBytes(dir / "down/seg_instance" / (name + ".png")));
@@ -295,7 +296,8 @@ TEST(DatasetLayoutTest, TartanAirLayoutHoldsTheSameFramesInTartanAirConventions)
       const engine::Mat3 R_WT = engine::Quat(v[6], v[3], v[4], v[5]).toRotationMatrix();
       const engine::Mat3 R_WC =
           engine::Quat(col("attitude_cam_to_ned_w"), col("attitude_cam_to_ned_x"),
-                     col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z")).toRotationMatrix();
+                       col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z"))
+              .toRotationMatrix();
       EXPECT_LT((R_WT.col(0) - R_WC.col(2)).norm(), 1e-12) << tf;
       EXPECT_LT((R_WT.col(1) - R_WC.col(0)).norm(), 1e-12) << tf;
       EXPECT_LT((R_WT.col(2) - R_WC.col(1)).norm(), 1e-12) << tf;

@@ -1,6 +1,7 @@
 #pragma once
 
-// Runs `airis <args>` in-process through the same CLI11 setup as tools/main.cc, capturing its output.
+// Runs `airis <args>` in-process through the same CLI11 setup as tools/main.cc, capturing its
+// output.
 
 #include <gtest/gtest.h>
 

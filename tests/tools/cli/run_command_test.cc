@@ -1,4 +1,5 @@
-// `airis run` end to end: the example missions, determinism, failures. Runs from the repository root.
+// `airis run` end to end: the example missions, determinism, failures. Runs from the repository
+// root.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -6,9 +7,9 @@
 #include <sstream>
 #include <string>
 
+#include "tests/fixtures/temp_dir.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
-#include "tests/fixtures/temp_dir.h"
 
 namespace airis::tools {
 namespace {
@@ -42,7 +43,8 @@ class ExampleMissionTest : public ::testing::TestWithParam<std::pair<const char*
 
 TEST_P(ExampleMissionTest, FliesToTheEnd) {
   const auto [scene, mission] = GetParam();
-  const Result r = RunAiris(std::string("run scenes/") + scene + " --mission scenes/missions/" + mission);
+  const Result r =
+      RunAiris(std::string("run scenes/") + scene + " --mission scenes/missions/" + mission);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("mission succeeded"), std::string::npos) << r.out;
 }
@@ -58,7 +60,8 @@ INSTANTIATE_TEST_SUITE_P(Missions, ExampleMissionTest,
 
 TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
   const fs::path a = FreshDir("a"), b = FreshDir("b");
-  const std::string cmd = "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 15 --out ";
+  const std::string cmd =
+      "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 15 --out ";
   ASSERT_EQ(RunAiris(cmd + a.string()).exit_code, 0);
   ASSERT_EQ(RunAiris(cmd + b.string()).exit_code, 0);
   int files = 0;
@@ -76,7 +79,8 @@ TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
 
 TEST(RunCommandTest, AnotherSeedChangesTheSensorNoise) {
   const fs::path a = FreshDir("seed1"), b = FreshDir("seed2");
-  const std::string cmd = "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 2 --out ";
+  const std::string cmd =
+      "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 2 --out ";
   ASSERT_EQ(RunAiris(cmd + a.string() + " --seed 1").exit_code, 0);
   ASSERT_EQ(RunAiris(cmd + b.string() + " --seed 2").exit_code, 0);
   EXPECT_NE(ReadFile(a / "drone1.imu.csv"), ReadFile(b / "drone1.imu.csv"));
@@ -99,15 +103,18 @@ TEST(RunCommandTest, FlyingIntoABuildingFailsNamingTheStepAndTheBuilding) {
 }
 
 TEST(RunCommandTest, BadInputIsAClearErrorAndExitCodeTwo) {
-  const std::string no_such_vehicle = WriteFile("airis_vehicle.yaml", "vehicle: drone9\nsteps:\n  - land:\n");
+  const std::string no_such_vehicle =
+      WriteFile("airis_vehicle.yaml", "vehicle: drone9\nsteps:\n  - land:\n");
   Result r = RunAiris("run scenes/city.yaml --mission " + no_such_vehicle);
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("no vehicle 'drone9' in the scene (it has drone1)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no vehicle 'drone9' in the scene (it has drone1)"), std::string::npos)
+      << r.err;
 
   const fs::path busy = FreshDir("busy");
   fs::create_directories(busy);
   std::ofstream(busy / "keep.txt") << "data";
-  r = RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --out " + busy.string());
+  r = RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --out " +
+               busy.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("is not empty; nothing is overwritten"), std::string::npos) << r.err;
   EXPECT_EQ(ReadFile(busy / "keep.txt"), "data");

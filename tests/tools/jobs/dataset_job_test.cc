@@ -95,7 +95,8 @@ TEST(DatasetJobTest, MinObjectAreaBelowOneIsRefusedNamingTheOption) {
 TEST(RunJobTest, TheCommandsStreamHoldsTheSetpointsAndActuatorCommands) {
   RunJobOptions o;
   o.scene.path = airis::testing::WriteTempFile("small.yaml", kScene).string();
-  o.mission = airis::testing::WriteTempFile("takeoff.yaml", "steps: [{takeoff: {height_above_start_m: 5}}]\n")
+  o.mission = airis::testing::WriteTempFile("takeoff.yaml",
+                                            "steps: [{takeoff: {height_above_start_m: 5}}]\n")
                   .string();
   o.out = (airis::testing::TestTempDir() / "run").string();
   const RunJobResult r = RunMissionJob(o);

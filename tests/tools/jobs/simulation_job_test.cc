@@ -78,12 +78,12 @@ TEST(SimulationJobTest, OnGroundWithNothingBelowIsAnErrorNamingTheKey) {
 }
 
 TEST(SimulationJobTest, TheStartStateIsTheScenesAttitudeAndVelocity) {
-  const SimulationJob job(Text(
-      "vehicles:\n"
-      "  - name: d\n"
-      "    preset: quad_x\n"
-      "    start: {position_ned_m: [1, 2, -30], roll_deg: 10, pitch_deg: -5, yaw_deg: 90,\n"
-      "            velocity_ned_m_s: [3, 0, -1], angular_velocity_frd_rad_s: [0, 0, 0.5]}\n"));
+  const SimulationJob job(
+      Text("vehicles:\n"
+           "  - name: d\n"
+           "    preset: quad_x\n"
+           "    start: {position_ned_m: [1, 2, -30], roll_deg: 10, pitch_deg: -5, yaw_deg: 90,\n"
+           "            velocity_ned_m_s: [3, 0, -1], angular_velocity_frd_rad_s: [0, 0, 0.5]}\n"));
   const engine::RigidBodyState& s = job.world().vehicle(0).state();
   EXPECT_EQ(s.p_W, engine::Vec3(1, 2, -30));
   const engine::EulerAngles e = engine::EulerFromQuat(s.q_WB);
@@ -95,14 +95,16 @@ TEST(SimulationJobTest, TheStartStateIsTheScenesAttitudeAndVelocity) {
 }
 
 TEST(SimulationJobTest, ThePhysicsBlockSetsTheTickRateThatSensorsAreCheckedAgainst) {
-  const SimulationJob job(Text("physics: {rate_hz: 500}\n"
-                               "vehicles: [{name: d, preset: quad_x,\n"
-                               "            sensors: [{imu: {rate_hz: 250}}]}]\n"));
+  const SimulationJob job(
+      Text("physics: {rate_hz: 500}\n"
+           "vehicles: [{name: d, preset: quad_x,\n"
+           "            sensors: [{imu: {rate_hz: 250}}]}]\n"));
   EXPECT_EQ(job.simulation().clock().step_ns(), 2'000'000);
   try {
-    SimulationJob fast(Text("physics: {rate_hz: 500}\n"
-                            "vehicles: [{name: d, preset: quad_x,\n"
-                            "            sensors: [{imu: {rate_hz: 1000}}]}]\n"));
+    SimulationJob fast(
+        Text("physics: {rate_hz: 500}\n"
+             "vehicles: [{name: d, preset: quad_x,\n"
+             "            sensors: [{imu: {rate_hz: 1000}}]}]\n"));
     FAIL() << "an IMU faster than the 500 Hz physics was accepted";
   } catch (const engine::ConfigError& e) {
     const std::string what = e.what();
@@ -112,7 +114,8 @@ TEST(SimulationJobTest, ThePhysicsBlockSetsTheTickRateThatSensorsAreCheckedAgain
 }
 
 TEST(SimulationJobTest, AMissionNamingAnAbsentVehicleIsAnErrorListingTheScenesVehicles) {
-  const SimulationJob job(Text("vehicles: [{name: a, preset: quad_x}, {name: b, preset: hexa_x}]\n"));
+  const SimulationJob job(
+      Text("vehicles: [{name: a, preset: quad_x}, {name: b, preset: hexa_x}]\n"));
   engine::Mission m = scenes::ParseMission("vehicle: c\nsteps: [{wait: {}}]\n", "m.yaml");
   try {
     job.MissionVehicle(m);
