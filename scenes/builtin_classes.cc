@@ -6,9 +6,9 @@ std::vector<engine::SemanticClass> BuiltInClasses() {
   // Label colours: a qualitative palette in the spirit of Cityscapes' (road purple, vegetation
   // green...).
   return {
-      {1, "ground", Eigen::Vector3f(0.32f, 0.29f, 0.20f)},
-      {2, "road", Eigen::Vector3f(0.50f, 0.25f, 0.50f)},
-      {3, "sidewalk", Eigen::Vector3f(0.96f, 0.14f, 0.91f)},
+      {1, "ground", Eigen::Vector3f(0.32f, 0.29f, 0.20f), true},
+      {2, "road", Eigen::Vector3f(0.50f, 0.25f, 0.50f), true},
+      {3, "sidewalk", Eigen::Vector3f(0.96f, 0.14f, 0.91f), true},
       {4, "building", Eigen::Vector3f(0.27f, 0.27f, 0.27f)},
       {5, "tree", Eigen::Vector3f(0.42f, 0.56f, 0.14f)},
       {6, "vegetation", Eigen::Vector3f(0.60f, 0.98f, 0.60f)},
@@ -18,7 +18,7 @@ std::vector<engine::SemanticClass> BuiltInClasses() {
       {10, "lamp_post", Eigen::Vector3f(0.60f, 0.60f, 0.60f)},
       {11, "structure", Eigen::Vector3f(0.40f, 0.40f, 0.61f)},
       {12, "landing_pad", Eigen::Vector3f(1.00f, 0.50f, 0.00f)},
-      {13, "water", Eigen::Vector3f(0.10f, 0.40f, 0.90f)},
+      {13, "water", Eigen::Vector3f(0.10f, 0.40f, 0.90f), true},
   };
 }
 

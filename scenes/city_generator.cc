@@ -55,9 +55,11 @@ class CityBuilder {
     const Eigen::Vector2d used(nx * pitch.x() + c_.street_width_m,
                                ny * pitch.y() + c_.street_width_m);
     origin_ = c_.area.center_m - 0.5 * used;  // south-west corner of the first street
-    b_.ReserveObjects(static_cast<std::size_t>(nx * ny) * 40 + nx + ny + 2);
+    b_.ReserveObjects(static_cast<std::size_t>(nx * ny) * 40 + (nx + 1) * (ny + 2));
 
-    // Streets: one long slab per street line.
+    // Streets: one slab per north-south street line, and the east-west streets cut at the
+    // crossings into one slab per block, so that no two road surfaces overlap (coplanar overlaps
+    // make the instance image flicker between the two from frame to frame).
     for (int i = 0; i <= nx && ok_; ++i) {
       const double n = origin_.x() + i * pitch.x() + 0.5 * c_.street_width_m;
       Place(box_,
@@ -66,9 +68,12 @@ class CityBuilder {
     }
     for (int j = 0; j <= ny && ok_; ++j) {
       const double e = origin_.y() + j * pitch.y() + 0.5 * c_.street_width_m;
-      Place(box_,
-            Slab(origin_.x() + 0.5 * used.x(), e, used.x(), c_.street_width_m, kRoadThickness_m),
-            r_.road_class, "street_e" + std::to_string(j), asphalt_);
+      for (int i = 0; i < nx && ok_; ++i) {
+        const double n =
+            origin_.x() + i * pitch.x() + c_.street_width_m + 0.5 * c_.block_size_m.x();
+        Place(box_, Slab(n, e, c_.block_size_m.x(), c_.street_width_m, kRoadThickness_m),
+              r_.road_class, "street_e" + std::to_string(j) + "_" + std::to_string(i), asphalt_);
+      }
     }
     for (int i = 0; i < nx && ok_; ++i) {
       for (int j = 0; j < ny && ok_; ++j) {

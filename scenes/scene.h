@@ -54,8 +54,10 @@ struct GeneratedSummary {
 /// ids in 1..65535, and no vehicle starting inside an object.
 struct Scene {
   std::string name;
-  std::string path;                ///< the scene file as given
-  std::vector<std::string> files;  ///< every file read: the scene, its includes
+  std::string path;  ///< the scene file as given
+  /// Every file read: the scene, its includes, then the mesh and texture files they name (in the
+  /// order of first use). A dataset's manifest hashes their content (ContentHash).
+  std::vector<std::string> files;
   std::uint64_t seed = 1;
   engine::GeodeticPosition origin;  ///< of the world NED frame
   engine::EnvironmentConfig environment;

@@ -95,6 +95,7 @@ void GroundConfig::Validate() const {
 
 void ClassConfig::Validate() const {
   Require(!name.empty(), "name", "every class needs a name");
+  engine::RequireName("name", name);
   RequireInRange("id", id, 0, 255);
   if (color) RequireColor("color", *color);
 }
@@ -107,6 +108,7 @@ void RepeatConfig::Validate() const {
 }
 
 void ObjectConfig::Validate() const {
+  if (!name.empty()) engine::RequireName("name", name);
   const bool has_mesh = !mesh.empty();
   const bool has_primitive = primitive != engine::Primitive::kNone;
   Require(has_mesh || has_primitive, "mesh", "give a mesh file or a primitive");

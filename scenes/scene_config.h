@@ -138,12 +138,16 @@ struct ClassConfig {
   std::string name;
   int id = 0;  ///< 1..255; 0 = keep the built-in id, or the next free one for a new class
   std::optional<Eigen::Vector3d> color;
+  std::optional<bool> stuff;
 
   template <class V>
   void Visit(V& v) {
     v.Field("name", name, "class name used by objects' `class`");
     v.Field("id", id, "label value 1..255 in segmentation images; 0 = built-in or next free");
     v.Field("color", color, "colour in colourised label images, linear RGB 0..1");
+    v.Field("stuff", stuff,
+            "true: amorphous (ground, road), kept out of COCO instance annotations; default: "
+            "built-in classes as listed, new ones false");
   }
   void Validate() const;
 };

@@ -108,6 +108,7 @@ std::string ResolveRelative(const std::string& base_file, const std::string& rel
 
 void VehicleEntryConfig::Validate() const {
   engine::Require(!name.empty(), "name", "every vehicle needs a name");
+  engine::RequireName("name", name);
   engine::Require(!preset.empty(), "preset", "every vehicle needs a preset");
   engine::Require(!overrides.IsDefined() || overrides.IsNull() || overrides.IsMap(), "overrides",
                   "expected a map of preset keys");

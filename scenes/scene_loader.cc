@@ -1,5 +1,6 @@
 // LoadScene: a SceneDocument (scene_file.h) turned into a Scene (scene.h): classes, ground,
 // objects, meshes through assimp, generators, vehicles, then the whole-scene checks.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -36,6 +37,9 @@ engine::Material ToMaterial(const MaterialConfig& c, const std::string& texture_
   return m;
 }
 
+// Folders of a dataset that no camera may be named after (docs/dataset-format.md).
+constexpr const char* kReservedStreamNames[] = {"tartanair", "shards", "slurm"};
+
 class SceneAssembler {
  public:
   SceneAssembler(SceneDocument doc, const SceneLoadOptions& options)
@@ -67,6 +71,7 @@ class SceneAssembler {
     for (const auto& v : doc_.vehicles)
       s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
     s.static_scene = builder_.Finish();
+    s.files.insert(s.files.end(), inputs_.begin(), inputs_.end());
     return s;
   }
 
@@ -74,7 +79,9 @@ class SceneAssembler {
   void DefineClass(const Sourced<ClassConfig>& c) {
     const Eigen::Vector3f color =
         c.config.color ? Eigen::Vector3f(c.config.color->cast<float>()) : Eigen::Vector3f::Zero();
-    if (builder_.DefineClass(c.config.name, c.config.id, c.config.color ? &color : nullptr)) return;
+    const bool* stuff = c.config.stuff ? &*c.config.stuff : nullptr;
+    if (builder_.DefineClass(c.config.name, c.config.id, c.config.color ? &color : nullptr, stuff))
+      return;
     for (const auto& known : builder_.scene().classes) {
       if (known.id == c.config.id) {
         c.Fail("id",
@@ -124,6 +131,7 @@ class SceneAssembler {
     if (texture.empty()) return "";
     const std::string resolved = ResolveRelative(entry.file->path, texture);
     if (!fs::is_regular_file(resolved)) entry.Fail(key, "texture file not found: " + resolved);
+    NoteInput(resolved);
     return fs::absolute(resolved).string();
   }
 
@@ -140,6 +148,10 @@ class SceneAssembler {
       file = LoadMeshFile(resolved, axes);
     } catch (const MeshLoadError& e) {
       entry.Fail(key, "cannot load mesh " + resolved + ": " + e.what());
+    }
+    NoteInput(resolved);
+    for (const auto& m : file.materials) {
+      if (!m.texture_path.empty()) NoteInput(m.texture_path);
     }
     engine::Model model;
     model.name = resolved;
@@ -177,7 +189,7 @@ class SceneAssembler {
     std::string base = c.name;
     if (!c.mesh.empty()) {
       model = MeshModel(entry, "mesh", c.mesh, c.mesh_axes);
-      if (base.empty()) base = fs::path(c.mesh).stem().string();
+      if (base.empty()) base = engine::SanitizeName(fs::path(c.mesh).stem().string());
     } else {
       model = builder_.PrimitiveModel(c.primitive);
       if (base.empty()) base = std::string(engine::ToString(c.primitive));
@@ -292,6 +304,36 @@ class SceneAssembler {
         }
       }
       v.sensors.push_back({e.name, e.spec});
+      // Image streams become dataset folders: their names are unique in the scene and are none
+      // of the dataset's own folders.
+      for (const std::string& stream : e.spec->ImageStreamNames(e.name)) {
+        const std::string key = "sensors[" + std::to_string(i) + "].name";
+        for (const char* reserved : kReservedStreamNames) {
+          if (stream == reserved) {
+            entry.Fail(key, "camera '" + stream + "' would share its folder with the dataset's '" +
+                                reserved + "/' (name it otherwise)");
+          }
+        }
+        for (const auto& other : earlier) {
+          for (const auto& s : other.sensors) {
+            for (const std::string& taken : s.spec->ImageStreamNames(s.name)) {
+              if (taken == stream) {
+                entry.Fail(key, "camera '" + stream + "' is also a camera of vehicle '" +
+                                    other.name + "': dataset cameras need unique names");
+              }
+            }
+          }
+        }
+        for (const auto& s : v.sensors) {
+          if (&s == &v.sensors.back()) break;
+          for (const std::string& taken : s.spec->ImageStreamNames(s.name)) {
+            if (taken == stream) {
+              entry.Fail(key, "camera '" + stream + "' is also the name of an image of sensor '" +
+                                  s.name + "' on vehicle '" + c.name + "'");
+            }
+          }
+        }
+      }
     }
     if (has_ground && v.start.p_W.z() > 0.0) {
       entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts below the ground (z = " +
@@ -339,8 +381,14 @@ class SceneAssembler {
                       entry.PathOf("overrides"));
   }
 
+  /// Records a mesh or texture file the scene reads (once, in the order of first use).
+  void NoteInput(const std::string& path) const {
+    if (std::find(inputs_.begin(), inputs_.end(), path) == inputs_.end()) inputs_.push_back(path);
+  }
+
   SceneDocument doc_;
   SceneLoadOptions options_;
+  mutable std::vector<std::string> inputs_;  // mesh and texture files, for Scene::files
   engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
   std::uint32_t ground_instance_ = engine::kNoInstance;

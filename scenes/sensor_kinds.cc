@@ -52,6 +52,11 @@ void SensorEntry::ReadFromYaml(const YamlReader& reader, const YAML::Node& node,
     const YAML::Mark key_mark = item.first.Mark();
     if (key == "name") {
       reader.Read(item.second, yaml_detail::JoinKey(key_path, "name"), name);
+      try {
+        engine::RequireName("name", name);
+      } catch (const engine::InvalidField& e) {
+        reader.Fail(key_mark, yaml_detail::JoinKey(key_path, "name"), e.problem());
+      }
       continue;
     }
     const SensorKind* kind = nullptr;

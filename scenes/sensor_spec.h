@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
 #include "engine/core/random.h"
 #include "engine/render/render_scene.h"
@@ -34,6 +35,9 @@ class SensorSpec {
   /// The engine sensor named `name`. Throws InvalidField on a config its class refuses.
   virtual std::unique_ptr<engine::Sensor> Build(const std::string& name,
                                                 SensorBuildContext& context) const = 0;
+  /// The names of the image streams a sensor named `name` of this kind makes (datasets write a
+  /// folder per stream); empty for sensors without images.
+  virtual std::vector<std::string> ImageStreamNames(const std::string& name) const = 0;
 };
 
 /// The SensorSpec of config `Config` built as `SensorT`: constructed from (name, config, stream),
@@ -56,6 +60,13 @@ class SensorSpecOf final : public SensorSpec {
       return std::make_unique<SensorT>(name, config_, context.stream);
     } else {
       return std::make_unique<SensorT>(name, config_, context.render_scene());
+    }
+  }
+  std::vector<std::string> ImageStreamNames(const std::string& name) const override {
+    if constexpr (requires { SensorT::StreamNames(name); }) {
+      return SensorT::StreamNames(name);
+    } else {
+      return {};
     }
   }
 

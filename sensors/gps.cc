@@ -79,6 +79,10 @@ double Gps::CalcEpv_m(TimeNs t_ns) const {
 
 std::span<const std::string> Gps::columns() const { return kColumns; }
 
+bool Gps::IsDoubleColumn(std::size_t column) const {
+  return column == 1 || column == 2 || column == 3 || column == 8;
+}
+
 void Gps::CopyLatestRow(std::span<double> out) const {
   AIRIS_DEMAND(out.size() == std::size(kColumns));
   out[0] = static_cast<double>(latest_.fix_type);

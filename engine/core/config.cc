@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 
 namespace airis::engine {
 
@@ -18,6 +19,48 @@ void RequireFinite(std::string_view field, double value) {
     throw InvalidField(std::string(field),
                        "must be a finite number (got " + FormatNumber(value) + ")");
   }
+}
+
+namespace {
+bool IsNameChar(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-';
+}
+}  // namespace
+
+bool IsValidName(std::string_view name) {
+  if (name.empty() || name.size() > kMaxNameLength) return false;
+  for (char c : name) {
+    if (!IsNameChar(c)) return false;
+  }
+  return true;
+}
+
+void RequireName(std::string_view field, std::string_view name) {
+  if (IsValidName(name)) return;
+  std::string shown(name.substr(0, 80));
+  if (name.size() > 80) shown += "...";
+  // Control characters and invalid UTF-8 stay unreadable in a message: show them escaped.
+  std::string printable;
+  for (unsigned char c : shown) {
+    if (c >= 0x20 && c < 0x7f) {
+      printable += static_cast<char>(c);
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "\\x%02x", c);
+      printable += hex;
+    }
+  }
+  throw InvalidField(std::string(field),
+                     "must be a name of 1 to " + std::to_string(kMaxNameLength) +
+                         " letters, digits, '_' or '-' (it names files and folders; got '" +
+                         printable + "')");
+}
+
+std::string SanitizeName(std::string_view name) {
+  std::string out;
+  for (char c : name.substr(0, kMaxNameLength)) out += IsNameChar(c) ? c : '_';
+  return out.empty() ? "_" : out;
 }
 
 void RequireFinite(std::string_view field, std::span<const double> components) {

@@ -81,6 +81,15 @@ void RequirePositive(std::string_view field, double value);     ///< finite and 
 void RequireNonNegative(std::string_view field, double value);  ///< finite and >= 0
 void RequireInRange(std::string_view field, double value, double lo, double hi);  ///< lo <= v <= hi
 void Require(bool condition, std::string_view field, std::string_view problem);
+/// Names of things that become file and folder names (vehicles, sensors, cameras, classes,
+/// objects): 1 to kMaxNameLength letters, digits, '_' or '-'.
+inline constexpr std::size_t kMaxNameLength = 64;
+bool IsValidName(std::string_view name);
+/// Throws InvalidField naming `field` unless IsValidName(name).
+void RequireName(std::string_view field, std::string_view name);
+/// `name` with every character that IsValidName refuses replaced by '_' and cut to
+/// kMaxNameLength ("_" when empty): a default name made from a file name.
+std::string SanitizeName(std::string_view name);
 /// Every component finite; the message names it as `field[i]`.
 void RequireFinite(std::string_view field, std::span<const double> components);
 template <int N>

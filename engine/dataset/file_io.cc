@@ -8,6 +8,8 @@
 #include <cstring>
 #include <fstream>
 
+#include "engine/dataset/sha256.h"
+
 namespace airis::engine {
 namespace {
 
@@ -55,6 +57,26 @@ std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) FailIo("open", path, errno);
   return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+std::filesystem::path PathUnder(const std::filesystem::path& root,
+                                const std::filesystem::path& relative) {
+  bool ok = !relative.empty() && relative.is_relative();
+  for (const auto& part : relative) {
+    const std::string p = part.string();
+    ok = ok && !p.empty() && p != "." && p != "..";
+  }
+  if (!ok) {
+    throw DatasetIoError("refusing to write '" + relative.string() + "': it is not a path inside " +
+                         root.string());
+  }
+  return root / relative;
+}
+
+std::string CalcContentHash(std::span<const std::string> files) {
+  std::string hashes;
+  for (const std::string& f : files) hashes += Sha256Hex(ReadFileBytes(f)) + "\n";
+  return Sha256Hex(hashes);
 }
 
 namespace {

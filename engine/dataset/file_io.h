@@ -26,6 +26,17 @@ void WriteFileAtomically(const std::filesystem::path& path, const std::string& t
 /// Reads a whole file. Throws DatasetIoError.
 std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path);
 
+/// `root / relative`, checked to stay inside `root`: `relative` must be relative, and none of its
+/// parts empty, "." or "..". Throws DatasetIoError naming both otherwise (output paths are built
+/// only from validated names; this is the last line of defence).
+std::filesystem::path PathUnder(const std::filesystem::path& root,
+                                const std::filesystem::path& relative);
+
+/// SHA-256 of the content of `files` in order (hex): the hash of the concatenated hex SHA-256s of
+/// the files, one per line. Paths do not enter it, so the same files give the same hash on every
+/// machine. Throws DatasetIoError when a file cannot be read.
+std::string CalcContentHash(std::span<const std::string> files);
+
 /// A NumPy .npy (format 1.0) file of a float32 image: shape (height, width) or (height, width,
 /// channels), little-endian '<f4', C order.
 std::vector<std::uint8_t> EncodeNpy(const Image<float>& image);

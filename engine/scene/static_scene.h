@@ -24,6 +24,9 @@ struct SemanticClass {
   std::uint8_t id = kNoClass;
   std::string name;
   Eigen::Vector3f color_rgb = Eigen::Vector3f::Ones();  ///< linear [0, 1]
+  /// "Stuff" (ground, road, sidewalk, water: amorphous, not counted) rather than a "thing": kept in
+  /// the label images, left out of COCO instance annotations.
+  bool stuff = false;
 };
 
 /// Surface appearance for rendering and contact response.

@@ -71,8 +71,8 @@ std::uint32_t StaticSceneBuilder::PrimitiveModel(Primitive primitive) {
   return static_cast<std::uint32_t>(primitive_model_[k]);
 }
 
-bool StaticSceneBuilder::DefineClass(const std::string& name, int id,
-                                     const Eigen::Vector3f* color) {
+bool StaticSceneBuilder::DefineClass(const std::string& name, int id, const Eigen::Vector3f* color,
+                                     const bool* stuff) {
   SemanticClass* existing = nullptr;
   for (auto& c : scene_.classes) {
     if (c.name == name) existing = &c;
@@ -85,6 +85,7 @@ bool StaticSceneBuilder::DefineClass(const std::string& name, int id,
   if (existing) {
     if (id != 0) existing->id = static_cast<std::uint8_t>(id);
     if (color) existing->color_rgb = *color;
+    if (stuff) existing->stuff = *stuff;
     return true;
   }
   if (id == 0) {
@@ -104,7 +105,7 @@ bool StaticSceneBuilder::DefineClass(const std::string& name, int id,
       rgb[ch] = std::clamp(std::abs(x - 3.0f) - 1.0f, 0.0f, 1.0f) * 0.8f + 0.1f;
     }
   }
-  scene_.classes.push_back({static_cast<std::uint8_t>(id), name, rgb});
+  scene_.classes.push_back({static_cast<std::uint8_t>(id), name, rgb, stuff && *stuff});
   return true;
 }
 

@@ -30,9 +30,11 @@ class StaticSceneBuilder {
   /// Index of the model made of the single unit primitive with the default material (shared).
   std::uint32_t PrimitiveModel(Primitive primitive);
 
-  /// Adds or recolours a class. `id` 0 keeps an existing class's id or takes the next free one.
-  /// Returns false when `id` is taken by another class or no id is left.
-  bool DefineClass(const std::string& name, int id, const Eigen::Vector3f* color);
+  /// Adds or recolours a class. `id` 0 keeps an existing class's id or takes the next free one;
+  /// `stuff` (when given) marks it stuff or thing. Returns false when `id` is taken by another
+  /// class or no id is left.
+  bool DefineClass(const std::string& name, int id, const Eigen::Vector3f* color,
+                   const bool* stuff = nullptr);
   /// Id of class `name`, or 0 when unknown.
   std::uint8_t ClassId(const std::string& name) const;
   /// The class names, for "expected one of" messages.

@@ -47,6 +47,12 @@ class Sensor {
   virtual std::span<const std::string> columns() const = 0;
   /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
   virtual void CopyLatestRow(std::span<double> out) const = 0;
+  /// True for a column that needs double precision in logs (a GPS latitude); the others are
+  /// readings whose noise float32 resolves (logs write them as float32).
+  virtual bool IsDoubleColumn(std::size_t column) const {
+    (void)column;
+    return false;
+  }
 
   /// This sensor as an image sensor, or null when it produces no images.
   virtual ImageSensor* image() { return nullptr; }

@@ -25,6 +25,9 @@ class CameraSensor : public engine::ImageSensor {
   std::span<const std::string> columns() const override;
   void CopyLatestRow(std::span<double> out) const override;
 
+  /// The names of the streams a camera named `name` makes: {name}.
+  static std::vector<std::string> StreamNames(const std::string& name) { return {name}; }
+
   std::span<const engine::ImageStream> streams() const override { return {&stream_, 1}; }
   const engine::CameraFrame& latest(std::size_t index) const override;
   engine::RendererInfo renderer() const override;

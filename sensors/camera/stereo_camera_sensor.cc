@@ -19,10 +19,10 @@ StereoCameraSensor::StereoCameraSensor(std::string name, const StereoCameraConfi
       config_(config),
       scene_(std::move(scene)),
       renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs) {
+  const std::vector<std::string> names = StreamNames(this->name());
   for (std::size_t i = 0; i < 2; ++i) {
     const std::string side = i == 0 ? "left" : "right";
-    streams_[i] =
-        MakeImageStream(this->name() + "_" + side, config_.camera, renderer_.intrinsics());
+    streams_[i] = MakeImageStream(names[i], config_.camera, renderer_.intrinsics());
     streams_[i].rig = this->name();
     streams_[i].side = side;
     streams_[i].offset_x_m = i == 0 ? 0.0 : config_.baseline_m;

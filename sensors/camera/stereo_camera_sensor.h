@@ -23,6 +23,11 @@ class StereoCameraSensor : public engine::ImageSensor {
   std::span<const std::string> columns() const override;
   void CopyLatestRow(std::span<double> out) const override;
 
+  /// The names of the streams a pair named `name` makes: {name_left, name_right}.
+  static std::vector<std::string> StreamNames(const std::string& name) {
+    return {name + "_left", name + "_right"};
+  }
+
   std::span<const engine::ImageStream> streams() const override { return streams_; }
   const engine::CameraFrame& latest(std::size_t index) const override;
   engine::RendererInfo renderer() const override;

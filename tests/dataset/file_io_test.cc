@@ -53,14 +53,33 @@ TEST(FileIoTest, NpyRoundTripsWithAlignedHeader) {
   EXPECT_EQ(back.pixels, img.pixels);
 }
 
-TEST(ImageEncodingTest, DepthPngIsMillimetresWithZeroForNoReturn) {
-  EXPECT_EQ(DepthToMillimetres(1.25f), 1250);
-  EXPECT_EQ(DepthToMillimetres(65.535f), 65535);
-  EXPECT_EQ(DepthToMillimetres(65.6f), 0);  // beyond 16 bits: no return, never a wrong value
-  EXPECT_EQ(DepthToMillimetres(kSkyDepthM), 0);
-  EXPECT_EQ(DepthToMillimetres(std::nanf("")), 0);
+TEST(ImageEncodingTest, DepthUnitIsAMillimetreUntilTheFarPlaneNeedsMore) {
+  EXPECT_EQ(ChooseDepthUnit_m(65.535), 0.001);
+  EXPECT_EQ(ChooseDepthUnit_m(100.0), 0.002);
+  EXPECT_EQ(ChooseDepthUnit_m(1500.0), 0.05);  // the README demo's camera
+  EXPECT_EQ(ChooseDepthUnit_m(65535.0), 1.0);
+  EXPECT_EQ(ChooseDepthUnit_m(1e9), 10.0);  // the coarsest unit; farther depths are clipped
+  for (double far_m : {1.0, 65.6, 300.0, 1500.0, 20000.0}) {
+    EXPECT_GE(65535.0 * ChooseDepthUnit_m(far_m), far_m) << far_m;
+  }
+}
+
+TEST(ImageEncodingTest, DepthPngCountsInItsUnitWithZeroForNoReturn) {
+  EXPECT_EQ(EncodeDepth(1.25f, 0.001), 1250);
+  EXPECT_EQ(EncodeDepth(65.535f, 0.001), 65535);
+  EXPECT_EQ(EncodeDepth(65.6f, 0.001), 0);  // beyond 16 bits: no return, never a wrong value
+  EXPECT_EQ(EncodeDepth(1499.0f, 0.05), 29980);
+  EXPECT_EQ(EncodeDepth(kSkyDepthM, 0.05), 0);
+  EXPECT_EQ(EncodeDepth(std::nanf(""), 0.001), 0);
+  Image<float> far;
+  far.Resize(3, 1, 1);
+  far.pixels = {10.0f, 70.0f, kSkyDepthM};
+  std::int64_t clipped = 0;
+  const Image<std::uint16_t> counts = DecodePng16(EncodeDepthPng(far, 0.001, &clipped));
+  EXPECT_EQ(counts.pixels, (std::vector<std::uint16_t>{10000, 0, 0}));
+  EXPECT_EQ(clipped, 1);  // 70 m is beyond 65.535 m; the sky is no depth at all
   const auto frame = testing::MakeFrame(40, 30, 7.3216f);
-  const Image<std::uint16_t> mm = DecodePng16(EncodeDepthMmPng(frame->depth_planar_m));
+  const Image<std::uint16_t> mm = DecodePng16(EncodeDepthPng(frame->depth_planar_m, 0.001));
   for (int v = 0; v < 30; ++v) {
     for (int u = 0; u < 40; ++u) {
       const float d = frame->depth_planar_m.at(u, v);
