@@ -103,7 +103,7 @@ std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint
   std::vector<InstanceAnnotation> out;
   for (std::uint16_t id : present) {
     Accumulator& a = acc[static_cast<std::size_t>(slot[id])];
-    if (a.area < rules.min_area_px) continue;
+    if (a.area < rules.min_area_px || rules.stuff[a.class_id]) continue;
     if (a.run_end < total) a.counts.push_back(total - a.run_end);
     InstanceAnnotation ann;
     ann.instance_id = id;

@@ -23,6 +23,8 @@ struct InstanceAnnotation {
 struct AnnotationRules {
   std::int64_t min_area_px =
       16;  ///< instances with fewer visible pixels are left out (too small to learn)
+  /// Class ids whose instances get no annotation (stuff: ground, road, ...; SemanticClass::stuff).
+  std::array<bool, 256> stuff{};
 };
 
 /// The COCO instance annotations of one frame, computed exactly from its instance map in one pass:

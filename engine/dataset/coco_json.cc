@@ -19,7 +19,8 @@ nlohmann::json BuildCocoJson(
   }
   nlohmann::json& cats = doc["categories"] = nlohmann::json::array();
   for (const auto& c : categories)
-    cats.push_back({{"id", c.id}, {"name", c.name}, {"supercategory", "scene"}});
+    cats.push_back(
+        {{"id", c.id}, {"name", c.name}, {"supercategory", "scene"}, {"isthing", c.stuff ? 0 : 1}});
   nlohmann::json& anns = doc["annotations"] = nlohmann::json::array();
   std::int64_t next_id = 1;
   for (const auto& [index, list] : annotations) {

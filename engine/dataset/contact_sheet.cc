@@ -34,7 +34,7 @@ void Blit(const Image<std::uint8_t>& src, int step, Image<std::uint8_t>& dst, in
 }  // namespace
 
 void WriteContactSheet(const std::filesystem::path& camera_dir,
-                       std::span<const std::int64_t> frames, float near_m,
+                       std::span<const std::int64_t> frames, float near_m, double depth_unit_m,
                        const SegmentationPalette& palette, const std::filesystem::path& out_png) {
   AIRIS_DEMAND(!frames.empty());
   const int rows = static_cast<int>(std::min<std::size_t>(4, frames.size()));
@@ -55,12 +55,14 @@ void WriteContactSheet(const std::filesystem::path& camera_dir,
     Image<float> depth;
     depth.Resize(mm.width, mm.height, 1);
     for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
-      depth.pixels[p] = mm.pixels[p] == 0 ? kSkyDepthM : mm.pixels[p] * 1e-3f;
+      depth.pixels[p] =
+          mm.pixels[p] == 0 ? kSkyDepthM : static_cast<float>(mm.pixels[p] * depth_unit_m);
     }
     const auto cls = DecodePng8(ReadFileBytes(FramePath(camera_dir, "seg_class", index)));
     const auto ins = DecodePng16(ReadFileBytes(FramePath(camera_dir, "seg_instance", index)));
     Blit(rgba, step, sheet, 0, r * ph);
-    Blit(ColorizeDepth(depth, near_m, 65.535f), step, sheet, pw, r * ph);
+    Blit(ColorizeDepth(depth, near_m, static_cast<float>(65535.0 * depth_unit_m)), step, sheet, pw,
+         r * ph);
     Blit(ColorizeSegmentation(cls, ins, palette), step, sheet, 2 * pw, r * ph);
   }
   WriteFileAtomically(out_png, EncodeRgbPng(sheet));

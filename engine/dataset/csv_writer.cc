@@ -46,6 +46,19 @@ CsvWriter& CsvWriter::Add(double value) {
   return *this;
 }
 
+CsvWriter& CsvWriter::AddFloat(double value) {
+  Separator();
+  const float f = static_cast<float>(value);
+  if (std::isnan(f)) {
+    line_ += "nan";
+  } else {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof(buf), f);
+    line_.append(buf, r.ptr);
+  }
+  return *this;
+}
+
 CsvWriter& CsvWriter::Add(std::int64_t value) {
   Separator();
   char buf[24];

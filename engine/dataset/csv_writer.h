@@ -23,6 +23,9 @@ class CsvWriter {
 
   /// Appends fields to the current row (call EndRow after the last).
   CsvWriter& Add(double value);
+  /// `value` rounded to float32, written as the shortest text that reads back to that float: for
+  /// sensor readings, whose noise is far above float32's 6e-8 relative step.
+  CsvWriter& AddFloat(double value);
   CsvWriter& Add(std::int64_t value);
   CsvWriter& Add(const std::string& text);  ///< quoted when it holds a comma, quote or newline
   void EndRow();

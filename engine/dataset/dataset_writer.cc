@@ -1,10 +1,15 @@
 #include "engine/dataset/dataset_writer.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 #include "engine/core/error.h"
+#include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "engine/dataset/sha256.h"
 
 namespace airis::engine {
 namespace {
@@ -13,6 +18,38 @@ std::string FrameName(std::int64_t index) {
   char buf[32];
   std::snprintf(buf, sizeof(buf), "%06lld", static_cast<long long>(index));
   return buf;
+}
+
+constexpr const char* kJournal = "checksums.journal";
+constexpr const char* kChecksums = "checksums.csv";
+
+FileChecksum ChecksumOf(std::span<const std::uint8_t> bytes) {
+  return {static_cast<std::int64_t>(bytes.size()), Sha256Hex(bytes)};
+}
+
+// Parses "path,bytes,sha256" lines into `out`; a torn last line (no newline) is skipped when
+// `torn_tail_ok` (an interrupted run's journal). Throws DatasetIoError naming the line.
+void ParseChecksums(const std::filesystem::path& file, const std::string& text, bool header,
+                    bool torn_tail_ok, std::map<std::string, FileChecksum>* out) {
+  std::size_t line_no = 0, start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    ++line_no;
+    if (end == std::string::npos && torn_tail_ok) return;
+    const std::string line =
+        text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    start = end == std::string::npos ? text.size() : end + 1;
+    if (header && line_no == 1) continue;
+    const std::size_t a = line.find(','), b = line.rfind(',');
+    char* stop = nullptr;
+    const long long bytes = a != b ? std::strtoll(line.c_str() + a + 1, &stop, 10) : -1;
+    if (a == std::string::npos || a == b || bytes < 0 || stop != line.c_str() + b ||
+        line.size() - b - 1 != 64) {
+      throw DatasetIoError(file.string() + ":" + std::to_string(line_no) +
+                           ": not a 'path,bytes,sha256' line");
+    }
+    (*out)[line.substr(0, a)] = {bytes, line.substr(b + 1)};
+  }
 }
 
 void CreateFolder(const std::filesystem::path& path) {
@@ -36,25 +73,15 @@ DatasetWriter::~DatasetWriter() {
   }
   work_ready_.notify_all();
   for (auto& t : workers_) t.join();
+  if (journal_) std::fclose(journal_);
 }
 
 int DatasetWriter::AddCamera(const std::string& name, const DatasetOutputs& outputs,
-                             const TartanAirSlot& tartanair) {
-  Camera cam{name, outputs, tartanair, {}};
-  const std::filesystem::path dir = root_ / name;
-  if (outputs.rgb) CreateFolder(dir / "rgb");
-  if (outputs.depth_png || outputs.depth_npy) CreateFolder(dir / "depth");
-  if (outputs.segmentation) {
-    CreateFolder(dir / "seg_class");
-    CreateFolder(dir / "seg_instance");
-  }
-  if (outputs.normals) CreateFolder(dir / "normals");
-  if (outputs.tartanair) {
-    AIRIS_DEMAND(!tartanair.trajectory.empty() && !tartanair.side.empty());
-    for (const char* kind : {"image", "depth", "seg"}) {
-      CreateFolder(TartanAirFramePath(root_, tartanair, kind, 0).parent_path());
-    }
-  }
+                             const TartanAirSlot& tartanair, double depth_unit_m) {
+  AIRIS_DEMAND(depth_unit_m > 0.0);
+  Camera cam{name, outputs, tartanair, depth_unit_m, {}, 0};
+  (void)PathUnder(root_, name);  // its folders are made when its first frame is written
+  AIRIS_DEMAND(!outputs.tartanair || (!tartanair.trajectory.empty() && !tartanair.side.empty()));
   cameras_.push_back(std::move(cam));
   return static_cast<int>(cameras_.size()) - 1;
 }
@@ -64,25 +91,75 @@ std::filesystem::path DatasetWriter::FramePath(int camera, const char* kind, std
   return root_ / cameras_[static_cast<std::size_t>(camera)].name / kind / (FrameName(index) + ext);
 }
 
-bool DatasetWriter::FrameComplete(int camera, std::int64_t index) const {
+std::vector<std::filesystem::path> DatasetWriter::FrameFiles(int camera, std::int64_t index) const {
   const Camera& cam = cameras_[static_cast<std::size_t>(camera)];
   const DatasetOutputs& o = cam.outputs;
-  auto exists = [&](const char* kind, const char* ext) {
-    return std::filesystem::exists(FramePath(camera, kind, index, ext));
-  };
-  auto tartan_exists = [&](const char* kind) {
-    return std::filesystem::exists(TartanAirFramePath(root_, cam.tartanair, kind, index));
-  };
-  return (!o.rgb || exists("rgb", ".png")) && (!o.depth_png || exists("depth", ".png")) &&
-         (!o.depth_npy || exists("depth", ".npy")) &&
-         (!o.segmentation || (exists("seg_class", ".png") && exists("seg_instance", ".png"))) &&
-         (!o.normals || exists("normals", ".npy")) &&
-         (!o.tartanair ||
-          (tartan_exists("image") && tartan_exists("depth") && tartan_exists("seg")));
+  const std::filesystem::path dir = cam.name;
+  const std::string n = FrameName(index);
+  std::vector<std::filesystem::path> files;
+  if (o.rgb) files.push_back(dir / "rgb" / (n + ".png"));
+  if (o.depth_png) files.push_back(dir / "depth" / (n + ".png"));
+  if (o.depth_npy) files.push_back(dir / "depth" / (n + ".npy"));
+  if (o.segmentation) {
+    files.push_back(dir / "seg_class" / (n + ".png"));
+    files.push_back(dir / "seg_instance" / (n + ".png"));
+  }
+  if (o.normals) files.push_back(dir / "normals" / (n + ".npy"));
+  if (o.tartanair) {
+    for (const char* kind : {"image", "depth", "seg"}) {
+      files.push_back(
+          std::filesystem::relative(TartanAirFramePath(root_, cam.tartanair, kind, index), root_));
+    }
+  }
+  return files;
+}
+
+void DatasetWriter::LoadRecordedChecksums() {
+  recorded_.clear();
+  const std::filesystem::path final_list = root_ / kChecksums;
+  if (std::filesystem::exists(final_list)) {
+    const auto bytes = ReadFileBytes(final_list);
+    ParseChecksums(final_list, std::string(bytes.begin(), bytes.end()), true, false, &recorded_);
+  }
+  const std::filesystem::path journal = root_ / kJournal;
+  if (std::filesystem::exists(journal)) {
+    const auto bytes = ReadFileBytes(journal);
+    ParseChecksums(journal, std::string(bytes.begin(), bytes.end()), false, true, &recorded_);
+  }
+}
+
+bool DatasetWriter::VerifyFrame(int camera, std::int64_t index, std::string* why) const {
+  for (const std::filesystem::path& rel : FrameFiles(camera, index)) {
+    const auto fail = [&](const std::string& what) {
+      if (why) *why = rel.string() + ": " + what;
+      return false;
+    };
+    const auto it = recorded_.find(rel.string());
+    const std::filesystem::path path = root_ / rel;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return fail("missing");
+    if (it == recorded_.end()) return fail("no checksum was recorded for it");
+    const auto size = static_cast<std::int64_t>(std::filesystem::file_size(path, ec));
+    if (ec || size != it->second.bytes) {
+      return fail(std::to_string(size) + " bytes, written with " +
+                  std::to_string(it->second.bytes));
+    }
+    if (Sha256Hex(ReadFileBytes(path)) != it->second.sha256) {
+      return fail("its content changed since it was written (SHA-256 differs)");
+    }
+  }
+  return true;
 }
 
 void DatasetWriter::Adopt(int camera, std::int64_t index) {
   Camera& cam = cameras_[static_cast<std::size_t>(camera)];
+  std::vector<std::pair<std::filesystem::path, FileChecksum>> files;
+  for (const std::filesystem::path& rel : FrameFiles(camera, index)) {
+    const auto it = recorded_.find(rel.string());
+    AIRIS_DEMAND(it != recorded_.end());  // VerifyFrame first
+    files.emplace_back(rel, it->second);
+  }
+  Record(files);
   std::vector<InstanceAnnotation> anns;
   if (cam.outputs.segmentation) {
     const auto ids = DecodePng16(ReadFileBytes(FramePath(camera, "seg_instance", index, ".png")));
@@ -112,6 +189,44 @@ void DatasetWriter::Flush() {
   idle_.wait(lock, [&] { return (queue_.empty() && busy_ == 0) || error_; });
   lock.unlock();
   RethrowWorkerError();
+}
+
+void DatasetWriter::Record(
+    const std::vector<std::pair<std::filesystem::path, FileChecksum>>& files) {
+  std::lock_guard lock(mutex_);
+  if (!journal_) {
+    const std::filesystem::path path = root_ / kJournal;
+    journal_ = std::fopen(path.c_str(), "a");
+    if (!journal_) {
+      throw DatasetIoError("cannot open " + path.string() + ": " + std::strerror(errno));
+    }
+  }
+  std::string lines;
+  for (const auto& [rel, sum] : files) {
+    checksums_[rel.string()] = sum;
+    lines += rel.string() + "," + std::to_string(sum.bytes) + "," + sum.sha256 + "\n";
+  }
+  // Flushed per frame: a killed run keeps the record of every frame it finished.
+  if (std::fwrite(lines.data(), 1, lines.size(), journal_) != lines.size() ||
+      std::fflush(journal_) != 0) {
+    throw DatasetIoError("cannot write " + (root_ / kJournal).string() + ": " +
+                         std::strerror(errno));
+  }
+}
+
+void DatasetWriter::WriteChecksums() {
+  std::lock_guard lock(mutex_);
+  std::string text = "path,bytes,sha256\n";
+  for (const auto& [rel, sum] : checksums_) {
+    text += rel + "," + std::to_string(sum.bytes) + "," + sum.sha256 + "\n";
+  }
+  WriteFileAtomically(root_ / kChecksums, text);
+  if (journal_) {
+    std::fclose(journal_);
+    journal_ = nullptr;
+  }
+  std::error_code ec;
+  std::filesystem::remove(root_ / kJournal, ec);
 }
 
 void DatasetWriter::RethrowWorkerError() {
@@ -156,32 +271,43 @@ void DatasetWriter::WriteFrame(const Job& job) {
   const CameraFrame& f = *job.frame;
   const Camera& cam = cameras_[static_cast<std::size_t>(job.camera)];
   const DatasetOutputs& o = cam.outputs;
-  auto write = [&](const char* kind, const char* ext, const std::vector<std::uint8_t>& bytes) {
-    WriteFileAtomically(FramePath(job.camera, kind, job.index, ext), bytes);
+  std::vector<std::pair<std::filesystem::path, FileChecksum>> written;
+  auto write = [&](const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
+    CreateFolder(path.parent_path());
+    WriteFileAtomically(path, bytes);
+    written.emplace_back(std::filesystem::relative(path, root_), ChecksumOf(bytes));
   };
   if (o.tartanair) {
     // Its image is the same PNG as rgb/ (encoded once when both are written).
     const std::vector<std::uint8_t> png = EncodeRgbPng(f.rgba);
-    if (o.rgb) write("rgb", ".png", png);
-    WriteFileAtomically(TartanAirFramePath(root_, cam.tartanair, "image", job.index), png);
-    WriteFileAtomically(TartanAirFramePath(root_, cam.tartanair, "depth", job.index),
-                        EncodeNpy(ToTartanAirDepth(f.depth_planar_m)));
-    WriteFileAtomically(TartanAirFramePath(root_, cam.tartanair, "seg", job.index),
-                        EncodeNpy(f.class_id));
+    if (o.rgb) write(FramePath(job.camera, "rgb", job.index, ".png"), png);
+    write(TartanAirFramePath(root_, cam.tartanair, "image", job.index), png);
+    write(TartanAirFramePath(root_, cam.tartanair, "depth", job.index),
+          EncodeNpy(ToTartanAirDepth(f.depth_planar_m)));
+    write(TartanAirFramePath(root_, cam.tartanair, "seg", job.index), EncodeNpy(f.class_id));
   } else if (o.rgb) {
-    write("rgb", ".png", EncodeRgbPng(f.rgba));
+    write(FramePath(job.camera, "rgb", job.index, ".png"), EncodeRgbPng(f.rgba));
   }
-  if (o.depth_png) write("depth", ".png", EncodeDepthMmPng(f.depth_planar_m));
-  if (o.depth_npy) write("depth", ".npy", EncodeNpy(f.depth_planar_m));
-  if (o.normals) write("normals", ".npy", EncodeNpy(f.normal_C));
+  std::int64_t clipped = 0;
+  if (o.depth_png) {
+    write(FramePath(job.camera, "depth", job.index, ".png"),
+          EncodeDepthPng(f.depth_planar_m, cam.depth_unit_m, &clipped));
+  }
+  if (o.depth_npy)
+    write(FramePath(job.camera, "depth", job.index, ".npy"), EncodeNpy(f.depth_planar_m));
+  if (o.normals) write(FramePath(job.camera, "normals", job.index, ".npy"), EncodeNpy(f.normal_C));
   std::vector<InstanceAnnotation> anns;
   if (o.segmentation) {
-    write("seg_class", ".png", EncodeClassPng(f.class_id));
-    write("seg_instance", ".png", EncodeInstancePng(f.instance_id));
+    write(FramePath(job.camera, "seg_class", job.index, ".png"), EncodeClassPng(f.class_id));
+    write(FramePath(job.camera, "seg_instance", job.index, ".png"),
+          EncodeInstancePng(f.instance_id));
     anns = ExtractInstanceAnnotations(f.instance_id, f.class_id, options_.annotations);
   }
+  Record(written);
   std::lock_guard lock(mutex_);
-  cameras_[static_cast<std::size_t>(job.camera)].annotations[job.index] = std::move(anns);
+  Camera& mutable_cam = cameras_[static_cast<std::size_t>(job.camera)];
+  mutable_cam.annotations[job.index] = std::move(anns);
+  mutable_cam.clipped_depth_pixels += clipped;
   ++frames_written_;
 }
 

@@ -42,19 +42,34 @@ std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba) {
   return Encode(bgr);
 }
 
-std::uint16_t DepthToMillimetres(float depth_m) {
-  if (!std::isfinite(depth_m) || depth_m <= 0.0f) return 0;
-  const double mm = std::round(static_cast<double>(depth_m) * 1000.0);
-  return mm > 65535.0 ? 0 : static_cast<std::uint16_t>(mm);
+double ChooseDepthUnit_m(double far_m) {
+  static constexpr double kUnits_m[] = {0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1,
+                                        0.2,   0.5,   1.0,   2.0,  5.0,  10.0};
+  for (double unit : kUnits_m) {
+    if (65535.0 * unit >= far_m) return unit;
+  }
+  return kUnits_m[std::size(kUnits_m) - 1];
 }
 
-std::vector<std::uint8_t> EncodeDepthMmPng(const Image<float>& depth_m) {
-  AIRIS_DEMAND(depth_m.channels == 1);
-  cv::Mat mm(depth_m.height, depth_m.width, CV_16UC1);
-  auto* out = mm.ptr<std::uint16_t>();
-  for (std::size_t i = 0; i < depth_m.pixels.size(); ++i)
-    out[i] = DepthToMillimetres(depth_m.pixels[i]);
-  return Encode(mm);
+std::uint16_t EncodeDepth(float depth_m, double unit_m) {
+  if (!std::isfinite(depth_m) || depth_m <= 0.0f) return 0;
+  const double units = std::round(static_cast<double>(depth_m) / unit_m);
+  return units > 65535.0 ? 0 : static_cast<std::uint16_t>(units);
+}
+
+std::vector<std::uint8_t> EncodeDepthPng(const Image<float>& depth_m, double unit_m,
+                                         std::int64_t* clipped) {
+  AIRIS_DEMAND(depth_m.channels == 1 && unit_m > 0.0);
+  cv::Mat png(depth_m.height, depth_m.width, CV_16UC1);
+  auto* out = png.ptr<std::uint16_t>();
+  std::int64_t beyond = 0;
+  for (std::size_t i = 0; i < depth_m.pixels.size(); ++i) {
+    const float d = depth_m.pixels[i];
+    out[i] = EncodeDepth(d, unit_m);
+    beyond += out[i] == 0 && std::isfinite(d) && d > 0.0f;
+  }
+  if (clipped) *clipped += beyond;
+  return Encode(png);
 }
 
 std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id) {

@@ -1,6 +1,7 @@
 #include "engine/dataset/telemetry_recorder.h"
 
 #include "engine/core/frames.h"
+#include "engine/dataset/file_io.h"
 
 namespace airis::engine {
 namespace {
@@ -13,8 +14,11 @@ std::vector<std::string> TimeColumns(std::vector<std::string> rest) {
 }  // namespace
 
 TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& dir,
-                                     double truth_rate_hz)
-    : world_(world), truth_schedule_(truth_rate_hz) {
+                                     const TelemetryOptions& options)
+    : world_(world),
+      options_(options),
+      truth_schedule_(options.truth_rate_hz),
+      recording_(!options.window_only) {
   truth_ =
       std::make_unique<CsvWriter>(dir / "truth.csv", TimeColumns({"vehicle",
                                                                   "position_ned_x_m",
@@ -64,20 +68,48 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
       cols.push_back("actuator_" + std::to_string(a));
     }
     commands_.push_back(std::make_unique<CsvWriter>(
-        dir / (world.vehicle(v).name() + ".commands.csv"), TimeColumns(cols)));
+        PathUnder(dir, world.vehicle(v).name() + ".commands.csv"), TimeColumns(cols)));
   }
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& sensor : world.sensors(v)) {
-      std::vector<std::string> cols(sensor->columns().begin(), sensor->columns().end());
-      sensors_.push_back(std::make_unique<CsvWriter>(
-          dir / (world.vehicle(v).name() + "." + sensor->name() + ".csv"), TimeColumns(cols)));
-      CsvWriter* csv = sensors_.back().get();
-      sensor->AddListener([this, csv](const Sensor& s) {
-        row_.resize(s.columns().size());
-        s.CopyLatestRow(row_);
-        csv->Add(static_cast<std::int64_t>(s.last_sample_ns())).Add(ToSeconds(s.last_sample_ns()));
-        for (double x : row_) csv->Add(x);
-        csv->EndRow();
+      // Images are recorded by the dataset recorder, with their poses in <camera>/poses.csv.
+      if (sensor->image()) continue;
+      const std::string stream = world.vehicle(v).name() + "." + sensor->name();
+      const std::vector<std::string> cols =
+          TimeColumns({sensor->columns().begin(), sensor->columns().end()});
+      auto out = std::make_unique<SensorStream>();
+      if (options_.sensor_format == StreamFormat::kNpy) {
+        std::vector<NpyField> fields = {NpyField::kInt64, NpyField::kFloat64};
+        for (std::size_t c = 0; c < sensor->columns().size(); ++c) {
+          fields.push_back(sensor->IsDoubleColumn(c) ? NpyField::kFloat64 : NpyField::kFloat32);
+        }
+        out->npy = std::make_unique<NpyStreamWriter>(PathUnder(dir, stream + ".npy"), cols, fields);
+      } else {
+        out->csv = std::make_unique<CsvWriter>(PathUnder(dir, stream + ".csv"), cols);
+      }
+      SensorStream* target = out.get();
+      sensors_.push_back(std::move(out));
+      sensor->AddListener([this, target](const Sensor& s) {
+        if (!recording_) return;
+        const std::size_t n = s.columns().size();
+        row_.resize(n + 2);
+        row_[0] = static_cast<double>(s.last_sample_ns());
+        row_[1] = ToSeconds(s.last_sample_ns());
+        s.CopyLatestRow(std::span<double>(row_).subspan(2));
+        if (target->npy) {
+          target->npy->AddRow(row_);
+          return;
+        }
+        CsvWriter& csv = *target->csv;
+        csv.Add(static_cast<std::int64_t>(s.last_sample_ns())).Add(row_[1]);
+        for (std::size_t c = 0; c < n; ++c) {
+          if (s.IsDoubleColumn(c)) {
+            csv.Add(row_[c + 2]);
+          } else {
+            csv.AddFloat(row_[c + 2]);
+          }
+        }
+        csv.EndRow();
       });
     }
   }
@@ -101,7 +133,7 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
 }
 
 void TelemetryRecorder::OnTick(TimeNs now_ns) {
-  if (truth_schedule_.ConsumeDue(now_ns) == 0) return;
+  if (truth_schedule_.ConsumeDue(now_ns) == 0 || !recording_) return;
   const LocalNedFrame& frame = world_.environment().frame();
   for (std::size_t v = 0; v < world_.vehicle_count(); ++v) {
     const RigidBodyState& s = world_.vehicle(v).state();
@@ -149,7 +181,10 @@ void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index,
 void TelemetryRecorder::Close() {
   truth_->Close();
   for (auto& c : commands_) c->Close();
-  for (auto& s : sensors_) s->Close();
+  for (auto& s : sensors_) {
+    if (s->csv) s->csv->Close();
+    if (s->npy) s->npy->Close();
+  }
   collisions_->Close();
   events_->Close();
 }

@@ -75,6 +75,18 @@ TEST(InstanceAnnotationTest, SmallInstancesAreLeftOut) {
   EXPECT_EQ(ExtractInstanceAnnotations(frame->instance_id, frame->class_id, {10}).size(), 2u);
 }
 
+TEST(InstanceAnnotationTest, StuffClassesGetNoAnnotation) {
+  const auto frame = testing::MakeFrame(64, 48, 10.0f);
+  AnnotationRules rules;
+  rules.min_area_px = 10;
+  const auto all = ExtractInstanceAnnotations(frame->instance_id, frame->class_id, rules);
+  ASSERT_EQ(all.size(), 2u);
+  rules.stuff[all[0].class_id] = true;
+  const auto things = ExtractInstanceAnnotations(frame->instance_id, frame->class_id, rules);
+  for (const auto& a : things) EXPECT_NE(a.class_id, all[0].class_id);
+  EXPECT_LT(things.size(), all.size());
+}
+
 TEST(InstanceAnnotationTest, MaskStartingAtTheFirstPixelHasLeadingZeroCount) {
   Image<std::uint16_t> ids;
   Image<std::uint8_t> cls;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "engine/core/error.h"
+#include "engine/dataset/file_io.h"
 
 namespace airis::tools {
 
@@ -18,6 +19,10 @@ int RunReportingErrors(const std::function<int()>& body) {
   } catch (const engine::SimulationError& e) {
     std::fprintf(stderr, "simulation stopped: %s\n", e.what());
     return 3;
+  } catch (const engine::DatasetIoError& e) {
+    // A full disk, an unwritable folder, a damaged dataset: the files and the system's reason.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 4;
   } catch (const std::out_of_range& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

@@ -6,10 +6,12 @@
 
 namespace airis::tools {
 
-/// Runs a command body and turns the errors users can cause into one clear line on stderr and exit
-/// code 2 (ConfigError, std::out_of_range and std::invalid_argument from models; SimulationError:
-/// exit code 3; any other std::exception, such as a full disk or no EGL display: exit code 1, its
-/// message). Returns the body's exit code otherwise. No stack traces, no noise.
+/// Runs a command body and turns the errors users can cause into one clear line on stderr and an
+/// exit code (README, "Exit codes"): 2 for bad input (ConfigError, std::out_of_range and
+/// std::invalid_argument from models), 3 when the simulation diverged (SimulationError), 4 for a
+/// file that cannot be written or read (DatasetIoError: a full disk, an unwritable folder), 1 for
+/// any other std::exception (no EGL display), with its message. Returns the body's exit code
+/// otherwise. No stack traces, no noise.
 int RunReportingErrors(const std::function<int()>& body);
 
 /// Parses `text` as a finite double for option `--name`, or throws ConfigError naming the option.

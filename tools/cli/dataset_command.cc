@@ -18,6 +18,7 @@
 #include "engine/core/error.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/stop_signals.h"
 #include "tools/jobs/dataset_job.h"
 #include "tools/jobs/dataset_merge.h"
 
@@ -31,6 +32,8 @@ struct DatasetArgs {
   std::string scene, mission, out, seed, cameras, formats, shard;
   int workers = 2;
   std::int64_t min_object_area_px = 16;
+  std::string streams = "capture";
+  std::string stream_format = "csv";
   bool resume = false;
 };
 
@@ -72,6 +75,27 @@ engine::DatasetOutputs ParseFormats(const std::string& text) {
   return outputs;
 }
 
+// The command that continues this run: the same arguments with --resume.
+std::string ResumeCommand(const DatasetArgs& a) {
+  std::string c = "airis dataset " + a.scene + " --mission " + a.mission + " --out " + a.out;
+  const std::pair<const char*, const std::string*> options[] = {
+      {"--seed", &a.seed},
+      {"--cameras", &a.cameras},
+      {"--formats", &a.formats},
+      {"--shard", &a.shard},
+      {"--stream-format", &a.stream_format}};
+  for (const auto& [flag, value] : options) {
+    if (!value->empty() && !(std::string(flag) == "--stream-format" && *value == "csv")) {
+      c += std::string(" ") + flag + " " + *value;
+    }
+  }
+  if (a.streams != "capture") c += " --streams " + a.streams;
+  if (a.min_object_area_px != 16) {
+    c += " --min-object-area-px " + std::to_string(a.min_object_area_px);
+  }
+  return c + " --resume";
+}
+
 int Run(const DatasetArgs& a) {
   for (const auto& [value, name] :
        {std::pair{&a.scene, "scene"}, {&a.mission, "--mission"}, {&a.out, "--out"}}) {
@@ -89,7 +113,20 @@ int Run(const DatasetArgs& a) {
   o.shard = ParseShard(a.shard);
   o.workers = a.workers;
   o.min_object_area_px = a.min_object_area_px;
+  if (a.streams != "capture" && a.streams != "flight") {
+    throw engine::ConfigError({}, "--streams",
+                              "expected capture or flight (got '" + a.streams + "')");
+  }
+  o.full_streams = a.streams == "flight";
+  if (a.stream_format != "csv" && a.stream_format != "npy") {
+    throw engine::ConfigError({}, "--stream-format",
+                              "expected csv or npy (got '" + a.stream_format + "')");
+  }
+  o.stream_format =
+      a.stream_format == "npy" ? engine::StreamFormat::kNpy : engine::StreamFormat::kCsv;
   o.resume = a.resume;
+  const StopOnSignals signals;
+  o.stop = signals.flag();
 
   // A progress line on a terminal, four times a second: step, simulated time, frames, rate, ETA.
   const bool tty = ::isatty(STDERR_FILENO) != 0;
@@ -115,6 +152,14 @@ int Run(const DatasetArgs& a) {
   std::printf("  folder         %s\n", o.out.c_str());
   if (fs::exists(fs::path(o.out) / "preview.png")) {
     std::printf("  contact sheet  %s\n", (fs::path(o.out) / "preview.png").c_str());
+  }
+  for (const std::string& line : r.redone) std::printf("  written again  %s\n", line.c_str());
+  if (r.interrupted_by != 0) {
+    std::fprintf(stderr,
+                 "interrupted by %s: the dataset in %s is incomplete (its manifest says so); "
+                 "continue it with:\n  %s\n",
+                 SignalName(r.interrupted_by).c_str(), o.out.c_str(), ResumeCommand(a).c_str());
+    return ExitCodeForSignal(r.interrupted_by);
   }
   if (!r.succeeded) {
     std::fprintf(stderr, "error: %s\n", r.failure.c_str());
@@ -159,6 +204,11 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", a->shard,
                   "write shard K of N (every N-th frame from the K-th); join with 'merge'");
   cmd->add_option("--workers", a->workers, "image encoding threads (default 2)");
+  cmd->add_option("--streams", a->streams,
+                  "sensor, truth and command rows of the capture windows (capture, default) or "
+                  "of the whole flight (flight)");
+  cmd->add_option("--stream-format", a->stream_format,
+                  "sensor streams as csv (default) or npy (NumPy structured arrays)");
   cmd->add_option("--min-object-area-px", a->min_object_area_px,
                   "instances with fewer visible pixels get no COCO annotation (default 16)");
   cmd->add_flag("--resume", a->resume,

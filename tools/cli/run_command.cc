@@ -10,6 +10,7 @@
 #include "engine/core/error.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/stop_signals.h"
 #include "tools/jobs/run_job.h"
 
 namespace airis::tools {
@@ -52,6 +53,8 @@ int Run(const RunOptions& o) {
   job.truth_rate_hz = ParseFiniteNumber("truth-rate", o.truth_rate);
   if (job.truth_rate_hz <= 0.0) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
 
+  const StopOnSignals signals;
+  job.stop = signals.flag();
   // The progress line, four times a second on a terminal.
   const bool tty = ::isatty(STDERR_FILENO) != 0;
   double next_s = 0.0;
@@ -63,10 +66,13 @@ int Run(const RunOptions& o) {
   if (tty) std::fprintf(stderr, "\n");
 
   const MissionOutcome& m = r.mission;
+  const std::string stopped = m.interrupted_by != 0
+                                  ? "interrupted (" + SignalName(m.interrupted_by) + ")"
+                                  : std::string("stopped (--until)");
   std::printf("mission %s: %d of %d steps done\n",
               m.state == engine::MissionRunner::State::kSucceeded ? "succeeded"
               : m.state == engine::MissionRunner::State::kFailed  ? "FAILED"
-                                                                  : "stopped (--until)",
+                                                                  : stopped.c_str(),
               m.steps_done, m.steps);
   std::printf("  distance flown       %.1f m\n", m.distance_flown_m);
   std::printf("  max tracking error   %.2f m\n", m.max_tracking_error_m);
@@ -75,6 +81,7 @@ int Run(const RunOptions& o) {
   std::printf("  wall time            %.3f s (%.1fx real time)\n", r.wall_s,
               m.simulated_s / std::max(r.wall_s, 1e-9));
   if (!o.out.empty()) std::printf("  telemetry            %s\n", o.out.c_str());
+  if (m.interrupted_by != 0) return ExitCodeForSignal(m.interrupted_by);
   if (m.state == engine::MissionRunner::State::kFailed) {
     std::fprintf(stderr, "error: %s\n", m.failure.c_str());
     return 1;

@@ -44,10 +44,10 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   const std::size_t vehicle = job.MissionVehicle(mission);
+  const fs::path manifest_path = fs::path(o.out) / "manifest.json";
+  nlohmann::json existing;
   if (o.resume) {
-    if (!fs::is_directory(o.out))
-      throw engine::ConfigError({}, "--resume", "'" + o.out + "' is not a dataset folder");
-    RemoveUnfinishedFiles(o.out);
+    existing = ReadDatasetManifest(o.out);
   } else {
     PrepareEmptyOutputFolder(o.out, "--out");
   }
@@ -59,23 +59,41 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   ro.outputs = o.outputs;
   ro.writer.workers = o.workers;
   ro.writer.annotations.min_area_px = o.min_object_area_px;
+  for (const auto& c : job.world().scene().classes) ro.writer.annotations.stuff[c.id] = c.stuff;
   ro.shard_index = o.shard.index - 1;
   ro.shard_count = o.shard.count;
   DatasetRecorder recorder(job.world(), ro);
-  engine::TelemetryRecorder telemetry(job.world(), o.out, 100.0);
-  const ManifestSource source{o.scene.path, o.mission, o.outputs, o.shard, o.min_object_area_px};
-  const fs::path manifest_path = fs::path(o.out) / "manifest.json";
-  engine::WriteFileAtomically(
-      manifest_path,
-      MakeDatasetManifest(source, job.scene(), mission, job.world(), recorder, false, 0.0).dump(1));
+  ManifestSource source{o.scene.path,         o.mission,      o.outputs,      o.shard,
+                        o.min_object_area_px, o.full_streams, o.stream_format};
+  const nlohmann::json start =
+      MakeDatasetManifest(source, job.scene(), mission, job.world(), recorder, false, 0.0);
+  if (o.resume) {
+    // Frames of another scene, mission, seed, shard or camera must not be mixed in: refuse,
+    // naming the difference, before anything in the folder changes.
+    if (const std::string diff = FindResumeMismatch(existing, start); !diff.empty()) {
+      throw engine::ConfigError({}, "--resume",
+                                "'" + o.out + "' holds another dataset than this run makes: its " +
+                                    "manifest differs in " + diff);
+    }
+    RemoveUnfinishedFiles(o.out);
+  }
+  engine::WriteFileAtomically(manifest_path, start.dump(1));
+  engine::TelemetryOptions t;
+  t.window_only = !o.full_streams;
+  t.sensor_format = o.stream_format;
+  engine::TelemetryRecorder telemetry(job.world(), o.out, t);
   telemetry.OnTick(0);
 
   const double nominal_s = engine::EstimateMissionDuration_s(
       mission, job.world().vehicle(vehicle).state().p_W, job.world().environment().frame());
   MissionFlight flight;
   flight.progress_every_ns = 100'000'000;
+  flight.stop = o.stop;
   flight.callbacks.after_tick = [&](engine::TimeNs now_ns) { telemetry.OnTick(now_ns); };
-  flight.callbacks.on_capture = [&](const engine::CaptureStep& c) { recorder.SetCapture(c); };
+  flight.callbacks.on_capture = [&](const engine::CaptureStep& c) {
+    recorder.SetCapture(c);
+    telemetry.SetRecording(c.enabled);
+  };
   flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
     telemetry.RecordMissionEvent(e.time_ns, e.step_index, e.step_kind, e.what);
   };
@@ -92,14 +110,18 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   telemetry.Close();
   DatasetJobResult r;
   r.succeeded = outcome.succeeded();
+  r.interrupted_by = outcome.interrupted_by;
   if (!r.succeeded) r.failure = outcome.failure;
   r.simulated_s = outcome.simulated_s;
-  engine::WriteFileAtomically(
-      manifest_path, MakeDatasetManifest(source, job.scene(), mission, job.world(), recorder,
-                                         r.succeeded, r.simulated_s)
-                         .dump(1));
+  ManifestSource end = source;
+  end.interrupted_by = r.interrupted_by;
+  engine::WriteFileAtomically(manifest_path,
+                              MakeDatasetManifest(end, job.scene(), mission, job.world(), recorder,
+                                                  r.succeeded, r.simulated_s)
+                                  .dump(1));
   for (const auto& c : recorder.cameras()) r.frames += c.frames;
   r.cameras = recorder.cameras().size();
+  r.redone = recorder.redone();
   r.wall_s = job.wall_s();
   return r;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "engine/dataset/dataset_writer.h"
+#include "engine/dataset/telemetry_recorder.h"
 #include "tools/jobs/dataset_shard.h"
 #include "tools/jobs/simulation_job.h"
 
@@ -23,17 +25,26 @@ struct DatasetJobOptions {
   int workers = 2;  ///< image encoding threads, 1 to 64
   /// Instances with fewer visible pixels get no COCO annotation (they stay in the label images).
   std::int64_t min_object_area_px = 16;
+  /// Sensor, truth and command streams of the whole flight (true) or of the capture windows only.
+  bool full_streams = false;
+  engine::StreamFormat stream_format = engine::StreamFormat::kCsv;  ///< sensor streams' format
   bool resume = false;  ///< continue an interrupted run in `out`
+  /// Set to a signal number to stop: the frame in flight is finished, the outputs are written and
+  /// the manifest says incomplete (a front end's signal handler sets it).
+  const std::atomic<int>* stop = nullptr;
 };
 
 /// What a finished job made.
 struct DatasetJobResult {
   bool succeeded = false;   ///< the mission flew to its end (else the dataset is marked incomplete)
   std::string failure;      ///< why the mission failed, when it did
+  int interrupted_by = 0;   ///< the signal that stopped it early, 0 if none
   std::int64_t frames = 0;  ///< frames written, all cameras
   std::size_t cameras = 0;  ///< dataset cameras (a stereo camera counts two)
   double wall_s = 0;        ///< wall time of the whole job: loading, flying, writing, finishing
   double simulated_s = 0;
+  /// With resume: frames the interrupted run left short or changed, written again (one line each).
+  std::vector<std::string> redone;
 };
 
 /// Flies the mission through the scene and writes the dataset into options.out

@@ -1,7 +1,9 @@
 #include "tools/jobs/dataset_manifest.h"
 
 #include <array>
+#include <filesystem>
 
+#include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/sha256.h"
 #include "engine/world/image_sensor.h"
@@ -86,6 +88,11 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
                         {"frames", c.frames}};
   if (c.outputs.tartanair)
     cam["tartanair"] = {{"trajectory", c.tartanair.trajectory}, {"side", c.tartanair.side}};
+  if (c.outputs.depth_png) {
+    cam["depth_png"] = {{"unit_m", c.depth_unit_m},
+                        {"max_m", 65535.0 * c.depth_unit_m},
+                        {"clipped_pixels", c.clipped_depth_pixels}};
+  }
   return cam;
 }
 
@@ -99,8 +106,11 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
   m["format_version"] = 2;
   m["airis_version"] = kVersion;
   m["complete"] = complete;
+  if (o.interrupted_by != 0) m["interrupted_by_signal"] = o.interrupted_by;
+  // Content hashes, not paths: the same files give the same manifest on every machine.
   m["scene"] = {{"file", o.scene_file},
-                {"sha256", FileHash(o.scene_file)},
+                {"sha256", engine::CalcContentHash(scene.files)},
+                {"files", scene.files.size()},
                 {"name", scene.name},
                 {"seed", scene.seed}};
   m["mission"] = {
@@ -114,12 +124,15 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
   }
   nlohmann::json streams =
       nlohmann::json::array({"truth.csv", "collisions.csv", "mission_events.csv"});
+  const char* ext = o.stream_format == engine::StreamFormat::kNpy ? ".npy" : ".csv";
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     streams.push_back(world.vehicle(v).name() + ".commands.csv");
-    for (const auto& s : world.sensors(v))
-      streams.push_back(world.vehicle(v).name() + "." + s->name() + ".csv");
+    for (const auto& s : world.sensors(v)) {
+      if (!s->image()) streams.push_back(world.vehicle(v).name() + "." + s->name() + ext);
+    }
   }
   m["streams"] = streams;
+  m["streams_span"] = o.full_streams ? "flight" : "capture";
   m["counts"] = {{"frames", frames}, {"simulated_time_s", sim_s}};
   m["formats"] = FormatsJson(o.outputs);
   m["annotations"] = {{"min_object_area_px", o.min_object_area_px}};
@@ -128,6 +141,66 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
   for (const auto& c : world.scene().classes) classes.push_back({{"id", c.id}, {"name", c.name}});
   m["classes"] = classes;
   return m;
+}
+
+nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& option) {
+  const std::filesystem::path path = std::filesystem::path(dir) / "manifest.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw engine::ConfigError({}, option,
+                              "'" + dir + "' is not an airis dataset (it has no manifest.json)");
+  }
+  const auto bytes = engine::ReadFileBytes(path);
+  nlohmann::json m;
+  try {
+    m = nlohmann::json::parse(bytes.begin(), bytes.end());
+  } catch (const nlohmann::json::exception&) {
+    throw engine::ConfigError({}, option, path.string() + " is not valid JSON");
+  }
+  if (!m.is_object() || m.value("format", "") != "airis-dataset") {
+    throw engine::ConfigError({}, option, path.string() + " is not an airis dataset manifest");
+  }
+  return m;
+}
+
+std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now) {
+  // What makes a frame of one run interchangeable with the same frame of another.
+  static constexpr const char* kKeys[] = {
+      "/format",         "/format_version", "/airis_version", "/scene/sha256", "/scene/seed",
+      "/mission/sha256", "/formats",        "/annotations",   "/streams",      "/streams_span"};
+  for (const char* key : kKeys) {
+    const nlohmann::json::json_pointer p(key);
+    const nlohmann::json a = existing.contains(p) ? existing.at(p) : nlohmann::json();
+    const nlohmann::json b = now.contains(p) ? now.at(p) : nlohmann::json();
+    if (a != b) {
+      return std::string(key + 1) + " (was " + a.dump() + ", now " + b.dump() + ")";
+    }
+  }
+  const nlohmann::json no_shard = {{"index", 1}, {"count", 1}};
+  const nlohmann::json a = existing.value("shard", no_shard), b = now.value("shard", no_shard);
+  if (a != b) return "shard (was " + a.dump() + ", now " + b.dump() + ")";
+  const auto cameras = [](nlohmann::json list) {
+    for (auto& c : list) {
+      c.erase("frames");
+      if (c.contains("depth_png")) c["depth_png"].erase("clipped_pixels");
+    }
+    return list;
+  };
+  const nlohmann::json ca = cameras(existing.value("cameras", nlohmann::json::array()));
+  const nlohmann::json cb = cameras(now.value("cameras", nlohmann::json::array()));
+  if (ca.size() != cb.size()) {
+    return "cameras (" + std::to_string(ca.size()) + " then, " + std::to_string(cb.size()) +
+           " now)";
+  }
+  for (std::size_t i = 0; i < ca.size(); ++i) {
+    for (const auto& [key, value] : cb[i].items()) {
+      if (!ca[i].contains(key) || ca[i][key] != value) {
+        return "cameras[" + std::to_string(i) + "]." + key + " (was " +
+               (ca[i].contains(key) ? ca[i][key].dump() : "absent") + ", now " + value.dump() + ")";
+      }
+    }
+  }
+  return "";
 }
 
 }  // namespace airis::tools

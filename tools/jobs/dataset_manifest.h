@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "engine/dataset/telemetry_recorder.h"
 #include "engine/mission/mission.h"
 #include "engine/world/world.h"
 #include "scenes/scene.h"
@@ -18,6 +19,9 @@ struct ManifestSource {
   engine::DatasetOutputs outputs;
   ShardSpec shard;
   std::int64_t min_object_area_px = 16;  ///< the COCO annotation rule
+  bool full_streams = false;             ///< streams of the whole flight, not the capture windows
+  engine::StreamFormat stream_format = engine::StreamFormat::kCsv;
+  int interrupted_by = 0;  ///< the signal that stopped the run early (recorded), 0 if none
 };
 
 /// The manifest of a dataset being written (`complete` false) or finished: format and airis
@@ -28,5 +32,15 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::S
                                    const engine::Mission& mission, const engine::World& world,
                                    const DatasetRecorder& recorder, bool complete,
                                    double simulated_s);
+
+/// The manifest.json of dataset folder `dir`. Throws ConfigError naming `option` when `dir` is not
+/// an airis dataset (no manifest, not JSON, another format).
+nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& option = "--resume");
+
+/// Where `now` (the manifest a run would write) differs from `existing` (an interrupted run's) in
+/// what a resume must keep: format, airis version, scene and mission content, seed, shard,
+/// formats, annotation rule and every camera (frame counts aside). Empty when a resume may go on,
+/// else the first difference as "scene/sha256 (was ..., now ...)".
+std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now);
 
 }  // namespace airis::tools

@@ -37,10 +37,18 @@ json ReadJson(const fs::path& path) {
 }
 
 // The manifest without what differs between the shards of one dataset.
+// The manifest without what differs between the shards of one dataset: the shard entry, frame
+// counts, depth pixels clipped, and the paths the scene and mission were given by (their content
+// hashes must agree; shards made on machines with different checkouts merge).
 json Common(json m) {
   m.erase("shard");
   m["counts"].erase("frames");
-  for (json& c : m["cameras"]) c.erase("frames");
+  m["scene"].erase("file");
+  m["mission"].erase("file");
+  for (json& c : m["cameras"]) {
+    c.erase("frames");
+    if (c.contains("depth_png")) c["depth_png"].erase("clipped_pixels");
+  }
   return m;
 }
 
@@ -191,6 +199,28 @@ std::vector<std::int64_t> JoinPoses(const std::vector<Shard>& shards, const fs::
   return frames;
 }
 
+// checksums.csv from every shard's: the union of their frame files, sorted by path.
+void JoinChecksums(const std::vector<Shard>& shards, const fs::path& out) {
+  std::map<std::string, std::string> rows;  // path -> whole line
+  for (const Shard& s : shards) {
+    const auto bytes = engine::ReadFileBytes(s.dir / "checksums.csv");
+    const std::string text(bytes.begin(), bytes.end());
+    std::size_t start = text.find('\n') + 1;  // after the header
+    while (start < text.size()) {
+      const std::size_t end = text.find('\n', start);
+      const std::string line = text.substr(start, end - start);
+      const std::string path = line.substr(0, line.find(','));
+      if (!rows.emplace(path, line).second) {
+        throw DatasetIoError(path + " comes from two shards (" + s.dir.string() + ")");
+      }
+      start = end == std::string::npos ? text.size() : end + 1;
+    }
+  }
+  std::string text = "path,bytes,sha256\n";
+  for (const auto& [path, line] : rows) text += line + "\n";
+  engine::WriteFileAtomically(out / "checksums.csv", text);
+}
+
 // One COCO file from the shards': images by id, annotations in frame order numbered from 1 again.
 void JoinCoco(const std::vector<Shard>& shards, const fs::path& rel, const fs::path& out) {
   json merged;
@@ -242,7 +272,18 @@ bool Has(const json& camera, const char* output) {
 MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::path& out) {
   const auto wall_start = std::chrono::steady_clock::now();
   const std::vector<Shard> shards = ReadShards(dirs);
+  // A merge that stopped half-way (a full disk) is marked in its manifest: running it again
+  // starts that folder afresh. Any other non-empty folder is refused; nothing is overwritten.
+  std::error_code ec;
+  if (fs::is_regular_file(out / "manifest.json", ec) &&
+      ReadJson(out / "manifest.json").value("merge_in_progress", false)) {
+    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
+  }
   PrepareEmptyOutputFolder(out.string(), "--out");
+  engine::WriteFileAtomically(
+      out / "manifest.json",
+      json({{"format", "airis-dataset"}, {"complete", false}, {"merge_in_progress", true}})
+          .dump(1));
   const json& first = shards.front().manifest;
   json manifest = first;
   manifest.erase("shard");
@@ -251,8 +292,22 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
 
   CopyNew(shards.front().dir / "labels.json", out / "labels.json");
   for (const auto& e : fs::directory_iterator(shards.front().dir)) {
-    if (e.is_regular_file() && e.path().extension() == ".csv")
+    if (e.is_regular_file() && e.path().extension() == ".csv" &&
+        e.path().filename() != "checksums.csv")
       JoinCsv(shards, e.path().filename(), out);
+  }
+  JoinChecksums(shards, out);
+  // Binary streams: every shard flew the same flight and logged the same samples.
+  for (const auto& e : fs::directory_iterator(shards.front().dir)) {
+    if (!e.is_regular_file() || e.path().extension() != ".npy") continue;
+    const auto bytes = engine::ReadFileBytes(e.path());
+    for (const Shard& s : shards) {
+      if (engine::ReadFileBytes(s.dir / e.path().filename()) != bytes) {
+        throw DatasetIoError((s.dir / e.path().filename()).string() + " differs from " +
+                             e.path().string() + ": the shards did not log the same flight");
+      }
+    }
+    engine::WriteFileAtomically(out / e.path().filename(), bytes);
   }
   CopyTree(shards, "tartanair", out, {"pose_left.txt", "pose_right.txt"});
   bool preview = false;
@@ -270,10 +325,18 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
       engine::WriteTartanAirPoses(out / name / "poses.csv", engine::TartanAirPosePath(out, slot));
     }
     manifest["cameras"][c]["frames"] = static_cast<std::int64_t>(frames.size());
+    if (camera.contains("depth_png")) {
+      std::int64_t clipped = 0;
+      for (const Shard& s : shards) {
+        clipped += s.manifest["cameras"][c]["depth_png"]["clipped_pixels"].get<std::int64_t>();
+      }
+      manifest["cameras"][c]["depth_png"]["clipped_pixels"] = clipped;
+    }
     summary.frames += static_cast<std::int64_t>(frames.size());
     if (!preview && !frames.empty() && Has(camera, "rgb") && Has(camera, "depth_png") &&
         Has(camera, "segmentation")) {
       engine::WriteContactSheet(out / name, frames, camera["near_m"].get<float>(),
+                                camera["depth_png"]["unit_m"].get<double>(),
                                 ReadPalette(out / "labels.json"), out / "preview.png");
       preview = true;
     }

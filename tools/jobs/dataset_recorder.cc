@@ -7,6 +7,7 @@
 #include "engine/dataset/coco_json.h"
 #include "engine/dataset/contact_sheet.h"
 #include "engine/dataset/file_io.h"
+#include "engine/dataset/image_encoding.h"
 
 namespace airis::tools {
 namespace {
@@ -17,9 +18,22 @@ std::string FrameFile(const char* kind, std::int64_t index, const char* ext) {
   return buf;
 }
 
-// The outputs a camera can give to a dataset: what the user asked for, of what the camera renders.
+// The outputs a camera gives to a dataset: what the user asked for, of what the camera renders.
+// The default outputs follow the camera; an extra format asked for on the command line that the
+// camera cannot give is refused, naming the camera.
 engine::DatasetOutputs OutputsFor(const engine::DatasetOutputs& wanted,
-                                  const engine::RenderOutputs& has) {
+                                  const engine::RenderOutputs& has, const std::string& camera) {
+  const auto refuse = [&](const char* format, const char* needs) {
+    throw engine::ConfigError({}, "--formats",
+                              std::string(format) + ": camera '" + camera + "' renders no " +
+                                  needs + " (add it to the camera's outputs, or leave the camera " +
+                                  "out with --cameras)");
+  };
+  if (wanted.normals && !has.normals) refuse("normals", "normals");
+  if (wanted.depth_npy && !has.depth_planar) refuse("npy", "planar depth");
+  if (wanted.tartanair && !(has.rgb && has.depth_planar && has.segmentation)) {
+    refuse("tartanair", "colour, planar depth and segmentation together");
+  }
   engine::DatasetOutputs o = wanted;
   o.rgb = wanted.rgb && has.rgb;
   o.depth_png = wanted.depth_png && has.depth_planar;
@@ -34,8 +48,14 @@ engine::DatasetOutputs OutputsFor(const engine::DatasetOutputs& wanted,
 }  // namespace
 
 struct DatasetRecorder::Recording {
+  // A row of poses.csv, kept until Finish: only frames that were written get one.
+  struct Pose {
+    std::int64_t index = 0;
+    engine::TimeNs time_ns = 0;
+    Eigen::Isometry3d T_WC;
+  };
   int writer_camera = 0;
-  std::unique_ptr<engine::CsvWriter> poses;
+  std::vector<Pose> poses;
   std::vector<engine::CocoImage> images;
   std::int64_t next_frame = 0;  // index of the next recorded frame (of every shard)
   std::int64_t pending = -1;    // index of the frame being rendered for this run, -1 if none
@@ -73,26 +93,12 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
       std::vector<std::size_t> cameras;
       for (const engine::ImageStream& s : streams) {
         auto rec = std::make_unique<Recording>();
-        const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs);
+        const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs, s.name);
         const engine::TartanAirSlot tartanair{s.rig, s.side};
-        rec->writer_camera = writer_.AddCamera(s.name, outputs, tartanair);
-        const std::vector<std::string> columns = {"time_ns",
-                                                  "time_s",
-                                                  "frame",
-                                                  "position_ned_x_m",
-                                                  "position_ned_y_m",
-                                                  "position_ned_z_m",
-                                                  "attitude_cam_to_ned_w",
-                                                  "attitude_cam_to_ned_x",
-                                                  "attitude_cam_to_ned_y",
-                                                  "attitude_cam_to_ned_z",
-                                                  "latitude_deg",
-                                                  "longitude_deg",
-                                                  "altitude_m"};
-        rec->poses =
-            std::make_unique<engine::CsvWriter>(options_.root / s.name / "poses.csv", columns);
+        const double depth_unit_m = engine::ChooseDepthUnit_m(s.intrinsics.far_m);
+        rec->writer_camera = writer_.AddCamera(s.name, outputs, tartanair, depth_unit_m);
         recordings_.push_back(std::move(rec));
-        info_.push_back({s, vehicle, outputs, tartanair, 0});
+        info_.push_back({s, vehicle, outputs, tartanair, depth_unit_m, 0, 0});
         cameras.push_back(recordings_.size() - 1);
       }
       image->set_sample_gate([this, cameras](engine::TimeNs now_ns) {
@@ -118,6 +124,7 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
     throw engine::ConfigError(
         {}, "scene", "the scene has no camera to record (add a 'camera' sensor to a vehicle)");
   }
+  if (options_.resume) writer_.LoadRecordedChecksums();
 }
 
 DatasetRecorder::~DatasetRecorder() = default;
@@ -152,27 +159,20 @@ void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& fra
   if (rec.pending < 0) return;  // the other eye of a stereo frame this run does not write
   const std::int64_t index = rec.pending;
   rec.pending = -1;
-  if (options_.resume && writer_.FrameComplete(rec.writer_camera, index)) {
+  std::string why;
+  if (options_.resume && writer_.VerifyFrame(rec.writer_camera, index, &why)) {
     writer_.Adopt(rec.writer_camera, index);
   } else {
+    // A frame an interrupted run left short or changed is written again, and said so.
+    if (options_.resume && why.find(": missing") == std::string::npos) {
+      redone_.push_back(info_[camera].stream.name + " frame " + std::to_string(index) + ": " + why);
+    }
     writer_.Submit(rec.writer_camera, index, std::make_shared<engine::CameraFrame>(frame));
   }
-  const Eigen::Vector3d p = frame.T_WC.translation();
-  const engine::Quat q(frame.T_WC.rotation());
-  const engine::GeodeticPosition g = world_.environment().frame().ToGeodetic(p);
-  engine::CsvWriter& out = *rec.poses;
-  out.Add(static_cast<std::int64_t>(frame.time_ns))
-      .Add(engine::ToSeconds(frame.time_ns))
-      .Add(index);
-  out.Add(p.x()).Add(p.y()).Add(p.z()).Add(q.w()).Add(q.x()).Add(q.y()).Add(q.z());
-  out.Add(engine::RadToDeg(g.latitude_rad))
-      .Add(engine::RadToDeg(g.longitude_rad))
-      .Add(g.altitude_m);
-  out.EndRow();
+  rec.poses.push_back({index, frame.time_ns, frame.T_WC});
   const engine::CameraIntrinsics& k = info_[camera].stream.intrinsics;
   rec.images.push_back({index, info_[camera].outputs.rgb ? FrameFile("rgb", index, ".png") : "",
                         k.width_px, k.height_px});
-  ++info_[camera].frames;
 }
 
 std::int64_t DatasetRecorder::frames_written() const { return writer_.frames_written(); }
@@ -181,21 +181,66 @@ void DatasetRecorder::Finish() {
   writer_.Flush();
   for (std::size_t i = 0; i < recordings_.size(); ++i) {
     Recording& rec = *recordings_[i];
-    rec.poses->Close();
-    const CameraInfo& info = info_[i];
+    CameraInfo& info = info_[i];
+    // Only frames whose files were written (or adopted) are listed, in frame order.
+    const auto& written = writer_.annotations(rec.writer_camera);
+    std::erase_if(rec.images, [&](const engine::CocoImage& im) {
+      return written.find(im.frame_index) == written.end();
+    });
+    std::erase_if(rec.poses,
+                  [&](const Recording::Pose& p) { return written.find(p.index) == written.end(); });
+    info.frames = static_cast<std::int64_t>(rec.poses.size());
+    info.clipped_depth_pixels = writer_.clipped_depth_pixels(rec.writer_camera);
+    const std::filesystem::path poses_csv = options_.root / info.stream.name / "poses.csv";
+    std::filesystem::create_directories(poses_csv.parent_path());
+    WritePoses(rec, poses_csv);
     if (info.outputs.segmentation) {
-      const nlohmann::json coco = engine::BuildCocoJson(
-          rec.images, writer_.annotations(rec.writer_camera), world_.scene().classes);
+      const nlohmann::json coco =
+          engine::BuildCocoJson(rec.images, written, world_.scene().classes);
       engine::WriteFileAtomically(options_.root / info.stream.name / "coco_instances.json",
                                   coco.dump(1));
     }
     if (info.outputs.tartanair) {
-      engine::WriteTartanAirPoses(rec.poses->path(),
+      std::filesystem::create_directories(
+          engine::TartanAirPosePath(options_.root, info.tartanair).parent_path());
+      engine::WriteTartanAirPoses(poses_csv,
                                   engine::TartanAirPosePath(options_.root, info.tartanair));
     }
   }
+  writer_.WriteChecksums();
   WriteLabels();
   WritePreview();
+}
+
+void DatasetRecorder::WritePoses(const Recording& rec, const std::filesystem::path& path) const {
+  static const std::vector<std::string> kColumns = {"time_ns",
+                                                    "time_s",
+                                                    "frame",
+                                                    "position_ned_x_m",
+                                                    "position_ned_y_m",
+                                                    "position_ned_z_m",
+                                                    "attitude_cam_to_ned_w",
+                                                    "attitude_cam_to_ned_x",
+                                                    "attitude_cam_to_ned_y",
+                                                    "attitude_cam_to_ned_z",
+                                                    "latitude_deg",
+                                                    "longitude_deg",
+                                                    "altitude_m"};
+  engine::CsvWriter out(path, kColumns);
+  for (const Recording::Pose& pose : rec.poses) {
+    const Eigen::Vector3d p = pose.T_WC.translation();
+    const engine::Quat q(pose.T_WC.rotation());
+    const engine::GeodeticPosition g = world_.environment().frame().ToGeodetic(p);
+    out.Add(static_cast<std::int64_t>(pose.time_ns))
+        .Add(engine::ToSeconds(pose.time_ns))
+        .Add(pose.index);
+    out.Add(p.x()).Add(p.y()).Add(p.z()).Add(q.w()).Add(q.x()).Add(q.y()).Add(q.z());
+    out.Add(engine::RadToDeg(g.latitude_rad))
+        .Add(engine::RadToDeg(g.longitude_rad))
+        .Add(g.altitude_m);
+    out.EndRow();
+  }
+  out.Close();
 }
 
 void DatasetRecorder::WriteLabels() const {
@@ -205,7 +250,8 @@ void DatasetRecorder::WriteLabels() const {
   const engine::SegmentationPalette palette = engine::CalcSegmentationPalette(scene.classes);
   for (const auto& c : scene.classes) {
     const auto& rgb = palette[c.id];  // the colour of the previews, so a merge redraws them exactly
-    classes.push_back({{"id", c.id}, {"name", c.name}, {"color", {rgb[0], rgb[1], rgb[2]}}});
+    classes.push_back(
+        {{"id", c.id}, {"name", c.name}, {"color", {rgb[0], rgb[1], rgb[2]}}, {"stuff", c.stuff}});
   }
   nlohmann::json& instances = labels["instances"] = nlohmann::json::array();
   for (const auto& o : scene.objects) {
@@ -222,10 +268,10 @@ void DatasetRecorder::WritePreview() const {
     if (!o.rgb || !o.depth_png || !o.segmentation || rec.images.empty()) continue;
     std::vector<std::int64_t> frames;
     for (const auto& image : rec.images) frames.push_back(image.frame_index);
-    engine::WriteContactSheet(options_.root / info_[i].stream.name, frames,
-                              static_cast<float>(info_[i].stream.intrinsics.near_m),
-                              engine::CalcSegmentationPalette(world_.scene().classes),
-                              options_.root / "preview.png");
+    engine::WriteContactSheet(
+        options_.root / info_[i].stream.name, frames,
+        static_cast<float>(info_[i].stream.intrinsics.near_m), info_[i].depth_unit_m,
+        engine::CalcSegmentationPalette(world_.scene().classes), options_.root / "preview.png");
     return;
   }
 }

@@ -40,7 +40,9 @@ class DatasetRecorder {
     std::string vehicle;
     engine::DatasetOutputs outputs;   ///< the files it writes per frame
     engine::TartanAirSlot tartanair;  ///< its place in the TartanAir layout (outputs.tartanair)
-    std::int64_t frames = 0;
+    double depth_unit_m = 0.001;      ///< of its depth PNGs (ChooseDepthUnit_m of its far plane)
+    std::int64_t frames = 0;          ///< written (after Finish) or submitted so far
+    std::int64_t clipped_depth_pixels = 0;  ///< beyond the depth PNG's range (after Finish)
   };
 
   /// Subscribes to the cameras. Throws ConfigError("--cameras") naming an unknown camera.
@@ -49,11 +51,15 @@ class DatasetRecorder {
 
   /// Starts or stops recording (mission capture step); rate_hz > 0 subsamples the cameras' frames.
   void SetCapture(const engine::CaptureStep& capture);
-  /// Waits for every frame, writes the per-camera COCO files, labels.json and preview.png.
+  /// Waits for every frame, then writes each camera's poses.csv and COCO file (listing only the
+  /// frames whose files were written), checksums.csv, labels.json and preview.png.
   void Finish();
 
   std::int64_t frames_written() const;
   const std::vector<CameraInfo>& cameras() const { return info_; }
+  /// Frames a resumed run found short, changed or unrecorded and wrote again, one line each
+  /// ("front frame 12: front/rgb/000012.png: 0 bytes, written with 523412").
+  const std::vector<std::string>& redone() const { return redone_; }
 
  private:
   struct Recording;
@@ -63,6 +69,7 @@ class DatasetRecorder {
   void OnFrame(std::size_t camera, const engine::CameraFrame& frame);
   void WritePreview() const;
   void WriteLabels() const;
+  void WritePoses(const Recording& rec, const std::filesystem::path& path) const;
 
   engine::World& world_;
   Options options_;
@@ -73,6 +80,7 @@ class DatasetRecorder {
   bool recording_ = false;
   std::vector<std::string> only_;  // capture-step camera filter (empty: all)
   double capture_rate_hz_ = 0.0;
+  std::vector<std::string> redone_;
 };
 
 }  // namespace airis::tools

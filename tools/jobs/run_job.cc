@@ -23,12 +23,15 @@ RunJobResult RunMissionJob(const RunJobOptions& o,
   std::unique_ptr<engine::TelemetryRecorder> telemetry;
   if (!o.out.empty()) {
     PrepareEmptyOutputFolder(o.out, "--out");
-    telemetry = std::make_unique<engine::TelemetryRecorder>(job.world(), o.out, o.truth_rate_hz);
+    engine::TelemetryOptions t;
+    t.truth_rate_hz = o.truth_rate_hz;
+    telemetry = std::make_unique<engine::TelemetryRecorder>(job.world(), o.out, t);
     telemetry->OnTick(0);
   }
   const RealtimePacer pacer(o.realtime.value_or(1.0));
   MissionFlight flight;
   flight.until_ns = o.until_ns;
+  flight.stop = o.stop;
   flight.progress = progress;
   flight.callbacks.after_tick = [&](engine::TimeNs now_ns) {
     if (telemetry) telemetry->OnTick(now_ns);

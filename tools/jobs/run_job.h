@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -18,6 +19,8 @@ struct RunJobOptions {
   std::optional<double> realtime;  ///< pace simulated time to wall time at this factor (> 0)
   engine::TimeNs until_ns = std::numeric_limits<engine::TimeNs>::max();  ///< stop early
   double truth_rate_hz = 100.0;  ///< ground-truth rows per simulated second
+  /// Set to a signal number to stop early (the logs are closed in place).
+  const std::atomic<int>* stop = nullptr;
 };
 
 /// What a finished `airis run` job did.

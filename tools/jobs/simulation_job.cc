@@ -69,8 +69,10 @@ MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
   const int steps = static_cast<int>(mission.steps.size());
   engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;
   // Slices of ticks, so that the progress line can be refreshed between them.
+  int interrupted_by = 0;
   while (state == engine::MissionRunner::State::kRunning &&
          sim.clock().now_ns() < flight.until_ns) {
+    if (flight.stop && (interrupted_by = flight.stop->load()) != 0) break;
     const engine::TimeNs end =
         std::min(flight.until_ns, sim.clock().now_ns() + flight.progress_every_ns);
     state = session.Run(end);
@@ -87,6 +89,7 @@ MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
   }
   MissionOutcome out;
   out.state = state;
+  out.interrupted_by = interrupted_by;
   out.failure = session.runner().failure();
   for (const auto& e : session.runner().events()) out.steps_done += e.what == "done";
   out.steps = steps;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -40,9 +41,10 @@ struct JobProgress {
 
 /// How a mission flight ended.
 struct MissionOutcome {
-  engine::MissionRunner::State state =
-      engine::MissionRunner::State::kRunning;  ///< kRunning: --until
-  std::string failure;                         ///< why it failed ("file:line: step 3 (goto): ...")
+  /// kRunning when stopped early: by `until_ns`, or by a signal (interrupted_by)
+  engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;
+  int interrupted_by = 0;  ///< the signal that stopped the flight (SIGINT, ...), 0 if none
+  std::string failure;     ///< why it failed ("file:line: step 3 (goto): ...")
   int steps_done = 0;
   int steps = 0;
   double distance_flown_m = 0.0;
@@ -58,6 +60,9 @@ struct MissionFlight {
   /// Called about every `progress_every_ns` of simulated time (between slices of ticks).
   std::function<void(const JobProgress&)> progress;
   engine::TimeNs progress_every_ns = 50'000'000;
+  /// When it holds a signal number (set by a front end's signal handler), the flight stops at the
+  /// end of the current slice and reports it.
+  const std::atomic<int>* stop = nullptr;
 };
 
 /// What every job starts from (`airis run`, `airis dataset`, `airis px4`, the Python API): the

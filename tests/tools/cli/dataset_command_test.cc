@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -58,12 +59,23 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
   EXPECT_TRUE(manifest["complete"].get<bool>());
   const std::int64_t frames = manifest["cameras"][0]["frames"];
   ASSERT_GE(frames, 4);
+  // The city camera's far plane (1500 m) sets its depth PNG's unit: 5 cm (ChooseDepthUnit_m).
+  const double unit_m = manifest["cameras"][0]["depth_png"]["unit_m"];
+  EXPECT_EQ(unit_m, 0.05);
+  EXPECT_EQ(manifest["cameras"][0]["depth_png"]["clipped_pixels"], 0);
   EXPECT_EQ(manifest["scene"]["sha256"].get<std::string>().size(), 64u);
   EXPECT_FALSE(manifest["renderer"]["gl_renderer"].get<std::string>().empty());
 
   const auto labels = nlohmann::json::parse(Bytes(dir / "labels.json"));
   std::map<std::uint32_t, int> class_of;
   for (const auto& i : labels["instances"]) class_of[i["id"]] = i["class_id"];
+  engine::AnnotationRules rules;
+  std::set<std::string> stuff_names;
+  for (const auto& c : labels["classes"]) {
+    rules.stuff[c["id"].get<int>()] = c["stuff"].get<bool>();
+    if (c["stuff"].get<bool>()) stuff_names.insert(c["name"].get<std::string>());
+  }
+  EXPECT_EQ(stuff_names, (std::set<std::string>{"ground", "road", "sidewalk", "water"}));
   const auto coco = nlohmann::json::parse(Bytes(dir / "front/coco_instances.json"));
   EXPECT_EQ(coco["images"].size(), static_cast<std::size_t>(frames));
   std::map<std::int64_t, std::vector<nlohmann::json>> anns_of;
@@ -84,20 +96,22 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
     const auto ins =
         engine::DecodePng16(engine::ReadFileBytes(dir / "front/seg_instance" / (name + ".png")));
     for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
-      // Depth PNG = float depth to 1 mm (0 = no return); labels agree with labels.json; sky is 0 in
-      // both maps.
+      // Depth PNG = float depth to half its unit (0 = no return, which only the sky is);
+      // labels agree with labels.json; sky is 0 in both maps.
       if (mm.pixels[p] != 0) {
-        ASSERT_LE(std::abs(mm.pixels[p] * 1e-3 - m.pixels[p]), 0.5e-3 + 1e-6);
+        ASSERT_LE(std::abs(mm.pixels[p] * unit_m - m.pixels[p]), 0.5 * unit_m + 1e-4);
       } else {
-        ASSERT_TRUE(std::isinf(m.pixels[p]) || m.pixels[p] > 65.5f);
+        ASSERT_TRUE(std::isinf(m.pixels[p]));
       }
       ASSERT_EQ(ins.pixels[p] == 0, cls.pixels[p] == 0);
       if (ins.pixels[p] != 0) {
         ASSERT_EQ(class_of.at(ins.pixels[p]), cls.pixels[p]);
       }
     }
-    // COCO boxes and areas equal the instance masks' bounds and pixel counts.
-    const auto expected = engine::ExtractInstanceAnnotations(ins, cls);
+    // COCO boxes and areas equal the instance masks' bounds and pixel counts, for the things:
+    // stuff classes (ground, road, sidewalk) stay in the label images only.
+    const auto expected = engine::ExtractInstanceAnnotations(ins, cls, rules);
+    for (const auto& a : anns_of[f]) EXPECT_FALSE(rules.stuff[a["category_id"].get<int>()]);
     ASSERT_EQ(anns_of[f].size(), expected.size()) << f;
     for (std::size_t i = 0; i < expected.size(); ++i) {
       const auto& a = anns_of[f][i];

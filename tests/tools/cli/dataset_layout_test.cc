@@ -66,6 +66,7 @@ objects:
           width_px: 320
           height_px: 240
           hfov_deg: 90
+          far_m: 60
           outputs: {rgb: true, depth_planar: true, segmentation: true}
           mount: {position_frd_m: [0, 0, 0.1], pitch_deg: -90}
       - name: pair
@@ -110,6 +111,8 @@ TEST(DatasetLayoutTest, ManifestIntrinsicsAndPosesPutEachBallWhereItWasDrawn) {
   ASSERT_EQ(manifest["cameras"].size(), 1u);
   const json& cam = manifest["cameras"][0];
   const double fx = cam["fx"], fy = cam["fy"], cx = cam["cx"], cy = cam["cy"];
+  const double depth_unit_m = cam["depth_png"]["unit_m"];  // 1 mm: the far plane is 60 m
+  EXPECT_EQ(depth_unit_m, 0.001);
   std::map<std::uint32_t, std::string> object_of;
   const json labels = ReadJson(dir / "labels.json");
   for (const json& i : labels["instances"]) object_of[i["id"]] = i["name"];
@@ -156,8 +159,9 @@ TEST(DatasetLayoutTest, ManifestIntrinsicsAndPosesPutEachBallWhereItWasDrawn) {
       // 25 mm, against a 14.7 m range: a wrong depth convention (perspective for planar: over 1 m
       // off at the outer balls) fails.
       const double depth_m = (p_C.norm() - kBallRadiusM) * p_C.z() / p_C.norm();
-      EXPECT_NEAR(mm.at(static_cast<int>(std::lround(u)), static_cast<int>(std::lround(v))) * 1e-3,
-                  depth_m, 0.025)
+      EXPECT_NEAR(
+          mm.at(static_cast<int>(std::lround(u)), static_cast<int>(std::lround(v))) * depth_unit_m,
+          depth_m, 0.025)
           << ball << " frame " << name;
       ++balls_checked;
     }
