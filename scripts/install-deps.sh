@@ -7,6 +7,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config git
   python3                  # cmake/check_layers.py (the build's layer check)
+  python3-numpy            # the tests read .npy streams back with NumPy
   clang-format             # the format check of the test suite (cmake/check_format.sh)
   libeigen3-dev            # all vector and matrix math
   libbullet-dev            # collision detection (broadphase, narrowphase, contacts)

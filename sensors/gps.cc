@@ -79,8 +79,10 @@ double Gps::CalcEpv_m(TimeNs t_ns) const {
 
 std::span<const std::string> Gps::columns() const { return kColumns; }
 
-bool Gps::IsDoubleColumn(std::size_t column) const {
-  return column == 1 || column == 2 || column == 3 || column == 8;
+engine::LogType Gps::column_type(std::size_t column) const {
+  if (column == 0) return engine::LogType::kInt64;
+  const bool wide = column == 1 || column == 2 || column == 3 || column == 8;
+  return wide ? engine::LogType::kFloat64 : engine::LogType::kFloat32;
 }
 
 void Gps::CopyLatestRow(std::span<double> out) const {

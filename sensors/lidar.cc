@@ -92,6 +92,10 @@ double Lidar::points_per_second() const {
 
 std::span<const std::string> Lidar::columns() const { return kColumns; }
 
+engine::LogType Lidar::column_type(std::size_t column) const {
+  return column != 2 ? engine::LogType::kInt64 : engine::LogType::kFloat32;
+}
+
 void Lidar::CopyLatestRow(std::span<double> out) const {
   AIRIS_DEMAND(out.size() == std::size(kColumns));
   float nearest = 0.0f;

@@ -118,6 +118,8 @@ class Lidar final : public engine::Sensor {
   double points_per_second() const;
 
   std::span<const std::string> columns() const override;
+  /// The point and hit counts are whole numbers.
+  engine::LogType column_type(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;
 
  protected:

@@ -38,6 +38,10 @@ Rangefinder::Rangefinder(std::string name, const RangefinderConfig& config,
 
 std::span<const std::string> Rangefinder::columns() const { return kColumns; }
 
+engine::LogType Rangefinder::column_type(std::size_t column) const {
+  return column != 1 ? engine::LogType::kInt64 : engine::LogType::kFloat32;
+}
+
 void Rangefinder::CopyLatestRow(std::span<double> out) const {
   AIRIS_DEMAND(out.size() == std::size(kColumns));
   out[0] = latest_.hit ? 1.0 : 0.0;

@@ -26,6 +26,8 @@ const char* Descr(NpyField f) {
       return "<f8";
     case NpyField::kFloat32:
       return "<f4";
+    case NpyField::kUint8:
+      return "|u1";
   }
   return "<f8";
 }
@@ -81,6 +83,9 @@ void NpyStreamWriter::AddRow(std::span<const double> values) {
       std::memcpy(bytes, &v, 8);
     } else if (fields_[i] == NpyField::kFloat64) {
       std::memcpy(bytes, &values[i], 8);
+    } else if (fields_[i] == NpyField::kUint8) {
+      bytes[0] = static_cast<std::uint8_t>(values[i]);
+      n = 1;
     } else {
       const auto v = static_cast<float>(values[i]);
       std::memcpy(bytes, &v, 4);

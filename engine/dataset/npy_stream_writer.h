@@ -10,12 +10,12 @@
 namespace airis::engine {
 
 /// The type of one field of an NpyStreamWriter's rows.
-enum class NpyField { kInt64, kFloat64, kFloat32 };
+enum class NpyField { kInt64, kFloat64, kFloat32, kUint8 };
 
 /// A sensor stream as a NumPy .npy file (format 1.0) holding a one-dimensional structured array:
 /// one record per row, one named field per column (`numpy.load(path)["time_ns"]`), little-endian
-/// int64, float64 or float32. Rows are appended as they come; the header's row count is written by
-/// Close(). Written to `<path>.partial` and renamed by Close(), like CsvWriter.
+/// int64, float64, float32 or uint8. Rows are appended as they come; the header's row count is
+/// written by Close(). Written to `<path>.partial` and renamed by Close(), like CsvWriter.
 class NpyStreamWriter {
  public:
   /// Opens the file; throws DatasetIoError naming the path. `names` and `fields` have one entry

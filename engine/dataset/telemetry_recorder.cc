@@ -1,5 +1,6 @@
 #include "engine/dataset/telemetry_recorder.h"
 
+#include "engine/core/config.h"
 #include "engine/core/frames.h"
 #include "engine/dataset/file_io.h"
 
@@ -11,7 +12,73 @@ std::vector<std::string> TimeColumns(std::vector<std::string> rest) {
   return rest;
 }
 
+void AddVec3(std::vector<LogColumn>& out, const std::string& prefix, const std::string& unit,
+             LogType type) {
+  for (const char* axis : {"x", "y", "z"}) {
+    out.push_back({prefix + "_" + axis + (unit.empty() ? "" : "_" + unit), type, {}});
+  }
+}
+
+void AddQuat(std::vector<LogColumn>& out, const std::string& prefix, LogType type) {
+  for (const char* part : {"w", "x", "y", "z"}) out.push_back({prefix + "_" + part, type, {}});
+}
+
+std::size_t ModeIndex(CommandMode mode) {
+  const auto names = EnumNames(CommandMode{});
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].value == mode) return i;
+  }
+  return 0;
+}
+
 }  // namespace
+
+std::vector<LogColumn> TelemetryRecorder::TruthColumns() {
+  using enum LogType;
+  std::vector<LogColumn> c;
+  AddVec3(c, "position_ned", "m", kFloat64);
+  AddVec3(c, "velocity_ned", "m_s", kFloat32);
+  AddQuat(c, "attitude_frd_to_ned", kFloat32);  // resolves 1e-7 rad
+  for (const char* angle : {"roll_deg", "pitch_deg", "yaw_deg"}) c.push_back({angle, kFloat32, {}});
+  AddVec3(c, "angular_velocity_frd", "rad_s", kFloat32);
+  AddVec3(c, "acceleration_ned", "m_s2", kFloat32);
+  for (const char* g : {"latitude_deg", "longitude_deg", "altitude_m"}) {
+    c.push_back({g, kFloat64, {}});
+  }
+  return c;
+}
+
+std::vector<LogColumn> TelemetryRecorder::CommandColumns(int actuator_count) {
+  using enum LogType;
+  std::vector<LogColumn> c;
+  LogColumn mode{"mode", kLabel, {}};
+  for (const auto& n : EnumNames(CommandMode{})) mode.labels.emplace_back(n.name);
+  c.push_back(std::move(mode));
+  AddVec3(c, "position_setpoint_ned", "m", kFloat64);
+  AddVec3(c, "velocity_setpoint_ned", "m_s", kFloat32);
+  AddVec3(c, "acceleration_setpoint_ned", "m_s2", kFloat32);
+  c.push_back({"speed_limit_m_s", kFloat32, {}});
+  c.push_back({"yaw_setpoint_deg", kFloat32, {}});
+  AddQuat(c, "attitude_setpoint_frd_to_ned", kFloat32);
+  AddVec3(c, "rates_setpoint_frd", "rad_s", kFloat32);
+  c.push_back({"thrust_fraction", kFloat32, {}});
+  for (int a = 0; a < actuator_count; ++a)
+    c.push_back({"actuator_" + std::to_string(a), kFloat32, {}});
+  return c;
+}
+
+std::vector<std::string> TelemetryRecorder::FileNames(const World& world, StreamFormat format) {
+  std::vector<std::string> out = {"collisions.csv", "mission_events.csv"};
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    const std::string& name = world.vehicle(v).name();
+    out.push_back(StreamWriter::FileName(name + ".truth", format));
+    out.push_back(StreamWriter::FileName(name + ".commands", format));
+    for (const auto& s : world.sensors(v)) {
+      if (!s->image()) out.push_back(StreamWriter::FileName(name + "." + s->name(), format));
+    }
+  }
+  return out;
+}
 
 TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& dir,
                                      const TelemetryOptions& options)
@@ -19,97 +86,30 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
       options_(options),
       truth_schedule_(options.truth_rate_hz),
       recording_(!options.window_only) {
-  truth_ =
-      std::make_unique<CsvWriter>(dir / "truth.csv", TimeColumns({"vehicle",
-                                                                  "position_ned_x_m",
-                                                                  "position_ned_y_m",
-                                                                  "position_ned_z_m",
-                                                                  "velocity_ned_x_m_s",
-                                                                  "velocity_ned_y_m_s",
-                                                                  "velocity_ned_z_m_s",
-                                                                  "attitude_frd_to_ned_w",
-                                                                  "attitude_frd_to_ned_x",
-                                                                  "attitude_frd_to_ned_y",
-                                                                  "attitude_frd_to_ned_z",
-                                                                  "roll_deg",
-                                                                  "pitch_deg",
-                                                                  "yaw_deg",
-                                                                  "angular_velocity_frd_x_rad_s",
-                                                                  "angular_velocity_frd_y_rad_s",
-                                                                  "angular_velocity_frd_z_rad_s",
-                                                                  "acceleration_ned_x_m_s2",
-                                                                  "acceleration_ned_y_m_s2",
-                                                                  "acceleration_ned_z_m_s2",
-                                                                  "latitude_deg",
-                                                                  "longitude_deg",
-                                                                  "altitude_m"}));
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
-    std::vector<std::string> cols = {"mode",
-                                     "position_setpoint_ned_x_m",
-                                     "position_setpoint_ned_y_m",
-                                     "position_setpoint_ned_z_m",
-                                     "velocity_setpoint_ned_x_m_s",
-                                     "velocity_setpoint_ned_y_m_s",
-                                     "velocity_setpoint_ned_z_m_s",
-                                     "acceleration_setpoint_ned_x_m_s2",
-                                     "acceleration_setpoint_ned_y_m_s2",
-                                     "acceleration_setpoint_ned_z_m_s2",
-                                     "speed_limit_m_s",
-                                     "yaw_setpoint_deg",
-                                     "attitude_setpoint_frd_to_ned_w",
-                                     "attitude_setpoint_frd_to_ned_x",
-                                     "attitude_setpoint_frd_to_ned_y",
-                                     "attitude_setpoint_frd_to_ned_z",
-                                     "rates_setpoint_frd_x_rad_s",
-                                     "rates_setpoint_frd_y_rad_s",
-                                     "rates_setpoint_frd_z_rad_s",
-                                     "thrust_fraction"};
-    for (int a = 0; a < world.vehicle(v).actuator_count(); ++a) {
-      cols.push_back("actuator_" + std::to_string(a));
-    }
-    commands_.push_back(std::make_unique<CsvWriter>(
-        PathUnder(dir, world.vehicle(v).name() + ".commands.csv"), TimeColumns(cols)));
+    const Vehicle& vehicle = world.vehicle(v);
+    truth_.push_back(std::make_unique<StreamWriter>(dir, vehicle.name() + ".truth", TruthColumns(),
+                                                    options.format));
+    commands_.push_back(std::make_unique<StreamWriter>(dir, vehicle.name() + ".commands",
+                                                       CommandColumns(vehicle.actuator_count()),
+                                                       options.format));
   }
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& sensor : world.sensors(v)) {
       // Images are recorded by the dataset recorder, with their poses in <camera>/poses.csv.
       if (sensor->image()) continue;
-      const std::string stream = world.vehicle(v).name() + "." + sensor->name();
-      const std::vector<std::string> cols =
-          TimeColumns({sensor->columns().begin(), sensor->columns().end()});
-      auto out = std::make_unique<SensorStream>();
-      if (options_.sensor_format == StreamFormat::kNpy) {
-        std::vector<NpyField> fields = {NpyField::kInt64, NpyField::kFloat64};
-        for (std::size_t c = 0; c < sensor->columns().size(); ++c) {
-          fields.push_back(sensor->IsDoubleColumn(c) ? NpyField::kFloat64 : NpyField::kFloat32);
-        }
-        out->npy = std::make_unique<NpyStreamWriter>(PathUnder(dir, stream + ".npy"), cols, fields);
-      } else {
-        out->csv = std::make_unique<CsvWriter>(PathUnder(dir, stream + ".csv"), cols);
+      std::vector<LogColumn> columns;
+      for (std::size_t c = 0; c < sensor->columns().size(); ++c) {
+        columns.push_back({sensor->columns()[c], sensor->column_type(c), {}});
       }
-      SensorStream* target = out.get();
-      sensors_.push_back(std::move(out));
+      sensors_.push_back(std::make_unique<StreamWriter>(
+          dir, world.vehicle(v).name() + "." + sensor->name(), std::move(columns), options.format));
+      StreamWriter* target = sensors_.back().get();
       sensor->AddListener([this, target](const Sensor& s) {
         if (!recording_) return;
-        const std::size_t n = s.columns().size();
-        row_.resize(n + 2);
-        row_[0] = static_cast<double>(s.last_sample_ns());
-        row_[1] = ToSeconds(s.last_sample_ns());
-        s.CopyLatestRow(std::span<double>(row_).subspan(2));
-        if (target->npy) {
-          target->npy->AddRow(row_);
-          return;
-        }
-        CsvWriter& csv = *target->csv;
-        csv.Add(static_cast<std::int64_t>(s.last_sample_ns())).Add(row_[1]);
-        for (std::size_t c = 0; c < n; ++c) {
-          if (s.IsDoubleColumn(c)) {
-            csv.Add(row_[c + 2]);
-          } else {
-            csv.AddFloat(row_[c + 2]);
-          }
-        }
-        csv.EndRow();
+        row_.resize(s.columns().size());
+        s.CopyLatestRow(row_);
+        target->AddRow(s.last_sample_ns(), row_);
       });
     }
   }
@@ -134,41 +134,43 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
 
 void TelemetryRecorder::OnTick(TimeNs now_ns) {
   if (truth_schedule_.ConsumeDue(now_ns) == 0 || !recording_) return;
-  const LocalNedFrame& frame = world_.environment().frame();
   for (std::size_t v = 0; v < world_.vehicle_count(); ++v) {
-    const RigidBodyState& s = world_.vehicle(v).state();
-    const RigidBodyAccelerations& a = world_.accelerations(v);
-    const EulerAngles e = EulerFromQuat(s.q_WB);
-    const GeodeticPosition g = frame.ToGeodetic(s.p_W);
-    CsvWriter& out = *truth_;
-    out.Add(static_cast<std::int64_t>(now_ns)).Add(ToSeconds(now_ns)).Add(world_.vehicle(v).name());
-    for (int i = 0; i < 3; ++i) out.Add(s.p_W[i]);
-    for (int i = 0; i < 3; ++i) out.Add(s.v_W[i]);
-    out.Add(s.q_WB.w()).Add(s.q_WB.x()).Add(s.q_WB.y()).Add(s.q_WB.z());
-    out.Add(RadToDeg(e.roll_rad)).Add(RadToDeg(e.pitch_rad)).Add(RadToDeg(e.yaw_rad));
-    for (int i = 0; i < 3; ++i) out.Add(s.w_B[i]);
-    for (int i = 0; i < 3; ++i) out.Add(a.a_W[i]);
-    out.Add(RadToDeg(g.latitude_rad)).Add(RadToDeg(g.longitude_rad)).Add(g.altitude_m);
-    out.EndRow();
+    WriteTruthRow(v, now_ns);
     WriteCommandRow(v, now_ns);
   }
+}
+
+void TelemetryRecorder::WriteTruthRow(std::size_t v, TimeNs now_ns) {
+  const RigidBodyState& s = world_.vehicle(v).state();
+  const RigidBodyAccelerations& a = world_.accelerations(v);
+  const EulerAngles e = EulerFromQuat(s.q_WB);
+  const GeodeticPosition g = world_.environment().frame().ToGeodetic(s.p_W);
+  row_.clear();
+  for (int i = 0; i < 3; ++i) row_.push_back(s.p_W[i]);
+  for (int i = 0; i < 3; ++i) row_.push_back(s.v_W[i]);
+  row_.insert(row_.end(), {s.q_WB.w(), s.q_WB.x(), s.q_WB.y(), s.q_WB.z()});
+  row_.insert(row_.end(), {RadToDeg(e.roll_rad), RadToDeg(e.pitch_rad), RadToDeg(e.yaw_rad)});
+  for (int i = 0; i < 3; ++i) row_.push_back(s.w_B[i]);
+  for (int i = 0; i < 3; ++i) row_.push_back(a.a_W[i]);
+  row_.insert(row_.end(), {RadToDeg(g.latitude_rad), RadToDeg(g.longitude_rad), g.altitude_m});
+  truth_[v]->AddRow(now_ns, row_);
 }
 
 void TelemetryRecorder::WriteCommandRow(std::size_t v, TimeNs now_ns) {
   const Vehicle& vehicle = world_.vehicle(v);
   const VehicleCommand& c = vehicle.command();
-  CsvWriter& out = *commands_[v];
-  out.Add(static_cast<std::int64_t>(now_ns)).Add(ToSeconds(now_ns));
-  out.Add(std::string(ToString(c.mode)));
-  for (int i = 0; i < 3; ++i) out.Add(c.position_W[i]);
-  for (int i = 0; i < 3; ++i) out.Add(c.velocity_W[i]);
-  for (int i = 0; i < 3; ++i) out.Add(c.acceleration_W[i]);
-  out.Add(c.speed_limit_m_s).Add(RadToDeg(c.yaw_rad));
-  out.Add(c.attitude_WB.w()).Add(c.attitude_WB.x()).Add(c.attitude_WB.y()).Add(c.attitude_WB.z());
-  for (int i = 0; i < 3; ++i) out.Add(c.rates_B[i]);
-  out.Add(c.thrust_fraction);
-  for (double u : vehicle.actuator_commands()) out.Add(u);
-  out.EndRow();
+  row_.clear();
+  row_.push_back(static_cast<double>(ModeIndex(c.mode)));
+  for (int i = 0; i < 3; ++i) row_.push_back(c.position_W[i]);
+  for (int i = 0; i < 3; ++i) row_.push_back(c.velocity_W[i]);
+  for (int i = 0; i < 3; ++i) row_.push_back(c.acceleration_W[i]);
+  row_.insert(row_.end(), {c.speed_limit_m_s, RadToDeg(c.yaw_rad)});
+  row_.insert(row_.end(),
+              {c.attitude_WB.w(), c.attitude_WB.x(), c.attitude_WB.y(), c.attitude_WB.z()});
+  for (int i = 0; i < 3; ++i) row_.push_back(c.rates_B[i]);
+  row_.push_back(c.thrust_fraction);
+  for (double u : vehicle.actuator_commands()) row_.push_back(u);
+  commands_[v]->AddRow(now_ns, row_);
 }
 
 void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index,
@@ -179,12 +181,9 @@ void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index,
 }
 
 void TelemetryRecorder::Close() {
-  truth_->Close();
+  for (auto& t : truth_) t->Close();
   for (auto& c : commands_) c->Close();
-  for (auto& s : sensors_) {
-    if (s->csv) s->csv->Close();
-    if (s->npy) s->npy->Close();
-  }
+  for (auto& s : sensors_) s->Close();
   collisions_->Close();
   events_->Close();
 }

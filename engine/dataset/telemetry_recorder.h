@@ -7,32 +7,31 @@
 
 #include "engine/core/clock.h"
 #include "engine/dataset/csv_writer.h"
-#include "engine/dataset/npy_stream_writer.h"
+#include "engine/dataset/stream_writer.h"
 #include "engine/world/world.h"
 
 namespace airis::engine {
 
 /// What a TelemetryRecorder writes.
-enum class StreamFormat { kCsv, kNpy };
 struct TelemetryOptions {
-  double truth_rate_hz = 100.0;  ///< truth.csv and <vehicle>.commands.csv rows per second
+  double truth_rate_hz = 100.0;  ///< truth and command rows per second
   /// Sensor, truth and command rows only while SetRecording(true) (a dataset's capture window);
   /// collisions and mission events always.
   bool window_only = false;
-  /// Sensor streams as CSV, or as NumPy structured arrays (<vehicle>.<sensor>.npy).
-  StreamFormat sensor_format = StreamFormat::kCsv;
+  /// Sensor, truth and command streams as CSV or as NumPy structured arrays.
+  StreamFormat format = StreamFormat::kCsv;
 };
 
-/// Writes a run's telemetry as CSV files in one folder (docs/dataset-format.md, "Streams"):
-///   truth.csv             ground truth of every vehicle at `truth_rate_hz`
-///   <vehicle>.commands.csv the command each vehicle follows (mode, setpoints) and its actuator
-///                          commands, at `truth_rate_hz`
-///   <vehicle>.<sensor>.csv every sample of every sensor but image sensors, at the sensor's own
-///                          rate; readings as float32, positions (GPS) as double
-///   collisions.csv        every collision event
-///   mission_events.csv    every mission step start / finish / failure
-/// Every row starts with the simulated time as integer nanoseconds and as seconds. Units are in the
-/// headers.
+/// Writes a run's telemetry into one folder (docs/dataset-format.md, "Streams"); <ext> is csv or
+/// npy (TelemetryOptions::format):
+///   <vehicle>.truth.<ext>     ground truth of each vehicle at `truth_rate_hz`
+///   <vehicle>.commands.<ext>  the command each vehicle follows (mode, setpoints) and its
+///                             actuator commands, at `truth_rate_hz`
+///   <vehicle>.<sensor>.<ext>  every sample of every sensor but image sensors, at its own rate
+///   collisions.csv            every collision event
+///   mission_events.csv        every mission step start / finish / failure
+/// Every row starts with the simulated time in integer nanoseconds (CSV: and in seconds). Units
+/// are in the column names; readings are float32, positions float64 (LogType).
 class TelemetryRecorder {
  public:
   /// Opens the files and subscribes to the world's sensors and collisions. Throws DatasetIoError.
@@ -52,23 +51,26 @@ class TelemetryRecorder {
 
   std::int64_t collision_count() const { return collisions_->rows(); }
 
+  /// The files a recorder writes for `world`, in a stable order.
+  static std::vector<std::string> FileNames(const World& world, StreamFormat format);
+  /// The columns of <vehicle>.truth and of <vehicle>.commands (after time).
+  static std::vector<LogColumn> TruthColumns();
+  static std::vector<LogColumn> CommandColumns(int actuator_count);
+
  private:
-  struct SensorStream {
-    std::unique_ptr<CsvWriter> csv;
-    std::unique_ptr<NpyStreamWriter> npy;
-  };
+  void WriteTruthRow(std::size_t vehicle, TimeNs now_ns);
   void WriteCommandRow(std::size_t vehicle, TimeNs now_ns);
 
   World& world_;
   TelemetryOptions options_;
   RateSchedule truth_schedule_;
-  std::unique_ptr<CsvWriter> truth_;
-  std::vector<std::unique_ptr<CsvWriter>> commands_;  // per vehicle
-  std::vector<std::unique_ptr<SensorStream>> sensors_;
+  std::vector<std::unique_ptr<StreamWriter>> truth_;     // per vehicle
+  std::vector<std::unique_ptr<StreamWriter>> commands_;  // per vehicle
+  std::vector<std::unique_ptr<StreamWriter>> sensors_;
   bool recording_ = true;
   std::unique_ptr<CsvWriter> collisions_;
   std::unique_ptr<CsvWriter> events_;
-  std::vector<double> row_;  // scratch for sensor rows
+  std::vector<double> row_;  // scratch
 };
 
 }  // namespace airis::engine

@@ -8,6 +8,7 @@
 #include "engine/core/clock.h"
 #include "engine/environment/environment.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/world/log_column.h"
 #include "engine/world/ray_caster.h"
 
 namespace airis::engine {
@@ -47,11 +48,11 @@ class Sensor {
   virtual std::span<const std::string> columns() const = 0;
   /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
   virtual void CopyLatestRow(std::span<double> out) const = 0;
-  /// True for a column that needs double precision in logs (a GPS latitude); the others are
-  /// readings whose noise float32 resolves (logs write them as float32).
-  virtual bool IsDoubleColumn(std::size_t column) const {
+  /// How logs store a column: float32 unless the sensor says otherwise (a GPS latitude needs
+  /// float64, its fix type is a whole number).
+  virtual LogType column_type(std::size_t column) const {
     (void)column;
-    return false;
+    return LogType::kFloat32;
   }
 
   /// This sensor as an image sensor, or null when it produces no images.

@@ -33,7 +33,7 @@ struct DatasetArgs {
   int workers = 2;
   std::int64_t min_object_area_px = 16;
   std::string streams = "capture";
-  std::string stream_format = "csv";
+  std::string stream_format = "npy";
   bool resume = false;
 };
 
@@ -85,7 +85,7 @@ std::string ResumeCommand(const DatasetArgs& a) {
       {"--shard", &a.shard},
       {"--stream-format", &a.stream_format}};
   for (const auto& [flag, value] : options) {
-    if (!value->empty() && !(std::string(flag) == "--stream-format" && *value == "csv")) {
+    if (!value->empty() && !(std::string(flag) == "--stream-format" && *value == "npy")) {
       c += std::string(" ") + flag + " " + *value;
     }
   }
@@ -207,8 +207,9 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--streams", a->streams,
                   "sensor, truth and command rows of the capture windows (capture, default) or "
                   "of the whole flight (flight)");
-  cmd->add_option("--stream-format", a->stream_format,
-                  "sensor streams as csv (default) or npy (NumPy structured arrays)");
+  cmd->add_option(
+      "--stream-format", a->stream_format,
+      "sensor, truth and command streams as npy (NumPy structured arrays, default) or csv");
   cmd->add_option("--min-object-area-px", a->min_object_area_px,
                   "instances with fewer visible pixels get no COCO annotation (default 16)");
   cmd->add_flag("--resume", a->resume,

@@ -46,11 +46,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   const std::size_t vehicle = job.MissionVehicle(mission);
   const fs::path manifest_path = fs::path(o.out) / "manifest.json";
   nlohmann::json existing;
-  if (o.resume) {
-    existing = ReadDatasetManifest(o.out);
-  } else {
-    PrepareEmptyOutputFolder(o.out, "--out");
-  }
+  if (o.resume) existing = ReadDatasetManifest(o.out);
 
   DatasetRecorder::Options ro;
   ro.root = o.out;
@@ -62,7 +58,9 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   for (const auto& c : job.world().scene().classes) ro.writer.annotations.stuff[c.id] = c.stuff;
   ro.shard_index = o.shard.index - 1;
   ro.shard_count = o.shard.count;
-  DatasetRecorder recorder(job.world(), ro);
+  DatasetRecorder recorder(job.world(),
+                           ro);  // refuses outputs a camera cannot give; writes nothing
+  if (!o.resume) PrepareEmptyOutputFolder(o.out, "--out");
   ManifestSource source{o.scene.path,         o.mission,      o.outputs,      o.shard,
                         o.min_object_area_px, o.full_streams, o.stream_format};
   const nlohmann::json start =
@@ -80,7 +78,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   engine::WriteFileAtomically(manifest_path, start.dump(1));
   engine::TelemetryOptions t;
   t.window_only = !o.full_streams;
-  t.sensor_format = o.stream_format;
+  t.format = o.stream_format;
   engine::TelemetryRecorder telemetry(job.world(), o.out, t);
   telemetry.OnTick(0);
 

@@ -27,7 +27,7 @@ struct DatasetJobOptions {
   std::int64_t min_object_area_px = 16;
   /// Sensor, truth and command streams of the whole flight (true) or of the capture windows only.
   bool full_streams = false;
-  engine::StreamFormat stream_format = engine::StreamFormat::kCsv;  ///< sensor streams' format
+  engine::StreamFormat stream_format = engine::StreamFormat::kNpy;  ///< streams' format
   bool resume = false;  ///< continue an interrupted run in `out`
   /// Set to a signal number to stop: the frame in flight is finished, the outputs are written and
   /// the manifest says incomplete (a front end's signal handler sets it).

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <filesystem>
+#include <span>
 
 #include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
@@ -59,7 +60,7 @@ nlohmann::json OutputsJson(const engine::DatasetOutputs& o) {
 }
 nlohmann::json FormatsJson(const engine::DatasetOutputs& o) {
   nlohmann::json formats =
-      NamesOf(o, {"rgb_png", "depth_png_mm", "depth_npy_m", "seg_png", "normals_npy", "tartanair"});
+      NamesOf(o, {"rgb_png", "depth_png", "depth_npy_m", "seg_png", "normals_npy", "tartanair"});
   formats.push_back("coco_instances");
   return formats;
 }
@@ -122,16 +123,9 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
     cams.push_back(CameraJson(c));
     frames += c.frames;
   }
-  nlohmann::json streams =
-      nlohmann::json::array({"truth.csv", "collisions.csv", "mission_events.csv"});
-  const char* ext = o.stream_format == engine::StreamFormat::kNpy ? ".npy" : ".csv";
-  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
-    streams.push_back(world.vehicle(v).name() + ".commands.csv");
-    for (const auto& s : world.sensors(v)) {
-      if (!s->image()) streams.push_back(world.vehicle(v).name() + "." + s->name() + ext);
-    }
-  }
-  m["streams"] = streams;
+  m["streams"] = engine::TelemetryRecorder::FileNames(world, o.stream_format);
+  nlohmann::json& modes = m["command_modes"] = nlohmann::json::array();
+  for (const auto& n : EnumNames(engine::CommandMode{})) modes.push_back(n.name);
   m["streams_span"] = o.full_streams ? "flight" : "capture";
   m["counts"] = {{"frames", frames}, {"simulated_time_s", sim_s}};
   m["formats"] = FormatsJson(o.outputs);
@@ -164,18 +158,20 @@ nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& op
 }
 
 std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now) {
-  // What makes a frame of one run interchangeable with the same frame of another.
-  static constexpr const char* kKeys[] = {
-      "/format",         "/format_version", "/airis_version", "/scene/sha256", "/scene/seed",
-      "/mission/sha256", "/formats",        "/annotations",   "/streams",      "/streams_span"};
-  for (const char* key : kKeys) {
-    const nlohmann::json::json_pointer p(key);
-    const nlohmann::json a = existing.contains(p) ? existing.at(p) : nlohmann::json();
-    const nlohmann::json b = now.contains(p) ? now.at(p) : nlohmann::json();
-    if (a != b) {
-      return std::string(key + 1) + " (was " + a.dump() + ", now " + b.dump() + ")";
+  // What makes a frame of one run interchangeable with the same frame of another, the most
+  // specific first: a camera edited in the scene is named as that camera's key, not as the scene's
+  // hash.
+  const auto differs = [&](std::span<const char* const> keys) -> std::string {
+    for (const char* key : keys) {
+      const nlohmann::json::json_pointer p(key);
+      const nlohmann::json a = existing.contains(p) ? existing.at(p) : nlohmann::json();
+      const nlohmann::json b = now.contains(p) ? now.at(p) : nlohmann::json();
+      if (a != b) return std::string(key + 1) + " (was " + a.dump() + ", now " + b.dump() + ")";
     }
-  }
+    return "";
+  };
+  static constexpr const char* kFormat[] = {"/format", "/format_version", "/airis_version"};
+  if (std::string d = differs(kFormat); !d.empty()) return d;
   const nlohmann::json no_shard = {{"index", 1}, {"count", 1}};
   const nlohmann::json a = existing.value("shard", no_shard), b = now.value("shard", no_shard);
   if (a != b) return "shard (was " + a.dump() + ", now " + b.dump() + ")";
@@ -193,14 +189,20 @@ std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::j
            " now)";
   }
   for (std::size_t i = 0; i < ca.size(); ++i) {
+    std::string keys;  // every key that differs: a width edit also moves cx
     for (const auto& [key, value] : cb[i].items()) {
       if (!ca[i].contains(key) || ca[i][key] != value) {
-        return "cameras[" + std::to_string(i) + "]." + key + " (was " +
-               (ca[i].contains(key) ? ca[i][key].dump() : "absent") + ", now " + value.dump() + ")";
+        keys += std::string(keys.empty() ? "" : ", ") + "cameras[" + std::to_string(i) + "]." +
+                key + " (was " + (ca[i].contains(key) ? ca[i][key].dump() : "absent") + ", now " +
+                value.dump() + ")";
       }
     }
+    if (!keys.empty()) return keys;
   }
-  return "";
+  static constexpr const char* kInputs[] = {"/scene/seed",  "/scene/sha256", "/mission/sha256",
+                                            "/formats",     "/annotations",  "/streams",
+                                            "/streams_span"};
+  return differs(kInputs);
 }
 
 }  // namespace airis::tools

@@ -20,7 +20,7 @@ struct ManifestSource {
   ShardSpec shard;
   std::int64_t min_object_area_px = 16;  ///< the COCO annotation rule
   bool full_streams = false;             ///< streams of the whole flight, not the capture windows
-  engine::StreamFormat stream_format = engine::StreamFormat::kCsv;
+  engine::StreamFormat stream_format = engine::StreamFormat::kNpy;
   int interrupted_by = 0;  ///< the signal that stopped the run early (recorded), 0 if none
 };
 

@@ -127,8 +127,8 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
   while (std::getline(poses, line)) ++rows;
   EXPECT_EQ(rows, frames);
   EXPECT_TRUE(fs::exists(dir / "preview.png"));
-  EXPECT_TRUE(fs::exists(dir / "truth.csv"));
-  EXPECT_TRUE(fs::exists(dir / "drone1.imu.csv"));
+  EXPECT_TRUE(fs::exists(dir / "drone1.truth.npy"));
+  EXPECT_TRUE(fs::exists(dir / "drone1.imu.npy"));
 }
 
 TEST(DatasetCommandTest, SameInputsGiveByteIdenticalDatasets) {
@@ -148,8 +148,8 @@ TEST(DatasetCommandTest, ResumedRunEqualsUninterruptedRun) {
       if (e.path().filename().string() >= "000003") fs::remove(e.path());
     }
   }
-  for (const char* f : {"front/coco_instances.json", "labels.json", "preview.png", "truth.csv",
-                        "front/poses.csv"}) {
+  for (const char* f : {"front/coco_instances.json", "labels.json", "preview.png",
+                        "drone1.truth.npy", "front/poses.csv"}) {
     fs::remove(dir / f);
   }
   std::ofstream(dir / "front/rgb/000003.png.tmp") << "partial";

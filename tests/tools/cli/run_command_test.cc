@@ -71,7 +71,7 @@ TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
   }
   EXPECT_GE(files, 7);  // truth, 4 sensors, collisions, mission events
   // 15 s at 100 Hz plus the row at t = 0; the IMU at 1 kHz.
-  const std::string truth = ReadFile(a / "truth.csv");
+  const std::string truth = ReadFile(a / "drone1.truth.csv");
   EXPECT_EQ(std::count(truth.begin(), truth.end(), '\n'), 1 + 1501);
   const std::string imu = ReadFile(a / "drone1.imu.csv");
   EXPECT_EQ(std::count(imu.begin(), imu.end(), '\n'), 1 + 15000);

@@ -63,7 +63,7 @@ TEST(DatasetJobTest, TheManifestRecordsTheSeedTheStreamsAndTheAnnotationRule) {
   EXPECT_EQ(m["cameras"][0]["name"], "cam");
   EXPECT_EQ(m["cameras"][0]["frames"], r.frames);
   bool commands = false;
-  for (const auto& s : m["streams"]) commands = commands || s == "d.commands.csv";
+  for (const auto& s : m["streams"]) commands = commands || s == "d.commands.npy";
   EXPECT_TRUE(commands) << m["streams"].dump();
 }
 
