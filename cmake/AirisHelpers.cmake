@@ -14,13 +14,18 @@ function(airis_add_library name)
   target_compile_options(${name} PRIVATE ${AIRIS_WARNING_FLAGS})
 endfunction()
 
-# airis_add_test(NAME SOURCES ... DEPS ...): one GoogleTest executable registered with CTest.
+# airis_add_test(NAME SOURCES ... DEPS ... [PROPERTIES ...]): one GoogleTest executable registered with
+# CTest; PROPERTIES are set on each of its tests.
 function(airis_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PROPERTIES" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
   target_compile_options(${name} PRIVATE ${AIRIS_WARNING_FLAGS})
-  gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60)
+  set(properties "")
+  if(ARG_PROPERTIES)
+    set(properties PROPERTIES ${ARG_PROPERTIES})
+  endif()
+  gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60 ${properties})
 endfunction()
 
 # airis_add_benchmark(NAME SOURCES ... DEPS ...): one Google Benchmark executable under build/bench/.
