@@ -6,6 +6,7 @@
 #include "engine/core/random.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
+#include "engine/world/sensor_samples.h"
 #include "sensors/gauss_markov.h"
 
 namespace airis::sensors {
@@ -33,14 +34,6 @@ struct BarometerConfig {
   void ValidateForPhysicsRate(double physics_rate_hz) const;
 };
 
-/// One barometer sample.
-struct BarometerSample {
-  engine::TimeNs time_ns = -1;  ///< simulated time of the sample
-  double pressure_pa = 0.0;     ///< measured static pressure
-  double temperature_k = 0.0;   ///< air temperature at the sensor (standard atmosphere)
-  double altitude_m = 0.0;  ///< pressure altitude: the standard atmosphere inverted at pressure_pa
-};
-
 /// Barometer (paper sec. 3.4.1): the U.S. Standard Atmosphere 1976 pressure p at the sensor's
 /// altitude,
 ///   p_out = p (1 + b_k) + w_k,
@@ -54,7 +47,8 @@ class Barometer final : public engine::Sensor {
   /// stream.
   Barometer(std::string name, const BarometerConfig& config, engine::RandomStream stream);
 
-  const BarometerSample& latest() const { return latest_; }
+  const engine::BarometricSample& latest() const { return latest_; }
+  const engine::BarometricSample* barometric() const override { return &latest_; }
   const BarometerConfig& config() const { return config_; }
   /// Current relative drift b (dimensionless).
   double drift() const { return drift_; }
@@ -70,7 +64,7 @@ class Barometer final : public engine::Sensor {
   engine::RandomStream stream_;
   GaussMarkovStep drift_step_;
   double drift_ = 0.0;
-  BarometerSample latest_;
+  engine::BarometricSample latest_;
 };
 
 }  // namespace airis::sensors

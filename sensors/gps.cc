@@ -15,8 +15,8 @@ using engine::Vec3;
 
 namespace {
 const std::string kColumns[] = {
-    "fix_type",           "latitude_deg", "longitude_deg", "altitude_m",     "velocity_ned_x_m_s",
-    "velocity_ned_y_m_s", "eph_m",        "epv_m",         "position_time_s"};
+    "fix_type",           "latitude_deg", "longitude_deg", "altitude_m",      "velocity_ned_x_m_s",
+    "velocity_ned_y_m_s", "eph_m",        "epv_m",         "position_time_s", "velocity_ned_z_m_s"};
 
 // First-order decay from `initial` to `final` with time constant `tau_s`, started at `start_ns`.
 double Decay(double initial, double final_value, double tau_s, TimeNs start_ns, TimeNs t_ns) {
@@ -45,6 +45,7 @@ void GpsConfig::Validate() const {
   engine::RequirePositive("position_error_correlation_s", position_error_correlation_s);
   engine::RequireInRange("position_white_fraction", position_white_fraction, 0.0, 1.0);
   engine::RequireNonNegative("velocity_noise_m_s", velocity_noise_m_s);
+  engine::RequireNonNegative("velocity_down_noise_m_s", velocity_down_noise_m_s);
 }
 
 void GpsConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
@@ -57,7 +58,8 @@ Gps::Gps(std::string name, const GpsConfig& config, engine::RandomStream stream)
       config_(config),
       stream_(stream),
       latency_ns_(engine::SecondsToNs(config.latency_s, "latency_s")),
-      startup_ns_(engine::SecondsToNs(config.startup_delay_s, "startup_delay_s")) {
+      startup_ns_(engine::SecondsToNs(config.startup_delay_s, "startup_delay_s")),
+      vertical_stream_(stream.Fork("velocity_down")) {
   // Fixes are at least half a period apart (the schedule fires at the first tick at or after each
   // due time and the rate never exceeds the tick rate), so this many entries always span the
   // latency.
@@ -96,6 +98,7 @@ void Gps::CopyLatestRow(std::span<double> out) const {
   out[6] = latest_.eph_m;
   out[7] = latest_.epv_m;
   out[8] = engine::ToSeconds(latest_.position_time_ns);
+  out[9] = latest_.velocity_down_m_s;
 }
 
 Gps::Truth Gps::Lookup(TimeNs t_ns) const {
@@ -164,17 +167,19 @@ void Gps::Sample(const engine::SensorContext& context) {
   const Vec3 p_W = config_.position_noise ? Vec3(past.p_W + error_W) : past.p_W;
   const double vn = past.v_W.x() + config_.velocity_noise_m_s * StandardNormal(stream_);
   const double ve = past.v_W.y() + config_.velocity_noise_m_s * StandardNormal(stream_);
+  const double vd =
+      past.v_W.z() + config_.velocity_down_noise_m_s * StandardNormal(vertical_stream_);
 
   latest_.time_ns = now;
   latest_.position_time_ns = past.t_ns;
   if (now < startup_ns_) {
-    latest_.fix_type = GpsFixType::kNoFix;
+    latest_.fix_type = engine::GnssFixType::kNoFix;
   } else if (eph <= config_.fix_3d_max_eph_m) {
-    latest_.fix_type = GpsFixType::k3D;
+    latest_.fix_type = engine::GnssFixType::k3D;
   } else if (eph <= config_.fix_2d_max_eph_m) {
-    latest_.fix_type = GpsFixType::k2D;
+    latest_.fix_type = engine::GnssFixType::k2D;
   } else {
-    latest_.fix_type = GpsFixType::kNoFix;
+    latest_.fix_type = engine::GnssFixType::kNoFix;
   }
   const engine::GeodeticPosition g = context.environment->frame().ToGeodetic(p_W);
   latest_.latitude_rad = g.latitude_rad;
@@ -183,6 +188,7 @@ void Gps::Sample(const engine::SensorContext& context) {
   latest_.p_W = p_W;
   latest_.velocity_north_m_s = vn;
   latest_.velocity_east_m_s = ve;
+  latest_.velocity_down_m_s = vd;
   latest_.ground_speed_m_s = std::hypot(vn, ve);
   latest_.course_rad = std::atan2(ve, vn);
   latest_.eph_m = eph;

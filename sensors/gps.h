@@ -7,6 +7,7 @@
 #include "engine/core/random.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
+#include "engine/world/sensor_samples.h"
 
 namespace airis::sensors {
 
@@ -30,6 +31,7 @@ struct GpsConfig {
       60.0;  ///< correlation time of the slow part of the position error
   double position_white_fraction = 0.2;  ///< fraction of the position error variance that is white
   double velocity_noise_m_s = 0.05;  ///< white noise on each horizontal velocity component, 1 sigma
+  double velocity_down_noise_m_s = 0.1;  ///< white noise on the vertical velocity, 1 sigma
 
   template <class V>
   void Visit(V& v) {
@@ -53,34 +55,13 @@ struct GpsConfig {
             "fraction of the position error variance that is white, 0..1");
     v.Field("velocity_noise_m_s", velocity_noise_m_s,
             "white noise on north and east velocity (m/s)");
+    v.Field("velocity_down_noise_m_s", velocity_down_noise_m_s,
+            "white noise on the vertical velocity (m/s)");
   }
   /// Throws InvalidField naming the field.
   void Validate() const;
   /// Validate() plus rate_hz <= physics_rate_hz.
   void ValidateForPhysicsRate(double physics_rate_hz) const;
-};
-
-/// Fix quality, numbered as MAVLink's GPS_FIX_TYPE.
-enum class GpsFixType { kNoFix = 1, k2D = 2, k3D = 3 };
-
-/// One GPS fix. Vertical velocity is not reported (paper sec. 3.4.4: receivers do not measure it
-/// reliably).
-struct GpsSample {
-  engine::TimeNs time_ns = -1;  ///< simulated time the fix is delivered
-  /// Simulated time the fix describes: time_ns - latency, or the first fix's time while the run is
-  /// younger than the latency.
-  engine::TimeNs position_time_ns = -1;
-  GpsFixType fix_type = GpsFixType::kNoFix;
-  double latitude_rad = 0.0;                ///< WGS84 geodetic latitude
-  double longitude_rad = 0.0;               ///< WGS84 longitude, east positive
-  double altitude_m = 0.0;                  ///< height above the WGS84 ellipsoid
-  engine::Vec3 p_W = engine::Vec3::Zero();  ///< the same measured position in world NED (m)
-  double velocity_north_m_s = 0.0;
-  double velocity_east_m_s = 0.0;
-  double ground_speed_m_s = 0.0;  ///< horizontal speed
-  double course_rad = 0.0;  ///< direction of the horizontal velocity, atan2(east, north), (-pi, pi]
-  double eph_m = 0.0;  ///< horizontal accuracy estimate (1 sigma of the horizontal error length)
-  double epv_m = 0.0;  ///< vertical accuracy estimate (1 sigma)
 };
 
 /// GNSS receiver (paper sec. 3.4.4). At each fix time t it reports the antenna's state at t -
@@ -102,7 +83,9 @@ class Gps final : public engine::Sensor {
   /// stream.
   Gps(std::string name, const GpsConfig& config, engine::RandomStream stream);
 
-  const GpsSample& latest() const { return latest_; }
+  const engine::GnssSample& latest() const { return latest_; }
+  const engine::GnssSample* gnss() const override { return &latest_; }
+  double latency_s() const override { return config_.latency_s; }
   const GpsConfig& config() const { return config_; }
 
   /// Horizontal and vertical accuracy estimates at simulated time `t_ns` (the closed form above).
@@ -137,7 +120,8 @@ class Gps final : public engine::Sensor {
   engine::Vec3 slow_error_ =
       engine::Vec3::Zero();              // unit-variance Gauss-Markov state per axis (N, E, D)
   engine::TimeNs previous_fix_ns_ = -1;  // time of the previous Sample, -1 before the first
-  GpsSample latest_;
+  engine::GnssSample latest_;
+  engine::RandomStream vertical_stream_;  // vertical velocity noise (its own: added later)
 };
 
 }  // namespace airis::sensors

@@ -7,6 +7,7 @@
 #include "engine/core/random.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
+#include "engine/world/sensor_samples.h"
 #include "sensors/gauss_markov.h"
 
 namespace airis::sensors {
@@ -61,14 +62,6 @@ struct ImuConfig {
   void ValidateForPhysicsRate(double physics_rate_hz) const;
 };
 
-/// One IMU sample, in the sensor frame S (the mount's axes; FRD when the mount is not rotated).
-struct ImuSample {
-  engine::TimeNs time_ns = -1;                                   ///< simulated time of the sample
-  engine::Vec3 angular_velocity_S_rad_s = engine::Vec3::Zero();  ///< gyroscope
-  engine::Vec3 specific_force_S_m_s2 =
-      engine::Vec3::Zero();  ///< accelerometer: (0, 0, -g) level at rest
-};
-
 /// Gyroscope + accelerometer (paper sec. 3.4.2), each axis
 ///   output = (1 + s) * truth + b_on + b(t) + w,
 /// where w is white noise with per-sample sigma = N * sqrt(rate_hz) (a noise density N sampled at
@@ -88,7 +81,9 @@ class Imu final : public engine::Sensor {
   /// stream (RandomStreams::Stream of its full name), consumed only by this sensor.
   Imu(std::string name, const ImuConfig& config, engine::RandomStream stream);
 
-  const ImuSample& latest() const { return latest_; }
+  const engine::InertialSample& latest() const { return latest_; }
+  const engine::InertialSample* inertial() const override { return &latest_; }
+  engine::Quat q_BS() const override { return config_.mount.q_BS(); }
   const ImuConfig& config() const { return config_; }
   /// Current in-run biases (sensor frame), for tests and diagnostics.
   const engine::Vec3& gyro_bias_rad_s() const { return gyro_bias_; }
@@ -115,7 +110,7 @@ class Imu final : public engine::Sensor {
   engine::Vec3 accel_turn_on_bias_;
   engine::Vec3 gyro_scale_;  // 1 + s per axis
   engine::Vec3 accel_scale_;
-  ImuSample latest_;
+  engine::InertialSample latest_;
 };
 
 }  // namespace airis::sensors

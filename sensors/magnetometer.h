@@ -7,6 +7,7 @@
 #include "engine/core/random.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
+#include "engine/world/sensor_samples.h"
 
 namespace airis::sensors {
 
@@ -46,13 +47,6 @@ struct MagnetometerConfig {
   void ValidateForPhysicsRate(double physics_rate_hz) const;
 };
 
-/// One magnetometer sample.
-struct MagnetometerSample {
-  engine::TimeNs time_ns = -1;  ///< simulated time of the sample
-  engine::Vec3 field_S_gauss =
-      engine::Vec3::Zero();  ///< measured field in sensor axes (G; 1 G = 1e5 nT)
-};
-
 /// Magnetometer (paper sec. 3.4.3): the environment's geomagnetic field (tilted dipole or WMM, per
 /// scene) at the sensor, rotated into sensor axes, with calibration errors and noise:
 ///   m_S = K diag(s) R_SW B_W + h + w,
@@ -66,7 +60,9 @@ class Magnetometer final : public engine::Sensor {
   /// stream.
   Magnetometer(std::string name, const MagnetometerConfig& config, engine::RandomStream stream);
 
-  const MagnetometerSample& latest() const { return latest_; }
+  const engine::MagneticSample& latest() const { return latest_; }
+  const engine::MagneticSample* magnetic() const override { return &latest_; }
+  engine::Quat q_BS() const override { return config_.mount.q_BS(); }
   const MagnetometerConfig& config() const { return config_; }
 
   std::span<const std::string> columns() const override;
@@ -83,7 +79,7 @@ class Magnetometer final : public engine::Sensor {
   bool has_field_ = false;
   engine::Vec3 field_p_W_ = engine::Vec3::Zero();   // where the field was last evaluated
   engine::Vec3 field_W_nT_ = engine::Vec3::Zero();  // the field there
-  MagnetometerSample latest_;
+  engine::MagneticSample latest_;
 };
 
 }  // namespace airis::sensors

@@ -66,6 +66,8 @@ void Rangefinder::Sample(const engine::SensorContext& context) {
   const double noise_m = config_.noise_m * StandardNormal(stream_);
   latest_.time_ns = context.now_ns;
   latest_.hit = hit.hit();
+  latest_.min_range_m = static_cast<float>(config_.min_range_m);
+  latest_.max_range_m = static_cast<float>(config_.max_range_m);
   if (latest_.hit) {
     latest_.distance_m = static_cast<float>(std::clamp(
         static_cast<double>(hit.distance_m) + noise_m, config_.min_range_m, config_.max_range_m));

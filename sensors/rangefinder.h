@@ -7,6 +7,7 @@
 #include "engine/core/random.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
+#include "engine/world/sensor_samples.h"
 
 namespace airis::sensors {
 
@@ -40,15 +41,6 @@ struct RangefinderConfig {
   void ValidateForPhysicsRate(double physics_rate_hz) const;
 };
 
-/// One rangefinder sample.
-struct RangefinderSample {
-  engine::TimeNs time_ns = -1;  ///< simulated time of the sample
-  bool hit = false;             ///< a surface was within [min_range_m, max_range_m]
-  float distance_m = -1.0f;     ///< measured distance, or no_return_distance_m without a return
-  std::uint8_t class_id = engine::kNoClass;         ///< semantic class of what the beam hit
-  std::uint32_t instance_id = engine::kNoInstance;  ///< instance of what the beam hit
-};
-
 /// Rangefinder: one ray from the sensor origin along its +x axis, cast through the world's
 /// RayCaster (Embree). A return within range reports the true distance plus white noise, clamped to
 /// the range limits, and the label of the surface hit; no return reports no_return_distance_m.
@@ -59,7 +51,9 @@ class Rangefinder final : public engine::Sensor {
   /// stream.
   Rangefinder(std::string name, const RangefinderConfig& config, engine::RandomStream stream);
 
-  const RangefinderSample& latest() const { return latest_; }
+  const engine::RangeSample& latest() const { return latest_; }
+  const engine::RangeSample* range() const override { return &latest_; }
+  engine::Quat q_BS() const override { return config_.mount.q_BS(); }
   const RangefinderConfig& config() const { return config_; }
 
   std::span<const std::string> columns() const override;
@@ -74,7 +68,7 @@ class Rangefinder final : public engine::Sensor {
   RangefinderConfig config_;
   engine::RandomStream stream_;
   engine::Vec3 beam_B_;  // unit beam direction in body axes
-  RangefinderSample latest_;
+  engine::RangeSample latest_;
 };
 
 }  // namespace airis::sensors

@@ -45,6 +45,12 @@ std::uint64_t RandomStream::NextU64() {
   return result;
 }
 
+RandomStream RandomStream::Fork(std::string_view name) const {
+  std::uint64_t h = StableHash(name);
+  for (std::uint64_t s : s_) h = SplitMix64(h) ^ s;
+  return RandomStream(h);
+}
+
 double RandomStream::Uniform01() { return static_cast<double>(NextU64() >> 11) * 0x1.0p-53; }
 
 std::int64_t RandomStream::UniformInt(std::int64_t lo, std::int64_t hi) {

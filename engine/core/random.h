@@ -27,6 +27,9 @@ class RandomStream {
   double Gaussian();
   /// N(0, sigma^2).
   double Gaussian(double sigma) { return sigma * Gaussian(); }
+  /// An independent stream derived from this one's state and `name`, without drawing from this
+  /// one: a model that adds a draw keeps the sequence of its existing ones.
+  RandomStream Fork(std::string_view name) const;
 
  private:
   std::uint64_t s_[4];

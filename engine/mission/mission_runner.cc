@@ -49,6 +49,12 @@ void MissionRunner::Fail(TimeNs now_ns, const std::string& why) {
                      "failed: " + why});
 }
 
+void MissionRunner::Abort(TimeNs now_ns, const std::string& why) {
+  if (state_ == State::kRunning && step_index_ < static_cast<int>(mission_.steps.size())) {
+    Fail(now_ns, why);
+  }
+}
+
 void MissionRunner::ReportCollision(TimeNs time_ns, const std::string& what, bool from_below) {
   if (state_ != State::kRunning || step_index_ >= static_cast<int>(mission_.steps.size())) return;
   const MissionStep& step = mission_.steps[static_cast<std::size_t>(step_index_)];

@@ -54,6 +54,9 @@ class MissionRunner {
   /// takeoff or land is the vehicle standing or touching down, not a collision.
   void ReportCollision(TimeNs time_ns, const std::string& what, bool from_below = false);
 
+  /// Fails the running mission for a reason outside it (its autopilot refused to arm), naming the
+  /// current step. Does nothing once the mission ended.
+  void Abort(TimeNs now_ns, const std::string& why);
   State state() const { return state_; }
   /// Why the mission failed: "missions/x.yaml:12: step 3 (goto): timed out after 40 s, 12.3 m from
   /// target".

@@ -30,15 +30,43 @@ void MissionSession::ReportNewEvents() {
 
 MissionRunner::State MissionSession::Run(TimeNs until_ns) {
   Vehicle& vehicle = sim_.world().vehicle(vehicle_);
+  // An external autopilot is engaged from the start (its mission link opens), disarmed until the
+  // first step flies.
+  if (Autopilot* autopilot = sim_.autopilot(vehicle_)) autopilot->SetMissionCommand(command_);
   while (sim_.clock().now_ns() < until_ns) {
     const TimeNs now = sim_.clock().now_ns();
-    const MissionRunner::State state =
-        runner_.Update({now, vehicle.state(), vehicle.landed()}, &command_);
+    Autopilot* autopilot = sim_.autopilot(vehicle_);
+    MissionInput input{now, vehicle.state(), vehicle.landed()};
+    if (autopilot) {
+      // An external autopilot flies the mission from its own estimate; until it has one, the
+      // mission waits (its steps' timeouts still run).
+      if (const std::string why = autopilot->failure(); !why.empty()) {
+        runner_.Abort(now, why);
+        ReportNewEvents();
+        return runner_.state();
+      }
+      if (!autopilot->Estimate(&input.state, &input.landed)) {
+        RunTick(vehicle);
+        continue;
+      }
+    }
+    const MissionRunner::State state = runner_.Update(input, &command_);
     ReportNewEvents();
     if (pending_pose_ >= 0 && callbacks_.on_pose) callbacks_.on_pose(now, pending_pose_);
     pending_pose_ = -1;
     if (state != MissionRunner::State::kRunning) return state;
-    vehicle.SetCommand(command_);
+    if (autopilot) {
+      autopilot->SetMissionCommand(command_);
+    } else {
+      vehicle.SetCommand(command_);
+    }
+    RunTick(vehicle);
+  }
+  return runner_.state();
+}
+
+void MissionSession::RunTick(Vehicle& vehicle) {
+  {
     const Vec3 before = vehicle.state().p_W;
     try {
       sim_.Step();
@@ -48,7 +76,6 @@ MissionRunner::State MissionSession::Run(TimeNs until_ns) {
     distance_m_ += (vehicle.state().p_W - before).norm();
     if (callbacks_.after_tick) callbacks_.after_tick(sim_.clock().now_ns());
   }
-  return runner_.state();
 }
 
 void MissionSession::SetCapture(const CaptureStep& capture) {

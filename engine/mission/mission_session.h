@@ -9,10 +9,12 @@
 namespace airis::engine {
 
 /// Flies a Mission with one vehicle of a Simulation, in lockstep: before every tick the runner
-/// reads the vehicle (truth) and sets its command, then the simulation steps. Collisions of the
-/// vehicle are reported to the runner. The session is the runner's MissionHost: wind changes go to
-/// the world, `random_poses` holds the vehicle kinematically, and capture / pose events go to the
-/// callbacks (the dataset writer's cameras).
+/// reads the vehicle (truth) and sets its command, then the simulation steps. A vehicle flown by an
+/// external Autopilot (Simulation::autopilot) is read through the autopilot's own estimate and
+/// given the commands through it; its failures (no connection, refused to arm) fail the mission.
+/// Collisions of the vehicle are reported to the runner. The session is the runner's MissionHost:
+/// wind changes go to the world, `random_poses` holds the vehicle kinematically, and capture / pose
+/// events go to the callbacks (the dataset writer's cameras).
 class MissionSession final : public MissionHost {
  public:
   struct Callbacks {
@@ -43,6 +45,7 @@ class MissionSession final : public MissionHost {
 
  private:
   void ReportNewEvents();
+  void RunTick(Vehicle& vehicle);  // one Simulation step, with the distance and after_tick
 
   Simulation& sim_;
   std::size_t vehicle_;

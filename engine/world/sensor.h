@@ -10,6 +10,7 @@
 #include "engine/physics/rigid_body_state.h"
 #include "engine/world/log_column.h"
 #include "engine/world/ray_caster.h"
+#include "engine/world/sensor_samples.h"
 
 namespace airis::engine {
 
@@ -54,6 +55,18 @@ class Sensor {
     (void)column;
     return LogType::kFloat32;
   }
+
+  /// The last sample of a standard kind (engine/world/sensor_samples.h), or null when the sensor
+  /// is not of that kind: what the PX4 bridge and the Python API read.
+  virtual const InertialSample* inertial() const { return nullptr; }
+  virtual const BarometricSample* barometric() const { return nullptr; }
+  virtual const MagneticSample* magnetic() const { return nullptr; }
+  virtual const GnssSample* gnss() const { return nullptr; }
+  virtual const RangeSample* range() const { return nullptr; }
+  /// Rotation of the sensor frame into the body frame (its mount); identity when it has none.
+  virtual Quat q_BS() const { return Quat::Identity(); }
+  /// Age of the state a sample describes when it is delivered (s): an estimator's delay setting.
+  virtual double latency_s() const { return 0.0; }
 
   /// This sensor as an image sensor, or null when it produces no images.
   virtual ImageSensor* image() { return nullptr; }

@@ -27,14 +27,31 @@ void Simulation::Step() {
                                 &environment, world_->ray_caster()};
     for (const auto& sensor : sensors) sensor->Update(context);
   }
-  for (std::size_t i = 0; i < world_->vehicle_count(); ++i) {
+  const auto control_context = [&](std::size_t i) {
     Vehicle& vehicle = world_->vehicle(i);
     ControlContext context{now_ns,           dt_s,
                            &vehicle.state(), &world_->accelerations(i),
                            &environment,     world_->sensors(i)};
     world_->CalcLocalConditions(i, &context.air_density_kg_m3, &context.gravity_m_s2);
-    vehicle.UpdateControl(context);
+    return context;
+  };
+  if (!autopilots_.empty()) {
+    for (std::size_t i = 0; i < autopilots_.size(); ++i) {
+      if (autopilots_[i]) autopilots_[i]->Publish(control_context(i));
+    }
+    for (std::size_t i = 0; i < autopilots_.size(); ++i) {
+      if (autopilots_[i]) autopilots_[i]->Collect(world_->vehicle(i));
+    }
   }
+  for (std::size_t i = 0; i < world_->vehicle_count(); ++i) {
+    world_->vehicle(i).UpdateControl(control_context(i));
+  }
+}
+
+void Simulation::SetAutopilot(std::size_t vehicle, std::unique_ptr<Autopilot> autopilot) {
+  AIRIS_DEMAND(vehicle < world_->vehicle_count());
+  if (autopilots_.size() <= vehicle) autopilots_.resize(world_->vehicle_count());
+  autopilots_[vehicle] = std::move(autopilot);
 }
 
 void Simulation::RunUntil(TimeNs end_ns) {

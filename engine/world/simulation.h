@@ -1,9 +1,11 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "engine/core/clock.h"
 #include "engine/core/config.h"
+#include "engine/world/autopilot.h"
 #include "engine/world/world.h"
 
 namespace airis::engine {
@@ -29,7 +31,8 @@ struct SimulationConfig {
 ///   are found
 ///      and resolved (World::StepPhysics);
 ///   3. the clock moves to t + dt and every sensor of every vehicle updates (sampling when due);
-///   4. every vehicle's controller hook runs and sets the commands for the next tick.
+///   4. every vehicle's controller hook runs and sets the commands for the next tick; a vehicle
+///      flown by an external Autopilot gets them from it first (all Publish, then all Collect).
 class Simulation {
  public:
   /// Takes the world. Throws InvalidField on a bad config.
@@ -43,6 +46,13 @@ class Simulation {
   /// Runs for `seconds` of simulated time (rounded to whole ticks, at least covering the duration).
   void RunFor(double seconds);
 
+  /// Lets `autopilot` fly vehicle `vehicle` from the next tick on (replacing one set before).
+  void SetAutopilot(std::size_t vehicle, std::unique_ptr<Autopilot> autopilot);
+  /// The autopilot of vehicle `vehicle`, or null when its own controller flies it.
+  Autopilot* autopilot(std::size_t vehicle) const {
+    return vehicle < autopilots_.size() ? autopilots_[vehicle].get() : nullptr;
+  }
+
   const SimClock& clock() const { return clock_; }
   World& world() { return *world_; }
   const World& world() const { return *world_; }
@@ -50,6 +60,7 @@ class Simulation {
  private:
   std::unique_ptr<World> world_;
   SimClock clock_;
+  std::vector<std::unique_ptr<Autopilot>> autopilots_;  // by vehicle; null for most
 };
 
 }  // namespace airis::engine

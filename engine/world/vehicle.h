@@ -5,12 +5,14 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "engine/core/clock.h"
 #include "engine/core/frames.h"
 #include "engine/environment/environment.h"
 #include "engine/physics/rigid_body.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/world/rotor_layout.h"
 #include "engine/world/sensor.h"
 #include "engine/world/vehicle_command.h"
 
@@ -65,6 +67,12 @@ class Vehicle {
 
   /// Number of actuator inputs (for a multirotor: its motors, then its tilt actuators).
   virtual int actuator_count() const = 0;
+  /// How many of the first actuators are motors (taking [0, 1] thrust); the rest are servos (tilt)
+  /// that an external autopilot drives over [-1, 1] (engine/mavlink).
+  virtual int motor_count() const { return actuator_count(); }
+  /// The rotors, in motor order, as an external autopilot's mixer needs them (PX4 airframes); empty
+  /// for a vehicle without rotors.
+  virtual std::vector<RotorLayout> CalcRotorLayout() const { return {}; }
   /// Sets the actuator commands for the next ticks. Values are clamped to [0, 1]. Throws
   /// SimulationError (naming the vehicle and input) on NaN, and std::invalid_argument when the size
   /// is not actuator_count().

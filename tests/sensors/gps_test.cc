@@ -28,8 +28,8 @@ GpsConfig NoiselessConfig() {
 }
 
 // Runs `gps` on 1 kHz ticks along the cubic trajectory for `seconds`, collecting each fix.
-std::vector<GpsSample> Fly(Gps& gps, const engine::Environment& env, double seconds) {
-  std::vector<GpsSample> fixes;
+std::vector<engine::GnssSample> Fly(Gps& gps, const engine::Environment& env, double seconds) {
+  std::vector<engine::GnssSample> fixes;
   Truth truth;
   for (std::int64_t k = 0; k <= static_cast<std::int64_t>(seconds * 1000); ++k) {
     const double t = engine::ToSeconds(k * kTick);
@@ -44,11 +44,11 @@ TEST(GpsTest, ReportsTheTruthFromExactlyTheLatencyEarlier) {
   // GIVEN a noiseless GPS at 10 Hz with 0.2 s latency on 1 kHz ticks, along a cubic path
   const engine::Environment env = testing::MakeEnvironment();
   Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
-  const std::vector<GpsSample> fixes = Fly(gps, env, 3.0);
+  const std::vector<engine::GnssSample> fixes = Fly(gps, env, 3.0);
   // THEN fixes come exactly every 100 ms, and each reports the antenna at t - 0.2 s
   ASSERT_EQ(fixes.size(), 31u);
   for (std::size_t i = 0; i < fixes.size(); ++i) {
-    const GpsSample& f = fixes[i];
+    const engine::GnssSample& f = fixes[i];
     EXPECT_EQ(f.time_ns, static_cast<TimeNs>(i) * 100'000'000);
     if (f.time_ns < 200'000'000) {
       EXPECT_EQ(f.position_time_ns, 0);  // before the first 0.2 s: the first truth seen
@@ -73,8 +73,8 @@ TEST(GpsTest, LatencyBetweenFixesIsInterpolatedExactlyForCubicMotion) {
   GpsConfig c = NoiselessConfig();
   c.latency_s = 0.15;
   Gps gps("gps", c, engine::RandomStream(1));
-  const std::vector<GpsSample> fixes = Fly(gps, env, 2.0);
-  for (const GpsSample& f : fixes) {
+  const std::vector<engine::GnssSample> fixes = Fly(gps, env, 2.0);
+  for (const engine::GnssSample& f : fixes) {
     if (f.time_ns < 150'000'000) continue;
     EXPECT_NEAR((f.p_W - Position(engine::ToSeconds(f.position_time_ns))).norm(), 0.0, 1e-9);
   }
@@ -83,8 +83,8 @@ TEST(GpsTest, LatencyBetweenFixesIsInterpolatedExactlyForCubicMotion) {
 TEST(GpsTest, AccuracyEstimatesDecayAsFirstOrderFilter) {
   const engine::Environment env = testing::MakeEnvironment();
   Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
-  const std::vector<GpsSample> fixes = Fly(gps, env, 8.0);
-  for (const GpsSample& f : fixes) {
+  const std::vector<engine::GnssSample> fixes = Fly(gps, env, 8.0);
+  for (const engine::GnssSample& f : fixes) {
     const double since_start = engine::ToSeconds(f.time_ns) - 1.0;  // startup delay 1 s
     const double decay = since_start > 0 ? std::exp(-since_start / 0.9) : 1.0;
     EXPECT_NEAR(f.eph_m, 0.1 + 99.9 * decay, 1e-9);
@@ -97,22 +97,22 @@ TEST(GpsTest, AccuracyEstimatesDecayAsFirstOrderFilter) {
 TEST(GpsTest, FixTypeFollowsStartupAndThresholds) {
   const engine::Environment env = testing::MakeEnvironment();
   Gps gps("gps", NoiselessConfig(), engine::RandomStream(1));
-  const std::vector<GpsSample> fixes = Fly(gps, env, 8.0);
+  const std::vector<engine::GnssSample> fixes = Fly(gps, env, 8.0);
   // eph crosses 4 m at 1 + 0.9 ln(99.9 / 3.9) = 3.918 s and 3 m at 1 + 0.9 ln(99.9 / 2.9) = 4.186
   // s.
-  for (const GpsSample& f : fixes) {
+  for (const engine::GnssSample& f : fixes) {
     const double t = engine::ToSeconds(f.time_ns);
-    GpsFixType expected = GpsFixType::kNoFix;
+    engine::GnssFixType expected = engine::GnssFixType::kNoFix;
     if (t >= 4.186) {
-      expected = GpsFixType::k3D;
+      expected = engine::GnssFixType::k3D;
     } else if (t >= 3.918) {
-      expected = GpsFixType::k2D;
+      expected = engine::GnssFixType::k2D;
     }
     EXPECT_EQ(f.fix_type, expected) << "t = " << t << " eph = " << f.eph_m;
   }
   // The 2D window holds fixes at 4.0 and 4.1 s.
-  EXPECT_EQ(fixes[40].fix_type, GpsFixType::k2D);
-  EXPECT_EQ(fixes[42].fix_type, GpsFixType::k3D);
+  EXPECT_EQ(fixes[40].fix_type, engine::GnssFixType::k2D);
+  EXPECT_EQ(fixes[42].fix_type, engine::GnssFixType::k3D);
 }
 
 TEST(GpsTest, PositionErrorMatchesAccuracyEstimates) {
@@ -143,7 +143,7 @@ TEST(GpsTest, PositionErrorMatchesAccuracyEstimates) {
   EXPECT_NEAR(std::sqrt(horizontal_ss / n) / 2.0, 1.0, 0.05);
   EXPECT_NEAR(std::sqrt(vertical_ss / n) / 3.0, 1.0, 0.05);
   EXPECT_NEAR(std::sqrt(velocity_ss / n) / 0.05, 1.0, 0.05);
-  EXPECT_EQ(gps.latest().fix_type, GpsFixType::k3D);
+  EXPECT_EQ(gps.latest().fix_type, engine::GnssFixType::k3D);
 }
 
 TEST(GpsTest, BadConfigurationNamesTheField) {

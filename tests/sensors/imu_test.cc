@@ -192,7 +192,7 @@ TEST(ImuTest, TurnOnBiasAndScaleFactorAreDrawnOnceAndHeld) {
   config.accel_scale_factor_ppm = 1000.0;
   Imu imu("imu", config, engine::RandomStream(3));
   imu.Update(truth.At(0, env));
-  const ImuSample first = imu.latest();
+  const engine::InertialSample first = imu.latest();
   imu.Update(truth.At(kTick, env));
   EXPECT_EQ(imu.latest().angular_velocity_S_rad_s, first.angular_velocity_S_rad_s);
   EXPECT_GT(first.angular_velocity_S_rad_s.norm(), 0.0);

@@ -67,7 +67,7 @@ TEST(ImuWorldTest, DropOnGroundReadsZeroThenSpikeThenOneG) {
 }
 
 // The IMU stream of a 2 s drop, optionally with a barometer added to the same vehicle.
-std::vector<ImuSample> RecordDrop(std::uint64_t scene_seed, bool with_barometer) {
+std::vector<engine::InertialSample> RecordDrop(std::uint64_t scene_seed, bool with_barometer) {
   testing::BoxSpec ground;
   ground.center_W = Vec3(0, 0, 1.0);
   ground.size_m = Vec3(100, 100, 2.0);
@@ -84,7 +84,7 @@ std::vector<ImuSample> RecordDrop(std::uint64_t scene_seed, bool with_barometer)
   }
   auto& imu = world->AddSensor(
       index, std::make_unique<Imu>("imu", ImuConfig{}, streams.Stream("vehicles/box/imu")));
-  std::vector<ImuSample> samples;
+  std::vector<engine::InertialSample> samples;
   imu.AddListener(
       [&](const engine::Sensor& s) { samples.push_back(static_cast<const Imu&>(s).latest()); });
   engine::Simulation simulation(std::move(world));
@@ -92,7 +92,8 @@ std::vector<ImuSample> RecordDrop(std::uint64_t scene_seed, bool with_barometer)
   return samples;
 }
 
-bool Identical(const std::vector<ImuSample>& a, const std::vector<ImuSample>& b) {
+bool Identical(const std::vector<engine::InertialSample>& a,
+               const std::vector<engine::InertialSample>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (a[i].time_ns != b[i].time_ns ||
@@ -105,7 +106,7 @@ bool Identical(const std::vector<ImuSample>& a, const std::vector<ImuSample>& b)
 }
 
 TEST(ImuWorldTest, SameSeedIsBitIdenticalAndOtherSensorsDoNotChangeTheStream) {
-  const std::vector<ImuSample> first = RecordDrop(11, false);
+  const std::vector<engine::InertialSample> first = RecordDrop(11, false);
   ASSERT_EQ(first.size(), 2000u);
   // Same scene and seed: bit-identical, sample for sample.
   EXPECT_TRUE(Identical(first, RecordDrop(11, false)));

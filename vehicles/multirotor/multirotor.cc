@@ -195,4 +195,24 @@ double Multirotor::CalcHoverCommand(double air_density_kg_m3, double gravity_m_s
   return body().mass_kg() * gravity_m_s2 / lift;
 }
 
+std::vector<engine::RotorLayout> Multirotor::CalcRotorLayout() const {
+  std::vector<engine::RotorLayout> out;
+  out.reserve(rotors_.size());
+  for (const Rotor& r : rotors_) {
+    engine::RotorLayout l;
+    l.position_B_m = r.base_position_B;
+    l.thrust_axis_B = r.base_direction_B;
+    // The reaction torque opposes the spin: a counter-clockwise rotor's is -axis * |torque|.
+    l.moment_ratio_m = -r.torque_per_density_signed / r.thrust_per_density;
+    l.max_thrust_per_density = r.thrust_per_density;
+    if (r.tilt_channel >= 0) {
+      l.tilt_actuator = rotor_count() + r.tilt_channel;
+      l.tilted_axis_B = Eigen::AngleAxisd(r.max_tilt_rad, r.tilt_axis_B) * r.base_direction_B;
+      l.max_tilt_deg = engine::RadToDeg(r.max_tilt_rad);
+    }
+    out.push_back(l);
+  }
+  return out;
+}
+
 }  // namespace airis::vehicles

@@ -63,6 +63,8 @@ class Multirotor final : public engine::Vehicle {
 
   const MultirotorConfig& config() const { return config_; }
   int rotor_count() const { return static_cast<int>(rotors_.size()); }
+  int motor_count() const override { return rotor_count(); }
+  std::vector<engine::RotorLayout> CalcRotorLayout() const override;
   int tilt_count() const { return actuator_count() - rotor_count(); }
   /// Effective (lagged) command of rotor i at the end of the last step, [0, 1].
   double motor_state(int i) const { return rotors_[static_cast<std::size_t>(i)].u; }
