@@ -13,6 +13,7 @@
 #include "engine/core/frames.h"
 #include "engine/core/geodetic.h"
 #include "engine/environment/environment.h"
+#include "engine/mavlink/px4/px4_config.h"
 #include "engine/physics/rigid_body_state.h"
 #include "engine/scene/static_scene.h"
 #include "engine/world/world.h"
@@ -37,6 +38,8 @@ struct VehicleDescription {
   std::string key_path;                     ///< e.g. `vehicles[0]`
   std::shared_ptr<const VehicleSpec> spec;  ///< kind + preset + overrides, validated
   std::vector<SensorDescription> sensors;
+  /// Who flies it (`autopilot:`): the built-in controller or PX4 over MAVLink (docs/px4.md).
+  engine::mavlink::AutopilotConfig autopilot;
 };
 
 /// What each generator produced (for summaries).

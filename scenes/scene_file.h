@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/mavlink/px4/px4_config.h"
 #include "engine/world/world.h"
 #include "scenes/scene_config.h"
 #include "scenes/sensor_kinds.h"
@@ -29,6 +30,7 @@ struct VehicleEntryConfig {
   StartStateConfig start;
   YAML::Node overrides;
   std::vector<SensorEntry> sensors;
+  engine::mavlink::AutopilotConfig autopilot;
 
   template <class V>
   void Visit(V& v) {
@@ -41,6 +43,8 @@ struct VehicleEntryConfig {
     v.Field("overrides", overrides,
             "airframe keys to change (as in vehicles/presets/PRESET.yaml); a list replaces");
     v.Field("sensors", sensors, "sensors with their configs and mounts");
+    v.Field("autopilot", autopilot,
+            "who flies it: the built-in flight controller (default) or PX4 (docs/px4.md)");
   }
   void Validate() const;
 };

@@ -294,6 +294,8 @@ class SceneAssembler {
     v.where = entry.Where();
     v.key_path = entry.key_path;
     v.spec = ReadVehicleSpec(entry);
+    v.autopilot = c.autopilot;
+    CheckAutopilot(entry, *v.spec, earlier);
     for (std::size_t i = 0; i < c.sensors.size(); ++i) {
       const SensorEntry& e = c.sensors[i];
       for (const auto& other : v.sensors) {
@@ -353,6 +355,37 @@ class SceneAssembler {
                                              ", instance " + std::to_string(o.instance_id) + ")");
     }
     return v;
+  }
+
+  /// An `autopilot:` block that fits its vehicle (a channel per actuator) and uses its own PX4
+  /// instance (ports).
+  static void CheckAutopilot(const Sourced<VehicleEntryConfig>& entry, const VehicleSpec& spec,
+                             const std::vector<VehicleDescription>& earlier) {
+    const engine::mavlink::AutopilotConfig& a = entry.config.autopilot;
+    if (a.kind != engine::mavlink::AutopilotKind::kPx4) return;
+    const std::vector<int>& map = a.motor_map;
+    if (!map.empty()) {
+      const int actuators = spec.Build(entry.config.name)->actuator_count();
+      if (static_cast<int>(map.size()) != actuators) {
+        entry.Fail("autopilot.motor_map",
+                   "has " + std::to_string(map.size()) + " channels but the vehicle has " +
+                       std::to_string(actuators) + " actuators (one PX4 output per actuator)");
+      }
+      for (std::size_t i = 0; i < map.size(); ++i) {
+        if (std::count(map.begin(), map.end(), map[i]) > 1) {
+          entry.Fail("autopilot.motor_map[" + std::to_string(i) + "]",
+                     "channel " + std::to_string(map[i]) + " drives two actuators");
+        }
+      }
+    }
+    for (const auto& other : earlier) {
+      if (other.autopilot.kind == engine::mavlink::AutopilotKind::kPx4 &&
+          other.autopilot.instance == a.instance) {
+        entry.Fail("autopilot.instance", "PX4 instance " + std::to_string(a.instance) +
+                                             " also flies vehicle '" + other.name +
+                                             "' (each vehicle needs its own instance and ports)");
+      }
+    }
   }
 
   /// The kind's config: its preset with `overrides` read over it (only the keys given change).

@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
+#include "engine/mavlink/link/link.h"
 
 namespace airis::tools {
 
@@ -23,6 +24,10 @@ int RunReportingErrors(const std::function<int()>& body) {
     // A full disk, an unwritable folder, a damaged dataset: the files and the system's reason.
     std::fprintf(stderr, "error: %s\n", e.what());
     return 4;
+  } catch (const engine::mavlink::LinkError& e) {
+    // PX4 did not connect, closed its link or stopped answering; a port or device is unusable.
+    std::fprintf(stderr, "autopilot link: %s\n", e.what());
+    return 5;
   } catch (const std::out_of_range& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -35,6 +40,8 @@ int RunReportingErrors(const std::function<int()>& body) {
     return 1;
   }
 }
+
+void PrintToStderr(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
 
 double ParseFiniteNumber(const std::string& name, const std::string& text) {
   std::size_t used = 0;

@@ -17,6 +17,9 @@ int RunReportingErrors(const std::function<int()>& body);
 /// Parses `text` as a finite double for option `--name`, or throws ConfigError naming the option.
 double ParseFiniteNumber(const std::string& name, const std::string& text);
 
+/// Writes `line` and a newline to stderr: where a job's log lines (PX4 connected, ...) go.
+void PrintToStderr(const std::string& line);
+
 /// Parses `text` as an unsigned 64-bit seed for option `--name`, or throws ConfigError naming the
 /// option.
 std::uint64_t ParseSeed(const std::string& name, const std::string& text);

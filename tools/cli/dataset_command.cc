@@ -127,6 +127,7 @@ int Run(const DatasetArgs& a) {
   o.resume = a.resume;
   const StopOnSignals signals;
   o.stop = signals.flag();
+  o.log = PrintToStderr;
 
   // A progress line on a terminal, four times a second: step, simulated time, frames, rate, ETA.
   const bool tty = ::isatty(STDERR_FILENO) != 0;

@@ -53,6 +53,7 @@ int Run(const RunOptions& o) {
   job.truth_rate_hz = ParseFiniteNumber("truth-rate", o.truth_rate);
   if (job.truth_rate_hz <= 0.0) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
 
+  job.log = PrintToStderr;
   const StopOnSignals signals;
   job.stop = signals.flag();
   // The progress line, four times a second on a terminal.

@@ -9,6 +9,7 @@
 #include "engine/dataset/telemetry_recorder.h"
 #include "engine/mission/mission_estimate.h"
 #include "scenes/mission_file.h"
+#include "tools/jobs/autopilots.h"
 #include "tools/jobs/dataset_manifest.h"
 #include "tools/jobs/dataset_recorder.h"
 #include "tools/jobs/output_folder.h"
@@ -44,6 +45,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   const std::size_t vehicle = job.MissionVehicle(mission);
+  AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
   const fs::path manifest_path = fs::path(o.out) / "manifest.json";
   nlohmann::json existing;
   if (o.resume) existing = ReadDatasetManifest(o.out);

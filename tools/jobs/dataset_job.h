@@ -32,6 +32,8 @@ struct DatasetJobOptions {
   /// Set to a signal number to stop: the frame in flight is finished, the outputs are written and
   /// the manifest says incomplete (a front end's signal handler sets it).
   const std::atomic<int>* stop = nullptr;
+  /// Lines for the user from a vehicle flown by PX4 (connected, in lockstep, what it lacks).
+  std::function<void(const std::string&)> log;
 };
 
 /// What a finished job made.

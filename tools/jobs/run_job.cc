@@ -4,6 +4,7 @@
 
 #include "engine/dataset/telemetry_recorder.h"
 #include "scenes/mission_file.h"
+#include "tools/jobs/autopilots.h"
 #include "tools/jobs/output_folder.h"
 #include "tools/jobs/realtime_pacer.h"
 
@@ -19,6 +20,7 @@ RunJobResult RunMissionJob(const RunJobOptions& o,
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   job.MissionVehicle(mission);  // a mission without its vehicle fails before anything is written
   job.DisableImageSensors();
+  AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
 
   std::unique_ptr<engine::TelemetryRecorder> telemetry;
   if (!o.out.empty()) {

@@ -21,6 +21,8 @@ struct RunJobOptions {
   double truth_rate_hz = 100.0;  ///< ground-truth rows per simulated second
   /// Set to a signal number to stop early (the logs are closed in place).
   const std::atomic<int>* stop = nullptr;
+  /// Lines for the user from a vehicle flown by PX4 (connected, in lockstep, what it lacks).
+  std::function<void(const std::string&)> log;
 };
 
 /// What a finished `airis run` job did.

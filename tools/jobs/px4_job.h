@@ -1,0 +1,57 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/mavlink/px4/px4_airframe.h"
+#include "engine/mavlink/px4/px4_autopilot.h"
+#include "tools/jobs/simulation_job.h"
+
+namespace airis::tools {
+
+/// What `airis px4 SCENE` does: serve every PX4 vehicle of the scene (no mission: whoever talks to
+/// PX4 flies it: QGroundControl, MAVSDK, a script) and, with `out`, log the telemetry as `airis
+/// run` does.
+struct Px4JobOptions {
+  SceneSource scene;
+  std::string out;                 ///< telemetry folder (empty or absent); empty: no log
+  std::optional<double> realtime;  ///< pace simulated time to wall time at this factor (> 0)
+  engine::TimeNs until_ns = std::numeric_limits<engine::TimeNs>::max();  ///< stop then
+  double truth_rate_hz = 100.0;
+  const std::atomic<int>* stop = nullptr;       ///< a signal number stops the run (logs closed)
+  std::function<void(const std::string&)> log;  ///< progress lines (PX4 connected, lockstep)
+};
+
+/// One PX4 vehicle's link at the end of a run.
+struct Px4VehicleReport {
+  std::string vehicle;
+  std::string link;  ///< "TCP 127.0.0.1:4560"
+  engine::mavlink::Px4LinkStats stats;
+};
+
+struct Px4JobResult {
+  double simulated_s = 0.0;
+  double wall_s = 0.0;
+  int interrupted_by = 0;  ///< the signal that stopped it, 0 if --until did
+  std::int64_t collisions = 0;
+  std::vector<Px4VehicleReport> vehicles;
+};
+
+/// Runs the job until `until_ns`, a signal, or a link failure (LinkError: PX4 closed its link, did
+/// not connect or stopped answering with on_timeout: stop). Throws ConfigError when the scene has
+/// no PX4 vehicle.
+Px4JobResult RunPx4Job(const Px4JobOptions& options,
+                       const std::function<void(const JobProgress&)>& progress = {});
+
+/// The PX4 airframe file of vehicle `vehicle` of the scene (engine::mavlink::WritePx4Airframe),
+/// hover thrust at the air density and gravity of its start position. Throws ConfigError for a
+/// vehicle the scene lacks; options.name defaults to "airis_<vehicle>".
+std::string WritePx4AirframeFor(const SceneSource& scene, const std::string& vehicle,
+                                engine::mavlink::Px4AirframeOptions options);
+
+}  // namespace airis::tools
