@@ -60,10 +60,17 @@ void Px4Autopilot::Log(const std::string& line) const {
 }
 
 template <class M>
-void Px4Autopilot::Send(const M& message) {
-  FrameBuffer buffer;
-  const std::size_t n = encoder_.Encode(message, buffer);
-  if (!link_->Send(std::span<const std::uint8_t>(buffer.data(), n))) {
+void Px4Autopilot::Queue(const M& message) {
+  AIRIS_DEMAND(out_used_ + kMaxEncodedLength<M> <= out_.size());
+  out_used_ += encoder_.Encode(
+      message, std::span<std::uint8_t>(out_.data() + out_used_, out_.size() - out_used_));
+}
+
+void Px4Autopilot::Flush() {
+  if (out_used_ == 0) return;
+  const bool sent = link_->Send(std::span<const std::uint8_t>(out_.data(), out_used_));
+  out_used_ = 0;
+  if (!sent) {
     throw LinkError("PX4 link of vehicle '" + options_.vehicle + "' (" + link_->Describe() +
                     ") closed at t = " + SimTime(now_ns_) + " s");
   }
@@ -98,29 +105,32 @@ void Px4Autopilot::Publish(const ControlContext& context) {
   }
   Connect();
   const std::uint64_t time_usec = static_cast<std::uint64_t>(context.now_ns / 1000);
-  HilSensor sensor;
-  if (feed_.TakeHilSensor(time_usec, &sensor)) {
-    Send(sensor);
-    ++stats_.sensor_messages;
-  }
+  // One write per exchange, HIL_SENSOR last: PX4 steps its clock on it, with the GPS, range and
+  // truth of the same instant already read.
   HilGps gps;
   if (feed_.TakeHilGps(&gps)) {
-    Send(gps);
+    Queue(gps);
     ++stats_.gps_messages;
   }
   DistanceSensor distance;
   if (feed_.TakeDistanceSensor(static_cast<std::uint32_t>(context.now_ns / 1'000'000), &distance)) {
-    Send(distance);
+    Queue(distance);
   }
   if (state_interval_ns_ > 0 && context.now_ns >= next_state_ns_) {
     const Vec3 gravity_W(0.0, 0.0, context.gravity_m_s2);
-    Send(HilSensorFeed::MakeState(time_usec, *context.state, *context.accelerations,
-                                  *options_.frame, gravity_W,
-                                  context.environment->wind().CalcVelocity_W(context.state->p_W)));
+    Queue(HilSensorFeed::MakeState(time_usec, *context.state, *context.accelerations,
+                                   *options_.frame, gravity_W,
+                                   context.environment->wind().CalcVelocity_W(context.state->p_W)));
     // On average at the rate asked for (HIL_SENSOR times are its only chances); no burst after
     // a pause.
     next_state_ns_ = std::max(next_state_ns_ + state_interval_ns_, context.now_ns);
   }
+  HilSensor sensor;
+  if (feed_.TakeHilSensor(time_usec, &sensor)) {
+    Queue(sensor);
+    ++stats_.sensor_messages;
+  }
+  Flush();
   exchange_ = true;
   answered_ = false;
   exchange_time_usec_ = time_usec;

@@ -89,7 +89,8 @@ class Px4Autopilot final : public Autopilot {
   void PaceToRealTime(TimeNs now_ns);
   void ApplyOutputs(Vehicle& vehicle);
   template <class M>
-  void Send(const M& message);
+  void Queue(const M& message);  // encoded into out_, sent by Flush
+  void Flush();
   void Log(const std::string& line) const;
 
   Options options_;
@@ -98,6 +99,8 @@ class Px4Autopilot final : public Autopilot {
   HilSensorFeed feed_;
   FrameEncoder encoder_;
   FrameParser parser_;
+  std::array<std::uint8_t, 1024> out_{};  // what one Publish sends, in one write
+  std::size_t out_used_ = 0;
   RateSchedule sensor_schedule_;
   std::unique_ptr<Px4MissionLink> mission_;
   std::array<int, 16> channel_of_{};  // actuator -> 0-based control index
