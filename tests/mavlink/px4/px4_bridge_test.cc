@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/mavlink/enums.h"
 #include "engine/mavlink/link/link.h"
@@ -312,6 +313,48 @@ TEST_F(Px4BridgeTest, FeedsAirisSensorModelsInPx4UnitsAtTheirOwnRates) {
 
   // HIL_STATE_QUATERNION at the 200 Hz PX4 asked for, on average.
   EXPECT_NEAR(static_cast<double>(seen.state_times_us.size()), 1200.0, 3.0);
+}
+
+TEST(Px4BridgeSwarmTest, TwoPx4InstancesRunInOneLockstep) {
+  // Two vehicles, two bridges, two PX4s: every tick both get their messages before either is
+  // waited for, and each answers its own.
+  tools::SimulationJob job({"two.yaml", R"(
+scene: {name: two}
+vehicles:
+  - {name: a, preset: quad_x, start: {position_ned_m: [0, 0, -0.2]}, sensors: [{imu: {}}]}
+  - {name: b, preset: quad_x, start: {position_ned_m: [5, 0, -0.2]}, sensors: [{imu: {}}]}
+)",
+                            std::nullopt});
+  std::vector<std::unique_ptr<ScriptedPx4>> peers;
+  std::vector<Px4Autopilot*> bridges;
+  for (std::size_t i = 0; i < 2; ++i) {
+    Px4Autopilot::Options o;
+    o.config = Sitl();
+    o.config.instance = static_cast<int>(i);
+    o.vehicle = job.world().vehicle(i).name();
+    o.frame = &job.world().environment().frame();
+    o.actuator_count = 4;
+    o.motor_count = 4;
+    o.tcp_port = 0;
+    auto bridge = std::make_unique<Px4Autopilot>(o, job.world().sensors(i));
+    ScriptedPx4Script script;
+    script.port = bridge->tcp_port();
+    script.controls.fill(i == 0 ? 0.25f : 0.75f);
+    bridges.push_back(bridge.get());
+    job.simulation().SetAutopilot(i, std::move(bridge));
+    peers.push_back(std::make_unique<ScriptedPx4>(script));
+  }
+  job.simulation().RunFor(0.5);
+  EXPECT_FLOAT_EQ(job.world().vehicle(0).actuator_commands()[0], 0.25f);
+  EXPECT_FLOAT_EQ(job.world().vehicle(1).actuator_commands()[0], 0.75f);
+  for (Px4Autopilot* bridge : bridges) {
+    EXPECT_EQ(bridge->stats().sensor_messages, 125);
+    EXPECT_EQ(bridge->stats().actuator_messages, 110);
+    EXPECT_EQ(bridge->stats().timeouts, 0);
+    EXPECT_GT(bridge->stats().lockstep_steps, 100);
+  }
+  for (std::size_t i = 0; i < 2; ++i) job.simulation().SetAutopilot(i, nullptr);
+  for (auto& peer : peers) peer->Join();
 }
 
 }  // namespace
