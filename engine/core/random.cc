@@ -14,8 +14,6 @@ std::uint64_t SplitMix64(std::uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-constexpr std::uint64_t RotateLeft(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-
 }  // namespace
 
 std::uint64_t StableHash(std::string_view text) {
@@ -30,19 +28,6 @@ std::uint64_t StableHash(std::string_view text) {
 RandomStream::RandomStream(std::uint64_t seed) {
   std::uint64_t sm = seed;
   for (auto& s : s_) s = SplitMix64(sm);
-}
-
-std::uint64_t RandomStream::NextU64() {
-  // xoshiro256++ (Blackman & Vigna, 2019).
-  const std::uint64_t result = RotateLeft(s_[0] + s_[3], 23) + s_[0];
-  const std::uint64_t t = s_[1] << 17;
-  s_[2] ^= s_[0];
-  s_[3] ^= s_[1];
-  s_[1] ^= s_[2];
-  s_[0] ^= s_[3];
-  s_[2] ^= t;
-  s_[3] = RotateLeft(s_[3], 45);
-  return result;
 }
 
 RandomStream RandomStream::Fork(std::string_view name) const {
