@@ -277,9 +277,16 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
   std::error_code ec;
   if (fs::is_regular_file(out / "manifest.json", ec) &&
       ReadJson(out / "manifest.json").value("merge_in_progress", false)) {
-    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
+    for (const auto& e : fs::directory_iterator(out)) {
+      const std::string name = e.path().filename().string();
+      if (std::find(kSubmissionFolders.begin(), kSubmissionFolders.end(), name) ==
+          kSubmissionFolders.end())
+        fs::remove_all(e.path());
+    }
   }
-  PrepareEmptyOutputFolder(out.string(), "--out");
+  // The folder of a Slurm submission holds its shards and scripts: the merged dataset goes beside
+  // them (docs/cluster.md).
+  PrepareEmptyOutputFolder(out.string(), "--out", kSubmissionFolders);
   engine::WriteFileAtomically(
       out / "manifest.json",
       json({{"format", "airis-dataset"}, {"complete", false}, {"merge_in_progress", true}})
