@@ -3,10 +3,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
+#include "tools/jobs/slurm_client.h"
 
 namespace airis::tools {
 
@@ -23,6 +25,10 @@ int RunReportingErrors(const std::function<int()>& body) {
     // A full disk, an unwritable folder, a damaged dataset: the files and the system's reason.
     std::fprintf(stderr, "error: %s\n", e.what());
     return 4;
+  } catch (const SchedulerError& e) {
+    // sbatch, squeue or scancel failed: the command line and Slurm's own words.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 5;
   } catch (const std::out_of_range& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -34,6 +40,15 @@ int RunReportingErrors(const std::function<int()>& body) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
+}
+
+std::string CurrentExecutable() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) {
+    throw std::runtime_error("cannot find the airis binary (/proc/self/exe: " + ec.message() + ")");
+  }
+  return self.string();
 }
 
 double ParseFiniteNumber(const std::string& name, const std::string& text) {

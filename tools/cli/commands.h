@@ -11,5 +11,6 @@ void AddSceneCommand(CLI::App& app, int& exit_code);
 void AddRunCommand(CLI::App& app, int& exit_code);
 void AddBenchCommand(CLI::App& app, int& exit_code);
 void AddDatasetCommand(CLI::App& app, int& exit_code);
+void AddCampaignCommand(CLI::App& app, int& exit_code);
 
 }  // namespace airis::tools

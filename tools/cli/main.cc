@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   airis::tools::AddSceneCommand(app, exit_code);
   airis::tools::AddRunCommand(app, exit_code);
   airis::tools::AddDatasetCommand(app, exit_code);
+  airis::tools::AddCampaignCommand(app, exit_code);
   airis::tools::AddBenchCommand(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;

@@ -56,7 +56,10 @@ ProcessResult RunProcess(const std::vector<std::string>& argv) {
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) {
     r.exit_code = 127;
-    r.error = argv[0] + ": " + std::strerror(spawned);
+    r.error = argv[0] + ": " +
+              (spawned == ENOENT && argv[0].find('/') == std::string::npos
+                   ? std::string("not found in PATH (is it installed here?)")
+                   : std::string(std::strerror(spawned)));
     return r;
   }
   out.Close(1);
@@ -93,7 +96,7 @@ ProcessResult RunProcess(const std::vector<std::string>& argv) {
   }
   // posix_spawnp reports a program it cannot exec through the child's exit status 127.
   if (r.exit_code == 127 && r.out.empty() && r.err.empty()) {
-    r.error = argv[0] + ": not found or not executable (searched PATH)";
+    r.error = argv[0] + ": not found in PATH or not executable";
   }
   return r;
 }
