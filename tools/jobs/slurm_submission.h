@@ -30,10 +30,14 @@ struct SlurmRecord {
 /// DIR/slurm/submission.json.
 std::string SlurmRecordPath(const std::string& out);
 
+/// The record as DIR/slurm/submission.json holds it: the plan (airis, scene, mission, options,
+/// out, shards, name, resources) and each submission's array job, shards, merge job and what the
+/// merge also waited for.
 nlohmann::json SlurmRecordJson(const SlurmRecord& record);
 
-/// The record of dataset folder `out` (its plan's `out` is `out`, wherever it was submitted). Throws ConfigError naming `option` and the file when there
-/// is none ("made without --slurm?"), DatasetIoError when it cannot be read or parsed.
+/// The record of dataset folder `out` (its plan's `out` is `out`, wherever it was submitted).
+/// Throws ConfigError naming `option` and the file when there is none ("made without --slurm?"),
+/// DatasetIoError when it cannot be read or parsed.
 SlurmRecord ReadSlurmRecord(const std::string& out, const std::string& option);
 
 /// The command line that makes the plan's dataset on Slurm (`airis dataset SCENE --mission M
