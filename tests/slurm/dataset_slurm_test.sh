@@ -2,7 +2,8 @@
 # `airis dataset --slurm 3` on a real one-node Slurm (local_slurm.sh): the merged dataset is byte for
 # byte the unsharded run's; a shard task cancelled mid-run shows as failed in `airis dataset status`,
 # its merge is cancelled, and `--only-shards` runs it again (resuming its folder) and merges the same
-# bytes; a campaign of two seeds makes two datasets with their seeds. Prints the wall times (unsharded run, submit to merged) for docs/performance.md.
+# bytes; a campaign of two seeds makes two one-task datasets with their seeds. Prints the wall times
+# (unsharded run, submit to merged) for docs/performance.md.
 #
 #   tests/slurm/dataset_slurm_test.sh AIRIS_BINARY      (from the repository root; CTest: SlurmDataset)
 #
@@ -169,7 +170,7 @@ datasets:
     mission: $MISSION
     seeds: [5, 6]
 EOF
-"$AIRIS" campaign submit "$work/train.yaml" --out "$work/train" --slurm --shards 2
+"$AIRIS" campaign submit "$work/train.yaml" --out "$work/train" --slurm --shards 1
 campaign_merged() {
   "$AIRIS" campaign status "$work/train" --json | json_get - 'j["merged"]'
 }
