@@ -7,7 +7,8 @@
 # accounting_storage/none) it only says "Slurm accounting storage is disabled" and exits 1. slurmctld keeps
 # finished jobs for MinJobAge (300 s), far longer than any wait here.
 #
-# Run as root: tests/slurm/smoke_test.sh. Ends with "N passed, N failed"; exits 0 only if all checks held.
+# Run as root: tests/slurm/smoke_test.sh (CTest: SlurmSmoke; installs the Debian packages when missing,
+# skips with exit 77 when not root). Ends with "N passed, N failed"; exits 0 only if all checks held.
 # shellcheck disable=SC2016  # job scripts and eval'd checks are single-quoted on purpose: they expand later
 set -euo pipefail
 
@@ -15,6 +16,12 @@ LOCAL_SLURM="$(cd "$(dirname "$0")" && pwd)/local_slurm.sh"
 readonly LOCAL_SLURM
 # Every wait is bounded; 30 s is ten times what the slowest step takes on a 2-core machine.
 readonly WAIT_S=30
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "SKIP: needs root to start slurmd (it runs jobs as their owner); run as root (as CI does)"
+  exit 77
+fi
+"$LOCAL_SLURM" install
 
 work="$(mktemp -d /tmp/airis-slurm-smoke.XXXXXX)"
 state="$work/cluster"

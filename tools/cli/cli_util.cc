@@ -3,11 +3,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
 #include "engine/mavlink/link/link.h"
+#include "tools/jobs/slurm_client.h"
 
 namespace airis::tools {
 
@@ -28,6 +30,10 @@ int RunReportingErrors(const std::function<int()>& body) {
     // PX4 did not connect, closed its link or stopped answering; a port or device is unusable.
     std::fprintf(stderr, "autopilot link: %s\n", e.what());
     return 5;
+  } catch (const SchedulerError& e) {
+    // sbatch, squeue or scancel failed: the command line and Slurm's own words.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 6;
   } catch (const std::out_of_range& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -42,6 +48,15 @@ int RunReportingErrors(const std::function<int()>& body) {
 }
 
 void PrintToStderr(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
+
+std::string CurrentExecutable() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) {
+    throw std::runtime_error("cannot find the airis binary (/proc/self/exe: " + ec.message() + ")");
+  }
+  return self.string();
+}
 
 double ParseFiniteNumber(const std::string& name, const std::string& text) {
   std::size_t used = 0;

@@ -9,10 +9,14 @@ namespace airis::tools {
 /// Runs a command body and turns the errors users can cause into one clear line on stderr and an
 /// exit code (README, "Exit codes"): 2 for bad input (ConfigError, std::out_of_range and
 /// std::invalid_argument from models), 3 when the simulation diverged (SimulationError), 4 for a
-/// file that cannot be written or read (DatasetIoError: a full disk, an unwritable folder), 1 for
-/// any other std::exception (no EGL display), with its message. Returns the body's exit code
-/// otherwise. No stack traces, no noise.
+/// file that cannot be written or read (DatasetIoError: a full disk, an unwritable folder), 5 when
+/// a Slurm command failed (SchedulerError), 1 for any other std::exception (no EGL display), with
+/// its message. Returns the body's exit code otherwise. No stack traces, no noise.
 int RunReportingErrors(const std::function<int()>& body);
+
+/// The absolute path of the running airis binary (what Slurm job scripts run). Throws
+/// std::runtime_error when /proc/self/exe cannot be read.
+std::string CurrentExecutable();
 
 /// Parses `text` as a finite double for option `--name`, or throws ConfigError naming the option.
 double ParseFiniteNumber(const std::string& name, const std::string& text);

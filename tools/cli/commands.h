@@ -12,5 +12,6 @@ void AddRunCommand(CLI::App& app, int& exit_code);
 void AddBenchCommand(CLI::App& app, int& exit_code);
 void AddDatasetCommand(CLI::App& app, int& exit_code);
 void AddPx4Command(CLI::App& app, int& exit_code);
+void AddCampaignCommand(CLI::App& app, int& exit_code);
 
 }  // namespace airis::tools

@@ -3,9 +3,12 @@
 //  [--formats npy,normals,tartanair] [--workers N]`: flies the mission and writes a labeled
 //  dataset.
 // `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
+// `airis dataset ... --slurm N [--only-shards K,...]`: submits the shards and their merge to Slurm;
+// `airis dataset status DIR [--json]`: how far they got (docs/cluster.md).
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,9 +21,12 @@
 #include "engine/core/error.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/slurm_cli.h"
 #include "tools/cli/stop_signals.h"
 #include "tools/jobs/dataset_job.h"
 #include "tools/jobs/dataset_merge.h"
+#include "tools/jobs/dataset_status.h"
+#include "tools/jobs/slurm_submission.h"
 
 namespace airis::tools {
 namespace {
@@ -35,6 +41,9 @@ struct DatasetArgs {
   std::string streams = "capture";
   std::string stream_format = "npy";
   bool resume = false;
+  int slurm = 0;  // N of --slurm N; 0 = run here
+  std::string only_shards;
+  SlurmArgs slurm_args;
 };
 
 // "1:23" or "12:03:04" for a wall time in seconds.
@@ -169,6 +178,94 @@ int Run(const DatasetArgs& a) {
   return 0;
 }
 
+// --only-shards 3,7 as shard numbers.
+std::vector<int> ParseShardList(const std::string& text) {
+  std::vector<int> shards;
+  for (const std::string& item : SplitList(text)) {
+    int k = 0;
+    const auto r = std::from_chars(item.data(), item.data() + item.size(), k);
+    if (r.ec != std::errc() || r.ptr != item.data() + item.size() || k < 1) {
+      throw engine::ConfigError({}, "--only-shards",
+                                "expected shard numbers such as 3,7 (got '" + text + "')");
+    }
+    shards.push_back(k);
+  }
+  if (shards.empty()) {
+    throw engine::ConfigError({}, "--only-shards",
+                              "expected shard numbers such as 3,7 (got '" + text + "')");
+  }
+  return shards;
+}
+
+// `--slurm N`: the job scripts into DIR/slurm/, sbatch of the shard array and the merge.
+int SubmitToSlurm(const DatasetArgs& a) {
+  for (const auto& [value, name] :
+       {std::pair{&a.scene, "scene"}, {&a.mission, "--mission"}, {&a.out, "--out"}}) {
+    if (value->empty())
+      throw engine::ConfigError(
+          {}, name, "required (airis dataset SCENE --mission FILE --out DIR --slurm N)");
+  }
+  if (!a.shard.empty()) {
+    throw engine::ConfigError({}, "--shard",
+                              "not with --slurm: the job array runs every shard K/N itself");
+  }
+  if (a.resume) {
+    throw engine::ConfigError({}, "--resume",
+                              "not with --slurm: each task resumes its own shard; to run failed "
+                              "shards again use --only-shards");
+  }
+  SlurmDatasetPlan plan;
+  plan.dataset.airis = CurrentExecutable();
+  plan.dataset.scene = fs::absolute(a.scene).lexically_normal().string();
+  plan.dataset.mission = fs::absolute(a.mission).lexically_normal().string();
+  // The options as given, checked here as a run here would check them, so that a typo fails now
+  // and not in N tasks on the cluster.
+  if (!a.seed.empty()) ParseSeed("seed", a.seed);
+  ParseFormats(a.formats);
+  DatasetOptionValues v;
+  v.seed = a.seed;
+  v.cameras = a.cameras;
+  v.formats = a.formats;
+  v.streams = a.streams;
+  v.stream_format = a.stream_format;
+  v.min_object_area_px = std::to_string(a.min_object_area_px);
+  v.workers = std::to_string(a.workers);
+  if (a.streams != "capture" && a.streams != "flight") {
+    throw engine::ConfigError({}, "--streams",
+                              "expected capture or flight (got '" + a.streams + "')");
+  }
+  if (a.stream_format != "csv" && a.stream_format != "npy") {
+    throw engine::ConfigError({}, "--stream-format",
+                              "expected csv or npy (got '" + a.stream_format + "')");
+  }
+  plan.dataset.options = DatasetOptionWords(v);
+  plan.out = fs::absolute(a.out).lexically_normal().string();
+  if (plan.out.size() > 1 && plan.out.back() == '/') plan.out.pop_back();
+  plan.shards = a.slurm;
+  plan.resources = a.slurm_args.ToResources();
+  const std::vector<int> only =
+      a.only_shards.empty() ? std::vector<int>{} : ParseShardList(a.only_shards);
+  if (a.slurm_args.dry_run) {
+    ValidateSlurmPlan(plan);
+    CheckDatasetInputs(plan);
+    std::printf("%s", DescribeSlurmSubmission(plan, only).c_str());
+    return 0;
+  }
+  const SlurmSubmission s = SubmitDatasetToSlurm(plan, only);
+  PrintSubmission(plan, s);
+  return 0;
+}
+
+int Status(const std::string& out, bool as_json) {
+  const DatasetStatus st = ReadDatasetStatus(fs::absolute(out).lexically_normal().string());
+  if (as_json) {
+    std::printf("%s\n", DatasetStatusJson(st).dump(2).c_str());
+  } else {
+    PrintDatasetStatus(st);
+  }
+  return 0;
+}
+
 int Merge(const std::vector<std::string>& shards, const std::string& out) {
   const MergeSummary m =
       MergeDatasetShards(std::vector<fs::path>(shards.begin(), shards.end()), out);
@@ -194,6 +291,15 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   merge->callback([shards, merge_out, &exit_code] {
     exit_code = RunReportingErrors([&] { return Merge(*shards, *merge_out); });
   });
+  auto status_dir = std::make_shared<std::string>();
+  auto status_json = std::make_shared<bool>(false);
+  CLI::App* status = cmd->add_subcommand(
+      "status", "frames per shard, failed or missing shards and the merge of a --slurm dataset");
+  status->add_option("dir", *status_dir, "the --out folder of airis dataset --slurm")->required();
+  status->add_flag("--json", *status_json, "print JSON (docs/cluster.md, \"Status\")");
+  status->callback([status_dir, status_json, &exit_code] {
+    exit_code = RunReportingErrors([&] { return Status(*status_dir, *status_json); });
+  });
   cmd->add_option("scene", a->scene, "scene file (YAML)");
   cmd->add_option("--mission", a->mission, "mission file (YAML)");
   cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume");
@@ -215,9 +321,23 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
                   "instances with fewer visible pixels get no COCO annotation (default 16)");
   cmd->add_flag("--resume", a->resume,
                 "continue an interrupted run in --out (same result as uninterrupted)");
-  cmd->callback([a, merge, &exit_code] {
-    if (merge->parsed()) return;
-    exit_code = RunReportingErrors([&] { return Run(*a); });
+  cmd->add_option("--slurm", a->slurm,
+                  "submit to Slurm as N shard tasks and a merge job into --out (docs/cluster.md)");
+  cmd->add_option("--only-shards", a->only_shards,
+                  "with --slurm: run only these shards again (comma-separated), e.g. failed ones");
+  AddSlurmOptions(cmd, a->slurm_args);
+  cmd->callback([a, cmd, merge, status, &exit_code] {
+    if (merge->parsed() || status->parsed()) return;
+    exit_code = RunReportingErrors([&] {
+      if (a->slurm != 0) return SubmitToSlurm(*a);
+      for (const char* option : {"--only-shards", "--dry-run", "--partition", "--time",
+                                 "--cpus-per-task", "--mem", "--sbatch-arg"}) {
+        if (cmd->count(option) > 0) {
+          throw engine::ConfigError({}, option, "only with --slurm N");
+        }
+      }
+      return Run(*a);
+    });
   });
 }
 

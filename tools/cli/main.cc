@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   airis::tools::AddRunCommand(app, exit_code);
   airis::tools::AddDatasetCommand(app, exit_code);
   airis::tools::AddPx4Command(app, exit_code);
+  airis::tools::AddCampaignCommand(app, exit_code);
   airis::tools::AddBenchCommand(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;

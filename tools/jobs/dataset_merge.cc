@@ -64,8 +64,13 @@ std::vector<Shard> ReadShards(const std::vector<fs::path>& dirs) {
       throw DatasetIoError(dir.string() + "/manifest.json: not an airis dataset manifest");
     }
     if (!s.manifest.contains("shard")) {
-      throw DatasetIoError("'" + dir.string() +
-                           "' is not a shard (it was made without --shard K/N)");
+      // One folder of a whole dataset is the one shard of one (what `--slurm 1` and a campaign's
+      // one-task datasets merge); among others it is a mistake.
+      if (dirs.size() != 1) {
+        throw DatasetIoError("'" + dir.string() +
+                             "' is not a shard (it was made without --shard K/N)");
+      }
+      s.manifest["shard"] = {{"index", 1}, {"count", 1}};
     }
     s.index = s.manifest["shard"]["index"].get<int>();
     const int count = s.manifest["shard"]["count"].get<int>();
@@ -112,11 +117,18 @@ std::vector<Shard> ReadShards(const std::vector<fs::path>& dirs) {
   return shards;
 }
 
+// Puts the file `from` at `to`: a hard link where both are on one file system (the shards of a
+// Slurm submission inside the merged folder: no second copy of every frame, and no frame I/O),
+// otherwise a copy. Shard files are never changed in place (a resumed shard renames a new file
+// over an old one), so the merged dataset cannot change under a link.
 void CopyNew(const fs::path& from, const fs::path& to) {
   std::error_code ec;
   fs::create_directories(to.parent_path(), ec);
   if (fs::exists(to))
     throw DatasetIoError(to.string() + " comes from two shards (" + from.string() + ")");
+  fs::create_hard_link(from, to, ec);
+  if (!ec) return;
+  ec.clear();
   if (!fs::copy_file(from, to, ec))
     throw DatasetIoError("cannot copy " + from.string() + ": " + ec.message());
 }
@@ -277,9 +289,16 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
   std::error_code ec;
   if (fs::is_regular_file(out / "manifest.json", ec) &&
       ReadJson(out / "manifest.json").value("merge_in_progress", false)) {
-    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
+    for (const auto& e : fs::directory_iterator(out)) {
+      const std::string name = e.path().filename().string();
+      if (std::find(kSubmissionFolders.begin(), kSubmissionFolders.end(), name) ==
+          kSubmissionFolders.end())
+        fs::remove_all(e.path());
+    }
   }
-  PrepareEmptyOutputFolder(out.string(), "--out");
+  // The folder of a Slurm submission holds its shards and scripts: the merged dataset goes beside
+  // them (docs/cluster.md).
+  PrepareEmptyOutputFolder(out.string(), "--out", kSubmissionFolders);
   engine::WriteFileAtomically(
       out / "manifest.json",
       json({{"format", "airis-dataset"}, {"complete", false}, {"merge_in_progress", true}})

@@ -1,19 +1,26 @@
 #include "tools/jobs/output_folder.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "engine/core/error.h"
 
 namespace airis::tools {
 
-void PrepareEmptyOutputFolder(const std::string& path, const std::string& option) {
+void PrepareEmptyOutputFolder(const std::string& path, const std::string& option,
+                              const std::vector<std::string>& allowed) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::exists(path, ec)) {
     if (!fs::is_directory(path, ec)) {
       throw engine::ConfigError({}, option, "'" + path + "' exists and is not a folder");
     }
-    if (!fs::is_empty(path, ec)) {
+    bool empty = true;
+    for (const auto& e : fs::directory_iterator(path, ec)) {
+      empty = empty && std::find(allowed.begin(), allowed.end(), e.path().filename().string()) !=
+                           allowed.end();
+    }
+    if (!empty) {
       throw engine::ConfigError({}, option,
                                 "'" + path +
                                     "' is not empty; nothing is overwritten (choose another folder "

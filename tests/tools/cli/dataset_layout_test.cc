@@ -197,6 +197,25 @@ TEST(DatasetLayoutTest, ShardsMergeIntoTheUnshardedDatasetByteForByte) {
   }
 }
 
+// `--slurm 1` (a campaign's one-task datasets) merges the one whole dataset its task wrote: the
+// same bytes, the frames hard-linked rather than copied (both folders are on one file system).
+TEST(DatasetLayoutTest, AWholeDatasetMergesAloneIntoTheSameBytesWithLinkedFrames) {
+  const fs::path whole = MakeBalls("alone", "--cameras down --shard 1/1");
+  const fs::path merged = airis::testing::TestTempDir() / "airis_balls_alone_merged";
+  fs::remove_all(merged);
+  const auto r = RunAiris("dataset merge " + whole.string() + " --out " + merged.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto original = AllFiles(whole), joined = AllFiles(merged);
+  ASSERT_GT(original.size(), 10u);
+  EXPECT_EQ(joined.size(), original.size());
+  for (const auto& [name, bytes] : original) {
+    ASSERT_TRUE(joined.count(name)) << name;
+    EXPECT_TRUE(joined.at(name) == bytes) << name << " differs";
+  }
+  EXPECT_EQ(fs::hard_link_count(merged / "down/rgb/000000.png"), 2u);
+  EXPECT_TRUE(fs::equivalent(merged / "down/rgb/000000.png", whole / "down/rgb/000000.png"));
+}
+
 TEST(DatasetLayoutTest, MergeRefusesShardsThatDoNotMakeOneDataset) {
   const fs::path s1 = MakeBalls("bad_shard1", "--shard 1/2 --cameras down");
   const fs::path s2 = MakeBalls("bad_shard2", "--shard 2/2 --cameras down");
