@@ -320,17 +320,23 @@ void BindSimulation(py::module_& m) {
                              [](PythonSimulation& s) { return s.simulation().clock().step_s(); })
       .def_property_readonly("seed", [](PythonSimulation& s) { return s.job().scene().seed; })
       .def_property_readonly("scene_path", [](PythonSimulation& s) { return s.job().scene().path; })
+      // step() without arguments first: pybind11 tries overloads in order, and this is the call
+      // whose overhead matters (one tick per call from a Python control loop).
+      .def("step",
+           [](PythonSimulation& s) {
+             if (s.has_mission()) {
+               s.RunTicks(1, {});
+             } else {
+               s.simulation().Step();
+             }
+           })
       .def(
           "step",
           [](PythonSimulation& s, std::int64_t n) {
-            if (n == 1 && !s.has_mission()) {
-              s.simulation().Step();  // the common case, without the loop's bookkeeping
-              return;
-            }
             if (n < 0) throw py::value_error("n: must be >= 0 (got " + std::to_string(n) + ")");
             s.RunTicks(n, kCheckSignals);
           },
-          py::arg("n") = 1,
+          py::arg("n"),
           "Runs n physics ticks (a mission in flight is flown through them). Ctrl-C stops it "
           "between ticks (KeyboardInterrupt)")
       .def(

@@ -158,6 +158,14 @@ class _SingleEnv(_EnvBase):
     def control_dt_s(self):
         return self._batch.env.control_dt_s
 
+    def position_ned_m(self):
+        """The vehicle's position now (world NED, m)."""
+        return np.array(self._batch.env.position_ned_m(0))
+
+    def goal_ned_m(self):
+        """The point the task wants the vehicle at now (target, waypoint or goal line point)."""
+        return np.array(self._batch.env.goal_ned_m(0))
+
 
 def _image_to_rgb(image, max_depth_m):
     if image.dtype == np.uint8:
