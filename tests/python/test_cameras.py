@@ -104,3 +104,36 @@ def _rss_kib():
             if line.startswith("VmRSS:"):
                 return int(line.split()[1])
     return 0
+
+
+def _small_dataset(write, airis_bin, tmp_path):
+    scene = write("cam.yaml", CAMERA_SCENE)
+    out = tmp_path / "ds"
+    run([airis_bin, "dataset", scene, "--mission", write("m.yaml", CAPTURE_MISSION), "--out",
+         str(out), "--cameras", "front"])
+    return scene, airis.Dataset(str(out))
+
+
+def test_dataset_reader_gives_streams_labels_and_frames(write, airis_bin, tmp_path):
+    scene, ds = _small_dataset(write, airis_bin, tmp_path)
+    assert ds.complete and "drone1.truth" in ds.streams
+    truth = ds.stream("drone1.truth")
+    assert truth.dtype.names == airis.Simulation(scene).vehicles["drone1"].truth().dtype.names
+    assert "building" in ds.classes.values()
+    f = ds.cameras["front"][0]
+    # 16-bit PNG depth decoded with the manifest's unit: within half a unit of the wall's 10 m.
+    unit = ds.cameras["front"].depth_unit_m
+    assert f["depth_m"][24, 32] == pytest.approx(10.0, abs=unit / 2 + 0.01)
+    assert f["rgb"].shape == (48, 64, 3) and f["instance_id"].dtype == np.uint16
+    with pytest.raises(IndexError):
+        ds.cameras["front"][len(ds.cameras["front"])]
+    with pytest.raises(FileNotFoundError, match="manifest"):
+        airis.Dataset(str(tmp_path))
+
+
+def test_dataset_as_a_torch_dataset(write, airis_bin, tmp_path):
+    torch = pytest.importorskip("torch")  # Debian python3-torch, when installed
+    _, ds = _small_dataset(write, airis_bin, tmp_path)
+    item = ds.cameras["front"].torch()[0]
+    assert item["rgb"].dtype == torch.float32 and item["rgb"].shape == (3, 48, 64)
+    assert item["instance_id"].dtype == torch.int64
