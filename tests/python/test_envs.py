@@ -191,3 +191,39 @@ def _rss_kib():
             if line.startswith("VmRSS:"):
                 return int(line.split()[1])
     return 0
+
+
+GYMNASIUM_STUB = {
+    "gymnasium/__init__.py": "from . import spaces, vector\nclass Env:\n    pass\n",
+    "gymnasium/vector.py": "class VectorEnv:\n    pass\n",
+    "gymnasium/spaces.py": (
+        "class Box:\n"
+        "    def __init__(self, low, high, shape=None, dtype=None):\n"
+        "        self.low, self.high, self.shape, self.dtype = low, high, shape, dtype\n"
+        "class Dict:\n"
+        "    def __init__(self, spaces):\n"
+        "        self.spaces = spaces\n"),
+}
+
+
+def test_with_gymnasium_installed_the_classes_and_spaces_are_gymnasiums(tmp_path):
+    # Debian 12 has no python3-gymnasium: a stand-in package shows the import-time switch.
+    import os
+    import subprocess
+    import sys
+    for name, text in GYMNASIUM_STUB.items():
+        (tmp_path / name).parent.mkdir(exist_ok=True)
+        (tmp_path / name).write_text(text)
+    code = ("import gymnasium, airis\n"
+            "env = airis.HoverEnv()\n"
+            "assert isinstance(env, gymnasium.Env)\n"
+            "assert isinstance(env.observation_space, gymnasium.spaces.Box)\n"
+            "venv = airis.VectorEnv('hover', 2)\n"
+            "assert isinstance(venv, gymnasium.vector.VectorEnv)\n"
+            "obs, info = env.reset(seed=0)\n"
+            "print('ok', obs.shape)\n")
+    path = os.pathsep.join([str(tmp_path)] + sys.path)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ, PYTHONPATH=path))
+    assert out.returncode == 0, out.stderr
+    assert "ok (13,)" in out.stdout

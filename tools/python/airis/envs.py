@@ -109,10 +109,6 @@ class _SingleEnv(_EnvBase):
     def unwrapped(self):
         return self
 
-    @property
-    def np_random(self):
-        return np.random.default_rng()
-
     def reset(self, *, seed=None, options=None):
         """Starts an episode: `seed` restarts the environment's random stream (the same seed gives
         the same episode, bit for bit); None goes on from the last one (0 on the first reset).
