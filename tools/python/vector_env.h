@@ -87,11 +87,12 @@ struct EnvOutputs {
 /// N independent copies of one task, stepped together (docs/python.md, "Vectorized
 /// environments"). Each environment has a World of its own (its vehicle, clock, contacts, random
 /// streams), built from one loaded scene; they share the immutable parts (static scene, ray
-/// caster, GPU scene), so vehicles of different environments never meet. A reset builds the
-/// environment's World again from the scene with a seed drawn from the environment's own random
-/// stream, so an episode depends only on that stream: the same reset seed gives the same episode,
-/// whatever happened before, on any thread count. Physics runs on `threads` threads; images are
-/// rendered afterwards on the calling thread (one GL context).
+/// caster, GPU scene), so vehicles of different environments never meet. The episode worlds hold
+/// the learning vehicle alone and without sensors: observations are its ground truth. A reset
+/// builds the environment's World again from the scene with a seed drawn from the environment's own
+/// random stream, so an episode depends only on that stream: the same reset seed gives the same
+/// episode, whatever happened before, on any thread count. Physics runs on `threads` threads;
+/// images are rendered afterwards on the calling thread (one GL context).
 class VectorEnv {
  public:
   /// Loads the scene (ConfigError), checks the options (ConfigError naming the option) and builds
