@@ -1,5 +1,6 @@
 #include "tools/python/worker_pool.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -10,8 +11,7 @@ WorkerPool::WorkerPool(int threads) {
     throw std::invalid_argument("threads must be between 1 and 64 (got " + std::to_string(threads) +
                                 ")");
   }
-  errors_.resize(static_cast<std::size_t>(threads));
-  for (int w = 1; w < threads; ++w) workers_.emplace_back([this, w] { WorkerLoop(w); });
+  for (int w = 1; w < threads; ++w) workers_.emplace_back([this] { WorkerLoop(); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -23,19 +23,26 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : workers_) t.join();
 }
 
-void WorkerPool::RunBlock(int block) {
-  const auto blocks = static_cast<std::size_t>(threads());
-  const std::size_t b = static_cast<std::size_t>(block);
-  const std::size_t begin = n_ * b / blocks;
-  const std::size_t end = n_ * (b + 1) / blocks;
-  try {
-    for (std::size_t i = begin; i < end; ++i) (*body_)(i);
-  } catch (...) {
-    errors_[b] = std::current_exception();
+void WorkerPool::RunChunks() {
+  for (;;) {
+    const std::size_t begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
+    if (begin >= n_) return;
+    const std::size_t end = std::min(n_, begin + chunk_);
+    for (std::size_t i = begin; i < end; ++i) {
+      try {
+        (*body_)(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex_);
+        if (!error_ || i < error_index_) {
+          error_ = std::current_exception();
+          error_index_ = i;
+        }
+      }
+    }
   }
 }
 
-void WorkerPool::WorkerLoop(int worker) {
+void WorkerPool::WorkerLoop() {
   std::size_t seen = 0;
   for (;;) {
     {
@@ -43,37 +50,42 @@ void WorkerPool::WorkerLoop(int worker) {
       start_.wait(lock, [&] { return stopping_ || generation_ != seen; });
       if (stopping_) return;
       seen = generation_;
+      // A worker that wakes after the caller finished the loop alone stays out of it.
+      if (!open_) continue;
+      ++active_;
     }
-    RunBlock(worker);
+    RunChunks();
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      --pending_;
+      --active_;
     }
     done_.notify_one();
   }
 }
 
 void WorkerPool::Run(std::size_t n, const std::function<void(std::size_t)>& body) {
-  for (auto& e : errors_) e = nullptr;
+  error_ = nullptr;
   n_ = n;
   body_ = &body;
+  // About eight chunks per thread: few atomic operations, little left for a late thread.
+  chunk_ = std::max<std::size_t>(1, n / (static_cast<std::size_t>(threads()) * 8));
+  next_.store(0, std::memory_order_relaxed);
   if (!workers_.empty()) {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      pending_ = static_cast<int>(workers_.size());
+      open_ = true;
       ++generation_;
     }
     start_.notify_all();
   }
-  RunBlock(0);
+  RunChunks();
   if (!workers_.empty()) {
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return pending_ == 0; });
+    open_ = false;
+    done_.wait(lock, [&] { return active_ == 0; });
   }
   body_ = nullptr;
-  for (const auto& e : errors_) {
-    if (e) std::rethrow_exception(e);
-  }
+  if (error_) std::rethrow_exception(error_);
 }
 
 }  // namespace airis::python

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
-#include <thread>
+#include <string>
 #include <vector>
 
 namespace airis::python {
@@ -19,32 +19,22 @@ TEST(WorkerPoolTest, RunsEveryIndexExactlyOnce) {
   }
 }
 
-TEST(WorkerPoolTest, BlocksAreContiguousAndFixedByTheThreadCount) {
-  // Index i runs on the thread of block floor(i * threads / n): the same every call.
+TEST(WorkerPoolTest, RethrowsTheLowestFailingIndexAfterEveryIndexRan) {
   WorkerPool pool(2);
-  std::vector<std::thread::id> first(10), second(10);
-  pool.Run(10, [&](std::size_t i) { first[i] = std::this_thread::get_id(); });
-  pool.Run(10, [&](std::size_t i) { second[i] = std::this_thread::get_id(); });
-  EXPECT_EQ(first, second);
-  for (std::size_t i = 1; i < 5; ++i) EXPECT_EQ(first[i], first[0]);
-  EXPECT_EQ(first[0], std::this_thread::get_id());  // block 0 is the caller's
-  EXPECT_NE(first[5], first[0]);
-}
-
-TEST(WorkerPoolTest, RethrowsTheFirstBlocksExceptionAfterAllFinished) {
-  WorkerPool pool(2);
-  std::vector<int> hits(8, 0);
-  EXPECT_THROW(pool.Run(8,
-                        [&](std::size_t i) {
-                          ++hits[i];
-                          if (i == 6) throw std::runtime_error("six");
-                        }),
-               std::runtime_error);
-  // Block 0 (0-3) and block 1 up to the throw ran.
-  for (std::size_t i = 0; i <= 6; ++i) EXPECT_EQ(hits[i], 1);
+  std::vector<int> hits(40, 0);
+  try {
+    pool.Run(hits.size(), [&](std::size_t i) {
+      ++hits[i];
+      if (i == 30 || i == 6) throw std::runtime_error(std::to_string(i));
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "6");
+  }
+  for (int h : hits) EXPECT_EQ(h, 1);
   // The pool stays usable.
-  pool.Run(8, [&](std::size_t i) { hits[i] = 2; });
-  EXPECT_EQ(hits[7], 2);
+  pool.Run(hits.size(), [&](std::size_t i) { hits[i] = 2; });
+  EXPECT_EQ(hits[39], 2);
 }
 
 TEST(WorkerPoolTest, RefusesABadThreadCount) {
