@@ -151,6 +151,20 @@ def test_forest_env_observes_a_depth_image():
     assert (obs["image"] < env.observation_space["image"].high).any()
 
 
+def test_forest_episodes_repeat_with_their_images():
+    env = airis.ForestEnv(max_episode_steps=10)
+    runs = []
+    for _ in range(2):
+        obs, _ = env.reset(seed=4)
+        frames = [obs["image"].copy()]
+        for _ in range(5):
+            obs, *_ = env.step(np.array([1, 0.2, 0], np.float32))
+            frames.append(obs["image"].copy())
+        runs.append(np.stack(frames))
+    assert runs[0].tobytes() == runs[1].tobytes()
+    assert not np.array_equal(runs[0][0], runs[0][-1])  # it moved: the view changed
+
+
 def test_render_gives_an_rgb_picture():
     env = airis.HoverEnv(render_mode="rgb_array")
     env.reset(seed=0)
