@@ -17,7 +17,8 @@ def test_loads_from_a_file_a_string_and_a_dict_alike():
         "scene": {"name": "empty", "seed": 1},
         "ground": {"size_ne_m": [500, 500]},
         "vehicles": [{"name": "drone1", "preset": "quad_x",
-                      "start": {"position_ned_m": [0, 0, -0.2], "yaw_deg": 0}}],
+                      "start": {"position_ned_m": np.array([0, 0, -0.2]),
+                                "yaw_deg": np.float64(0)}}],
     })
     for sim in (a, b, c):
         sim.vehicles["drone1"].set_position([1.0, 2.0, -3.0])
@@ -193,6 +194,25 @@ def test_ctrl_c_stops_a_long_run_with_keyboard_interrupt():
     assert 0 < t < 1e6
     sim.step()  # still usable
     assert sim.time_s > t
+
+
+def test_ctrl_c_stops_a_mission_in_flight(write):
+    sim = airis.Simulation(write("s.yaml", SENSOR_SCENE))
+    mission = write("m.yaml", "name: long\nsteps:\n  - takeoff: {height_above_start_m: 2}\n"
+                              "  - hover: {duration_s: 100000}\n")
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        with pytest.raises(KeyboardInterrupt):
+            sim.run_mission(mission)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    assert sim.mission["state"] == "running" and 0 < sim.time_s < 100000
 
 
 def test_objects_outlive_the_simulation():
