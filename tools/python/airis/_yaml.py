@@ -51,7 +51,7 @@ def _child(v, indent, lines):
             lines[-1] += " {}"
         else:
             _emit(v, indent + 2, lines)
-    elif isinstance(v, (list, tuple)) or (hasattr(v, "tolist") and not isinstance(v, str)):
+    elif isinstance(v, (list, tuple)) or getattr(v, "ndim", 0) > 0:  # lists, numpy arrays
         items = v.tolist() if hasattr(v, "tolist") else list(v)
         if _is_flat_list(items):
             lines[-1] += " [" + ", ".join(_scalar(x) for x in items) + "]"
