@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps configure build test demo bench format format-check clean
+.PHONY: all deps configure build test demo bench python format format-check clean
 
 all: build
 
@@ -31,6 +31,12 @@ DEMO_OUT ?= out/demo_dataset
 demo: build
 	rm -rf $(DEMO_OUT)
 	./$(BUILD)/airis dataset scenes/city.yaml --mission scenes/missions/city_survey.yaml --out $(DEMO_OUT)
+
+# The Python module: builds it and makes `import airis` work for this user (airis.pth in the user's
+# site-packages pointing at build/python; docs/python.md).
+python: configure
+	cmake --build $(BUILD) -j$(JOBS) --target airis_python
+	./scripts/install-python.sh $(BUILD)
 
 # Every Google Benchmark program under tests/bench/.
 bench: build

@@ -5,19 +5,48 @@
 #include "engine/world/embree_ray_caster.h"
 
 namespace airis::scenes {
+namespace {
+
+// A world's handle on a ray caster that several worlds share (World owns its caster).
+class SharedRayCaster final : public engine::RayCaster {
+ public:
+  explicit SharedRayCaster(std::shared_ptr<const engine::RayCaster> caster)
+      : caster_(std::move(caster)) {}
+  void Cast(std::span<const engine::Ray> rays, std::span<engine::RayHit> hits) const override {
+    caster_->Cast(rays, hits);
+  }
+
+ private:
+  std::shared_ptr<const engine::RayCaster> caster_;
+};
+
+}  // namespace
 
 std::unique_ptr<engine::World> BuildWorld(const Scene& scene) {
-  const engine::RandomStreams streams(scene.seed);
-  auto static_scene = std::make_shared<const engine::StaticScene>(scene.static_scene);
+  WorldResources resources;
+  return BuildWorld(scene, scene.seed, resources);
+}
+
+std::unique_ptr<engine::World> BuildWorld(const Scene& scene, std::uint64_t seed,
+                                          WorldResources& shared) {
+  const engine::RandomStreams streams(seed);
+  if (!shared.static_scene) {
+    shared.static_scene = std::make_shared<const engine::StaticScene>(scene.static_scene);
+  }
+  if (!shared.ray_caster) {
+    shared.ray_caster = std::make_shared<const engine::EmbreeRayCaster>(*shared.static_scene);
+  }
   engine::Environment environment(scene.environment, scene.origin,
                                   streams.Stream("environment/wind"));
-  auto world = std::make_unique<engine::World>(static_scene, std::move(environment), scene.physics);
-  world->set_ray_caster(std::make_unique<engine::EmbreeRayCaster>(*static_scene));
+  auto world =
+      std::make_unique<engine::World>(shared.static_scene, std::move(environment), scene.physics);
+  world->set_ray_caster(std::make_unique<SharedRayCaster>(shared.ray_caster));
   // Cameras share one GPU copy of the static scene, made by the first one.
-  std::shared_ptr<const engine::RenderScene> render;
   auto render_scene = [&] {
-    if (!render) render = std::make_shared<const engine::RenderScene>(*static_scene);
-    return render;
+    if (!shared.render_scene) {
+      shared.render_scene = std::make_shared<const engine::RenderScene>(*shared.static_scene);
+    }
+    return shared.render_scene;
   };
   for (const VehicleDescription& v : scene.vehicles) {
     try {

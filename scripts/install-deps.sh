@@ -7,7 +7,9 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config git
   python3                  # cmake/check_layers.py (the build's layer check)
-  python3-numpy            # the tests read .npy streams back with NumPy
+  python3-numpy            # the tests read .npy streams back with NumPy; the Python module's arrays
+  python3-dev pybind11-dev # the Python module (tools/python)
+  python3-pytest python3-pil  # its tests (pytest) and airis.Dataset's PNG reader
   clang-format             # the format check of the test suite (cmake/check_format.sh)
   libeigen3-dev            # all vector and matrix math
   libbullet-dev            # collision detection (broadphase, narrowphase, contacts)

@@ -140,36 +140,43 @@ void TelemetryRecorder::OnTick(TimeNs now_ns) {
   }
 }
 
-void TelemetryRecorder::WriteTruthRow(std::size_t v, TimeNs now_ns) {
-  const RigidBodyState& s = world_.vehicle(v).state();
-  const RigidBodyAccelerations& a = world_.accelerations(v);
+void TelemetryRecorder::CopyTruthRow(const World& world, std::size_t v, std::vector<double>& out) {
+  const RigidBodyState& s = world.vehicle(v).state();
+  const RigidBodyAccelerations& a = world.accelerations(v);
   const EulerAngles e = EulerFromQuat(s.q_WB);
-  const GeodeticPosition g = world_.environment().frame().ToGeodetic(s.p_W);
-  row_.clear();
-  for (int i = 0; i < 3; ++i) row_.push_back(s.p_W[i]);
-  for (int i = 0; i < 3; ++i) row_.push_back(s.v_W[i]);
-  row_.insert(row_.end(), {s.q_WB.w(), s.q_WB.x(), s.q_WB.y(), s.q_WB.z()});
-  row_.insert(row_.end(), {RadToDeg(e.roll_rad), RadToDeg(e.pitch_rad), RadToDeg(e.yaw_rad)});
-  for (int i = 0; i < 3; ++i) row_.push_back(s.w_B[i]);
-  for (int i = 0; i < 3; ++i) row_.push_back(a.a_W[i]);
-  row_.insert(row_.end(), {RadToDeg(g.latitude_rad), RadToDeg(g.longitude_rad), g.altitude_m});
+  const GeodeticPosition g = world.environment().frame().ToGeodetic(s.p_W);
+  out.clear();
+  for (int i = 0; i < 3; ++i) out.push_back(s.p_W[i]);
+  for (int i = 0; i < 3; ++i) out.push_back(s.v_W[i]);
+  out.insert(out.end(), {s.q_WB.w(), s.q_WB.x(), s.q_WB.y(), s.q_WB.z()});
+  out.insert(out.end(), {RadToDeg(e.roll_rad), RadToDeg(e.pitch_rad), RadToDeg(e.yaw_rad)});
+  for (int i = 0; i < 3; ++i) out.push_back(s.w_B[i]);
+  for (int i = 0; i < 3; ++i) out.push_back(a.a_W[i]);
+  out.insert(out.end(), {RadToDeg(g.latitude_rad), RadToDeg(g.longitude_rad), g.altitude_m});
+}
+
+void TelemetryRecorder::CopyCommandRow(const Vehicle& vehicle, std::vector<double>& out) {
+  const VehicleCommand& c = vehicle.command();
+  out.clear();
+  out.push_back(static_cast<double>(ModeIndex(c.mode)));
+  for (int i = 0; i < 3; ++i) out.push_back(c.position_W[i]);
+  for (int i = 0; i < 3; ++i) out.push_back(c.velocity_W[i]);
+  for (int i = 0; i < 3; ++i) out.push_back(c.acceleration_W[i]);
+  out.insert(out.end(), {c.speed_limit_m_s, RadToDeg(c.yaw_rad)});
+  out.insert(out.end(),
+             {c.attitude_WB.w(), c.attitude_WB.x(), c.attitude_WB.y(), c.attitude_WB.z()});
+  for (int i = 0; i < 3; ++i) out.push_back(c.rates_B[i]);
+  out.push_back(c.thrust_fraction);
+  for (double u : vehicle.actuator_commands()) out.push_back(u);
+}
+
+void TelemetryRecorder::WriteTruthRow(std::size_t v, TimeNs now_ns) {
+  CopyTruthRow(world_, v, row_);
   truth_[v]->AddRow(now_ns, row_);
 }
 
 void TelemetryRecorder::WriteCommandRow(std::size_t v, TimeNs now_ns) {
-  const Vehicle& vehicle = world_.vehicle(v);
-  const VehicleCommand& c = vehicle.command();
-  row_.clear();
-  row_.push_back(static_cast<double>(ModeIndex(c.mode)));
-  for (int i = 0; i < 3; ++i) row_.push_back(c.position_W[i]);
-  for (int i = 0; i < 3; ++i) row_.push_back(c.velocity_W[i]);
-  for (int i = 0; i < 3; ++i) row_.push_back(c.acceleration_W[i]);
-  row_.insert(row_.end(), {c.speed_limit_m_s, RadToDeg(c.yaw_rad)});
-  row_.insert(row_.end(),
-              {c.attitude_WB.w(), c.attitude_WB.x(), c.attitude_WB.y(), c.attitude_WB.z()});
-  for (int i = 0; i < 3; ++i) row_.push_back(c.rates_B[i]);
-  row_.push_back(c.thrust_fraction);
-  for (double u : vehicle.actuator_commands()) row_.push_back(u);
+  CopyCommandRow(world_.vehicle(v), row_);
   commands_[v]->AddRow(now_ns, row_);
 }
 

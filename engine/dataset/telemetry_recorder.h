@@ -56,6 +56,12 @@ class TelemetryRecorder {
   /// The columns of <vehicle>.truth and of <vehicle>.commands (after time).
   static std::vector<LogColumn> TruthColumns();
   static std::vector<LogColumn> CommandColumns(int actuator_count);
+  /// The values of vehicle `vehicle`'s truth row now, in the order of TruthColumns() (what the
+  /// truth stream holds before its types are applied); `out` is overwritten.
+  static void CopyTruthRow(const World& world, std::size_t vehicle, std::vector<double>& out);
+  /// The values of `vehicle`'s command row, in the order of CommandColumns() (`mode` as its
+  /// label's index); `out` is overwritten.
+  static void CopyCommandRow(const Vehicle& vehicle, std::vector<double>& out);
 
  private:
   void WriteTruthRow(std::size_t vehicle, TimeNs now_ns);

@@ -112,10 +112,21 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
   btVector3 direction;
 };
 
+// Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
+// per world); our queries hold a handful at a time, and Bullet allocates beyond a full pool, so
+// small pools change nothing but memory: a process can hold thousands of worlds (the Python
+// module's vectorized environments).
+btDefaultCollisionConstructionInfo SmallPools() {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = 64;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = 64;
+  return info;
+}
+
 }  // namespace
 
 struct CollisionWorld::Bullet {
-  btDefaultCollisionConfiguration configuration;
+  btDefaultCollisionConfiguration configuration{SmallPools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btCollisionWorld world{&dispatcher, &broadphase, &configuration};

@@ -57,6 +57,12 @@ class ImageSensor : public Sensor {
   virtual const CameraFrame& latest(std::size_t index) const = 0;
   /// The GL implementation it renders with.
   virtual RendererInfo renderer() const = 0;
+  /// Renders every stream now, seen from `context` (its vehicle's state and time), into `frames`
+  /// (one per stream, in the order of streams(); their buffers are reused when they have the
+  /// size). On demand, for front ends that take an image when they want one (the Python API's
+  /// capture()): the sample schedule, latest() and the listeners are left as they are. Requires
+  /// frames.size() == streams().size() and, unless every mount is world-fixed, context.state.
+  virtual void Capture(const SensorContext& context, std::span<CameraFrame> frames) = 0;
 
   ImageSensor* image() override { return this; }
   const ImageSensor* image() const override { return this; }

@@ -65,6 +65,13 @@ void CameraSensor::Sample(const engine::SensorContext& context) {
                    context.now_ns, frame_);
 }
 
+void CameraSensor::Capture(const engine::SensorContext& context,
+                           std::span<engine::CameraFrame> frames) {
+  AIRIS_DEMAND(frames.size() == 1);
+  renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
+                   context.now_ns, frames[0]);
+}
+
 engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig& config,
                                     const engine::CameraIntrinsics& intrinsics) {
   engine::ImageStream s;

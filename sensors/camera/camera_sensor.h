@@ -31,6 +31,8 @@ class CameraSensor : public engine::ImageSensor {
   std::span<const engine::ImageStream> streams() const override { return {&stream_, 1}; }
   const engine::CameraFrame& latest(std::size_t index) const override;
   engine::RendererInfo renderer() const override;
+  void Capture(const engine::SensorContext& context,
+               std::span<engine::CameraFrame> frames) override;
 
   const CameraConfig& config() const { return config_; }
 

@@ -61,4 +61,15 @@ void StereoCameraSensor::Sample(const engine::SensorContext& context) {
   renderer_.Collect(right_);
 }
 
+void StereoCameraSensor::Capture(const engine::SensorContext& context,
+                                 std::span<engine::CameraFrame> frames) {
+  AIRIS_DEMAND(frames.size() == 2);
+  const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
+  const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);
+  renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns);
+  renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns);
+  renderer_.Collect(frames[0]);
+  renderer_.Collect(frames[1]);
+}
+
 }  // namespace airis::sensors

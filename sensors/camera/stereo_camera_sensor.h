@@ -31,6 +31,8 @@ class StereoCameraSensor : public engine::ImageSensor {
   std::span<const engine::ImageStream> streams() const override { return streams_; }
   const engine::CameraFrame& latest(std::size_t index) const override;
   engine::RendererInfo renderer() const override;
+  void Capture(const engine::SensorContext& context,
+               std::span<engine::CameraFrame> frames) override;
 
   const engine::CameraFrame& left() const { return left_; }
   const engine::CameraFrame& right() const { return right_; }

@@ -8,18 +8,14 @@
 #include "scenes/world_builder.h"
 
 namespace airis::tools {
-namespace {
-
-scenes::Scene Load(const SceneSource& source) {
+scenes::Scene LoadSceneSource(const SceneSource& source) {
   const scenes::SceneLoadOptions options{source.seed};
   return source.text.empty() ? scenes::LoadScene(source.path, options)
                              : scenes::LoadSceneFromString(source.text, source.path, options);
 }
 
-}  // namespace
-
 SimulationJob::SimulationJob(const SceneSource& source)
-    : wall_start_(std::chrono::steady_clock::now()), scene_(Load(source)) {
+    : wall_start_(std::chrono::steady_clock::now()), scene_(LoadSceneSource(source)) {
   simulation_ = std::make_unique<engine::Simulation>(
       scenes::BuildWorld(scene_), engine::SimulationConfig{scene_.physics.rate_hz});
 }
@@ -58,13 +54,20 @@ void SimulationJob::DisableImageSensors() {
   }
 }
 
+std::unique_ptr<engine::MissionSession> SimulationJob::StartMission(
+    const engine::Mission& mission, engine::MissionSession::Callbacks callbacks) {
+  const std::size_t vehicle = MissionVehicle(mission);
+  return std::make_unique<engine::MissionSession>(
+      simulation(), mission, vehicle, engine::RandomStreams(scene_.seed).Stream("mission"),
+      std::move(callbacks));
+}
+
 MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
                                          const MissionFlight& flight) {
   engine::Simulation& sim = simulation();
   const std::size_t vehicle = MissionVehicle(mission);
-  engine::MissionSession session(sim, mission, vehicle,
-                                 engine::RandomStreams(scene_.seed).Stream("mission"),
-                                 flight.callbacks);
+  const std::unique_ptr<engine::MissionSession> started = StartMission(mission, flight.callbacks);
+  engine::MissionSession& session = *started;
   const engine::Vehicle& flyer = sim.world().vehicle(vehicle);
   const int steps = static_cast<int>(mission.steps.size());
   engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;

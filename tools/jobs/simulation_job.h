@@ -25,6 +25,10 @@ struct SceneSource {
   std::optional<std::uint64_t> seed;  ///< replaces scene.seed before any generator runs
 };
 
+/// Loads `source`'s scene with its seed applied before generators run. Throws ConfigError naming
+/// file, line and key for bad input.
+scenes::Scene LoadSceneSource(const SceneSource& source);
+
 /// Where a running job is (for progress lines). Fields a job does not track stay at their defaults.
 struct JobProgress {
   int step = 0;                                    ///< mission step being flown, 1-based
@@ -85,6 +89,12 @@ class SimulationJob {
 
   /// Switches off every image sensor (a job that records no images does not render).
   void DisableImageSensors();
+
+  /// A session that flies `mission` with its vehicle in this job's simulation when run
+  /// (MissionSession::Run), drawing from the scene seed's "mission" stream; FlyMission runs one.
+  /// For front ends that step the flight themselves (the Python API). Throws as MissionVehicle.
+  std::unique_ptr<engine::MissionSession> StartMission(
+      const engine::Mission& mission, engine::MissionSession::Callbacks callbacks = {});
 
   /// Flies `mission` with its vehicle until it succeeds, fails or the clock reaches
   /// `flight.until_ns`. The mission's random stream is the scene seed's "mission" stream. Throws

@@ -1,0 +1,196 @@
+"""airis.Dataset: reads a dataset written by `airis dataset` (docs/dataset-format.md).
+
+    ds = airis.Dataset("out/demo_dataset")
+    cam = ds.cameras["front"]
+    frame = cam[0]            # dict: rgb (H, W, 3) uint8, depth_m (H, W) float32, class_id, ...
+    imu = ds.stream("drone1.imu")   # structured array, columns as in the file
+    torch_ds = cam.torch()    # a torch.utils.data.Dataset (needs PyTorch)
+"""
+
+import csv
+import json
+import os
+
+import numpy as np
+
+__all__ = ["Dataset", "CameraFrames"]
+
+
+def _read_png(path):
+    from PIL import Image  # Debian python3-pil
+    with Image.open(path) as im:
+        if im.mode in ("I;16", "I;16B", "I"):
+            return np.array(im, dtype=np.uint16) if im.mode != "I" else \
+                np.array(im).astype(np.uint16)
+        return np.array(im)
+
+
+def _read_csv(path):
+    """A CSV with a header as a structured array (ints, floats, else text)."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return np.zeros(0)
+    header, body = rows[0], rows[1:]
+    columns = list(zip(*body)) if body else [[] for _ in header]
+    arrays = []
+    for name, values in zip(header, columns):
+        for kind in (np.int64, np.float64):
+            try:
+                arrays.append(np.array(values, dtype=kind))
+                break
+            except ValueError:
+                continue
+        else:
+            arrays.append(np.array(values, dtype=object))
+    out = np.empty(len(body), dtype=[(h, a.dtype) for h, a in zip(header, arrays)])
+    for h, a in zip(header, arrays):
+        out[h] = a
+    return out
+
+
+class CameraFrames:
+    """The written frames of one camera: len(), [i] -> dict of arrays, poses, intrinsics.
+
+    Frame dict keys (when written): rgb (H, W, 3) uint8; depth_m (H, W) float32 metres (the
+    16-bit PNG times its unit, or the .npy floats with --formats npy; 0 PNG values -> inf, no
+    return); depth_raw (H, W) uint16; class_id (H, W) uint8; instance_id (H, W) uint16; normals
+    (H, W, 3) float32; time_ns; T_WC (4, 4) float64 camera optical frame -> world NED.
+    """
+
+    def __init__(self, root, manifest_entry):
+        self.root = root
+        self.name = manifest_entry["name"]
+        self.info = manifest_entry
+        self.dir = os.path.join(root, self.name)
+        self.poses = _read_csv(os.path.join(self.dir, "poses.csv"))
+        self.width = manifest_entry["width"]
+        self.height = manifest_entry["height"]
+        self.K = np.array([[manifest_entry["fx"], 0.0, manifest_entry["cx"]],
+                           [0.0, manifest_entry["fy"], manifest_entry["cy"]],
+                           [0.0, 0.0, 1.0]])
+        depth = manifest_entry.get("depth_png") or {}
+        self.depth_unit_m = depth.get("unit_m")
+
+    def __len__(self):
+        return len(self.poses)
+
+    def _file(self, kind, index, ext):
+        return os.path.join(self.dir, kind, f"{index:06d}.{ext}")
+
+    def pose(self, i):
+        p = self.poses[i]
+        w, x, y, z = (float(p[f"attitude_cam_to_ned_{c}"]) for c in "wxyz")
+        R = np.array([
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+        T = np.eye(4)
+        T[:3, :3] = R
+        T[:3, 3] = [p["position_ned_x_m"], p["position_ned_y_m"], p["position_ned_z_m"]]
+        return T
+
+    def __getitem__(self, i):
+        if not -len(self) <= i < len(self):
+            raise IndexError(f"camera '{self.name}' has {len(self)} frames (asked for {i})")
+        i = i % len(self)
+        index = int(self.poses[i]["frame"])
+        out = {"index": index, "time_ns": int(self.poses[i]["time_ns"]), "T_WC": self.pose(i)}
+        rgb = self._file("rgb", index, "png")
+        if os.path.exists(rgb):
+            out["rgb"] = _read_png(rgb)[:, :, :3]
+        depth_npy = self._file("depth", index, "npy")
+        depth_png = self._file("depth", index, "png")
+        if os.path.exists(depth_png):
+            raw = _read_png(depth_png)
+            out["depth_raw"] = raw
+            metres = raw.astype(np.float32) * np.float32(self.depth_unit_m)
+            metres[raw == 0] = np.inf
+            out["depth_m"] = metres
+        if os.path.exists(depth_npy):
+            out["depth_m"] = np.load(depth_npy)
+        for kind, key in (("seg_class", "class_id"), ("seg_instance", "instance_id")):
+            path = self._file(kind, index, "png")
+            if os.path.exists(path):
+                out[key] = _read_png(path)
+        normals = self._file("normals", index, "npy")
+        if os.path.exists(normals):
+            out["normals"] = np.load(normals)
+        return out
+
+    def torch(self, keys=("rgb", "depth_m", "class_id", "instance_id")):
+        """A torch.utils.data.Dataset of this camera (requires PyTorch, Debian python3-torch).
+
+        Items are dicts of tensors: rgb float32 (3, H, W) in [0, 1]; depth_m float32 (1, H, W)
+        metres (inf: no return); class_id int64 (H, W); instance_id int64 (H, W) (torch has no
+        uint16: the ids are widened); T_WC float64 (4, 4); K float64 (3, 3); time_ns int64.
+        """
+        return _torch_dataset(self, keys)
+
+
+def _torch_dataset(frames, keys):
+    import torch
+    from torch.utils.data import Dataset as TorchDataset
+
+    class _FramesDataset(TorchDataset):
+        def __len__(self):
+            return len(frames)
+
+        def __getitem__(self, i):
+            f = frames[i]
+            out = {"T_WC": torch.from_numpy(f["T_WC"]), "K": torch.from_numpy(frames.K),
+                   "time_ns": torch.tensor(f["time_ns"], dtype=torch.int64)}
+            if "rgb" in keys and "rgb" in f:
+                out["rgb"] = torch.from_numpy(np.ascontiguousarray(
+                    f["rgb"].transpose(2, 0, 1))).float() / 255.0
+            if "depth_m" in keys and "depth_m" in f:
+                out["depth_m"] = torch.from_numpy(f["depth_m"])[None]
+            for k in ("class_id", "instance_id"):
+                if k in keys and k in f:
+                    out[k] = torch.from_numpy(f[k].astype(np.int64))
+            return out
+
+    return _FramesDataset()
+
+
+class Dataset:
+    """A dataset folder: manifest, labels, cameras (CameraFrames by name) and streams."""
+
+    def __init__(self, root):
+        manifest = os.path.join(root, "manifest.json")
+        if not os.path.exists(manifest):
+            raise FileNotFoundError(f"{root}: no manifest.json (not a dataset written by airis)")
+        with open(manifest) as f:
+            self.manifest = json.load(f)
+        if self.manifest.get("format") != "airis-dataset":
+            raise ValueError(f"{manifest}: format is {self.manifest.get('format')!r}, "
+                             "expected 'airis-dataset'")
+        self.root = root
+        self.complete = bool(self.manifest.get("complete"))
+        labels = os.path.join(root, "labels.json")
+        self.labels = json.load(open(labels)) if os.path.exists(labels) else {}
+        self.classes = {c["id"]: c["name"] for c in self.labels.get("classes", [])}
+        self.cameras = {c["name"]: CameraFrames(root, c) for c in self.manifest.get("cameras", [])}
+
+    @property
+    def streams(self):
+        """Names of the stream files ('drone1.truth', 'drone1.imu', 'collisions', ...)."""
+        names = []
+        for f in sorted(os.listdir(self.root)):
+            base, ext = os.path.splitext(f)
+            if ext in (".npy", ".csv") and base not in ("checksums",):
+                names.append(base)
+        return names
+
+    def stream(self, name):
+        """A stream as a structured array (.npy as written; .csv parsed, ints and floats typed)."""
+        npy = os.path.join(self.root, name + ".npy")
+        if os.path.exists(npy):
+            return np.load(npy)
+        path = os.path.join(self.root, name + ".csv")
+        if not os.path.exists(path):
+            raise KeyError(f"{self.root}: no stream {name!r} (there are: {', '.join(self.streams)})")
+        return _read_csv(path)
+
+    def __repr__(self):
+        return (f"<airis.Dataset {self.root!r}: {', '.join(f'{k} {len(v)} frames' for k, v in self.cameras.items())}>")
