@@ -3,11 +3,12 @@
 
     PYTHONPATH=build/python /usr/bin/python3 examples/train_hover.py [--out out/train_hover]
 
-The policy maps the observation's goal vector and velocity to a velocity action through a linear
-layer and tanh (18 weights). It is trained with the cross-entropy method: each generation, 64
-candidate weight sets fly one episode each, in the 64 environments of one airis.VectorEnv stepped
-together in C++, all from the same seeded start; the best eighth define the next generation's
-distribution. NumPy only (Debian 12's python3-torch is optional and not needed here).
+The policy, a PyTorch linear layer and tanh (18 weights), maps the observation's goal vector and
+velocity to a velocity action. It is trained with the cross-entropy method in PyTorch (Debian 12's
+python3-torch): each generation, 64 candidate weight sets fly one episode each, in the 64
+environments of one airis.VectorEnv stepped together in C++, all from the same seeded start; the
+best eighth define the next generation's distribution. Observations come from airis as NumPy arrays
+and become tensors without a copy (torch.from_numpy).
 
 Writes OUT/learning_curve.png (mean and best episode return per generation) and
 OUT/flight.png (a contact sheet of the trained policy's flight: top views, north up, the goal red).
@@ -19,6 +20,11 @@ import os
 import numpy as np
 from PIL import Image, ImageDraw
 
+try:
+    import torch
+except ImportError:  # the example is about training with PyTorch
+    raise SystemExit("examples/train_hover.py needs PyTorch: apt-get install python3-torch")
+
 import airis
 
 NUM_ENVS = 64
@@ -26,12 +32,14 @@ EPISODE_STEPS = 150  # 3 s at 50 Hz
 
 
 def features(obs):
-    return obs[:, 0:6]  # vector to the goal (NED, m), velocity (NED, m/s)
+    # vector to the goal (NED, m), velocity (NED, m/s): a view of airis's array, no copy
+    return torch.from_numpy(obs)[:, 0:6].double()
 
 
 def act(weights, obs):
-    # weights: (N, 3, 6); obs: (N, 13) -> actions (N, 3) in [-1, 1]
-    return np.tanh(np.einsum("nij,nj->ni", weights, features(obs))).astype(np.float32)
+    # weights: (N, 3, 6) tensor; obs: (N, 13) array -> actions (N, 3) in [-1, 1] for airis
+    with torch.no_grad():
+        return torch.tanh(torch.einsum("nij,nj->ni", weights, features(obs))).float().numpy()
 
 
 def evaluate(env, weights, seed):
@@ -102,14 +110,15 @@ def main():
 
     env = airis.VectorEnv("hover", NUM_ENVS, threads=args.threads, start_radius_m=2.0,
                           max_episode_steps=EPISODE_STEPS)
-    rng = np.random.default_rng(0)
-    mean, std = np.zeros((3, 6)), np.full((3, 6), 0.5)
+    torch.manual_seed(0)
+    mean = torch.zeros(3, 6, dtype=torch.float64)
+    std = torch.full((3, 6), 0.5, dtype=torch.float64)
     means, bests = [], []
     for gen in range(args.generations):
-        weights = mean + std * rng.standard_normal((NUM_ENVS, 3, 6))
+        weights = mean + std * torch.randn(NUM_ENVS, 3, 6, dtype=torch.float64)
         returns = evaluate(env, weights, seed=gen)
-        elite = weights[np.argsort(returns)[-NUM_ENVS // 8:]]
-        mean, std = elite.mean(axis=0), elite.std(axis=0) + 0.02
+        elite = weights[torch.from_numpy(np.argsort(returns)[-NUM_ENVS // 8:])]
+        mean, std = elite.mean(dim=0), elite.std(dim=0, unbiased=False) + 0.02
         means.append(float(returns.mean()))
         bests.append(float(returns.max()))
         print(f"generation {gen:2d}: mean return {means[-1]:7.2f}, best {bests[-1]:7.2f}")

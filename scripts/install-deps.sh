@@ -10,6 +10,7 @@ PACKAGES=(
   python3-numpy            # the tests read .npy streams back with NumPy; the Python module's arrays
   python3-dev pybind11-dev # the Python module (tools/python)
   python3-pytest python3-pil  # its tests (pytest) and airis.Dataset's PNG reader
+  python3-torch            # examples/train_hover.py and airis.Dataset(...).torch()
   clang-format             # the format check of the test suite (cmake/check_format.sh)
   libeigen3-dev            # all vector and matrix math
   libbullet-dev            # collision detection (broadphase, narrowphase, contacts)
