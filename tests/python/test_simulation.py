@@ -218,3 +218,20 @@ def test_ctrl_c_stops_a_mission_in_flight(write):
 def test_objects_outlive_the_simulation():
     v = airis.Simulation("scenes/empty.yaml").vehicles["drone1"]
     assert v.state.position_ned_m.shape == (3,)
+
+
+def test_a_px4_vehicle_is_flown_by_px4_and_its_absence_is_a_connection_error():
+    # autopilot: px4 is honoured from Python as by `airis run`: no PX4 on instance 39, so the first
+    # step waits connect_timeout_s and raises, naming the port.
+    sim = airis.Simulation("""
+scene: {name: px4_python}
+vehicles:
+  - name: drone1
+    preset: quad_x
+    start: {position_ned_m: [0, 0, -0.2]}
+    autopilot: {kind: px4, instance: 39, connect_timeout_s: 0.2}
+    sensors: [{imu: {}}, {barometer: {}}, {magnetometer: {}}, {gps: {}}]
+""")
+    with pytest.raises(airis.AutopilotLinkError, match="127.0.0.1:4599 within 0.2 s"):
+        sim.step(10)
+    assert isinstance(airis.AutopilotLinkError("x"), ConnectionError)

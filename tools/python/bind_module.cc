@@ -5,6 +5,7 @@
 
 #include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
+#include "engine/mavlink/link/link.h"
 #include "tools/jobs/version.h"  // generated
 #include "tools/python/bindings.h"
 
@@ -19,6 +20,9 @@ PYBIND11_MODULE(_airis, m) {
   static py::exception<engine::SimulationError> simulation_error(m, "SimulationError",
                                                                  PyExc_RuntimeError);
   static py::exception<engine::DatasetIoError> io_error(m, "DatasetIoError", PyExc_OSError);
+  // PX4 did not connect, closed its link or stopped answering (docs/px4.md).
+  static py::exception<engine::mavlink::LinkError> link_error(m, "AutopilotLinkError",
+                                                              PyExc_ConnectionError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -30,6 +34,8 @@ PYBIND11_MODULE(_airis, m) {
       simulation_error(e.what());
     } catch (const engine::DatasetIoError& e) {
       io_error(e.what());
+    } catch (const engine::mavlink::LinkError& e) {
+      link_error(e.what());
     }
   });
   python::BindTools(m);

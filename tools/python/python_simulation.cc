@@ -1,14 +1,20 @@
 #include "tools/python/python_simulation.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "scenes/mission_file.h"
+#include "tools/jobs/autopilots.h"
 
 namespace airis::python {
 
 PythonSimulation::PythonSimulation(const tools::SceneSource& source, std::size_t max_rows)
     : job_(source) {
   job_.DisableImageSensors();
+  // A vehicle with `autopilot: {kind: px4}` is PX4's here too (its link opens now; PX4 connects
+  // on the first step), so that a scene flies the same from Python as from `airis run`.
+  tools::AttachAutopilots(
+      job_, [](const std::string& line) { std::fprintf(stderr, "airis: %s\n", line.c_str()); });
   engine::World& w = world();
   buffers_.resize(w.vehicle_count());
   collisions_.resize(w.vehicle_count());

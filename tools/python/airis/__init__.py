@@ -15,6 +15,7 @@ import os as _os
 
 from . import _airis
 from ._airis import (  # noqa: F401  (re-exported)
+    AutopilotLinkError,
     Camera,
     ConfigError,
     DatasetIoError,
@@ -32,7 +33,7 @@ __version__ = _airis.__version__
 
 __all__ = [
     "Simulation", "Vehicle", "VehicleState", "Sensor", "Camera", "Frame", "StereoFrame",
-    "ConfigError", "SimulationError", "DatasetIoError", "env_at", "scene_stats", "check_scene",
+    "ConfigError", "SimulationError", "DatasetIoError", "AutopilotLinkError", "env_at", "scene_stats", "check_scene",
     "Dataset", "HoverEnv", "WaypointsEnv", "ForestEnv", "VectorEnv", "make", "make_vec",
 ]
 
