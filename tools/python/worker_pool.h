@@ -41,8 +41,10 @@ class WorkerPool {
   std::condition_variable start_;
   std::condition_variable done_;
   std::size_t generation_ = 0;  // incremented by each Run
+  // generation_ as workers may read it without the lock while they spin between Runs.
+  std::atomic<std::size_t> published_{0};
   bool open_ = false;           // workers may still join the current Run
-  int active_ = 0;              // workers inside the current Run
+  std::atomic<int> active_{0};  // workers inside the current Run (changed under mutex_)
   bool stopping_ = false;
   std::size_t n_ = 0;
   std::size_t chunk_ = 1;
