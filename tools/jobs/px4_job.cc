@@ -4,17 +4,14 @@
 
 #include "engine/dataset/telemetry_recorder.h"
 #include "tools/jobs/autopilots.h"
-#include "tools/jobs/output_folder.h"
 #include "tools/jobs/realtime_pacer.h"
+#include "tools/jobs/telemetry_log.h"
 
 namespace airis::tools {
 
 Px4JobResult RunPx4Job(const Px4JobOptions& o,
                        const std::function<void(const JobProgress&)>& progress) {
-  if (o.realtime && !(*o.realtime > 0.0)) {
-    throw engine::ConfigError({}, "--realtime", "must be > 0");
-  }
-  if (!(o.truth_rate_hz > 0.0)) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+  CheckPacingOptions(o.realtime, o.truth_rate_hz);
   SimulationJob job(o.scene);
   job.DisableImageSensors();
   const std::vector<AttachedAutopilot> px4 = AttachAutopilots(job, o.log);
@@ -23,14 +20,8 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
                               "no vehicle has `autopilot: {kind: px4}`: nothing for PX4 to fly "
                               "(docs/px4.md)");
   }
-  std::unique_ptr<engine::TelemetryRecorder> telemetry;
-  if (!o.out.empty()) {
-    PrepareEmptyOutputFolder(o.out, "--out");
-    engine::TelemetryOptions t;
-    t.truth_rate_hz = o.truth_rate_hz;
-    telemetry = std::make_unique<engine::TelemetryRecorder>(job.world(), o.out, t);
-    telemetry->OnTick(0);
-  }
+  const std::unique_ptr<engine::TelemetryRecorder> telemetry =
+      OpenTelemetryLog(job.world(), o.out, o.truth_rate_hz);
   const RealtimePacer pacer(o.realtime.value_or(1.0));
   engine::Simulation& sim = job.simulation();
   Px4JobResult r;

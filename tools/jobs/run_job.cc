@@ -5,31 +5,22 @@
 #include "engine/dataset/telemetry_recorder.h"
 #include "scenes/mission_file.h"
 #include "tools/jobs/autopilots.h"
-#include "tools/jobs/output_folder.h"
 #include "tools/jobs/realtime_pacer.h"
+#include "tools/jobs/telemetry_log.h"
 
 namespace airis::tools {
 
 RunJobResult RunMissionJob(const RunJobOptions& o,
                            const std::function<void(const JobProgress&)>& progress) {
-  if (o.realtime && !(*o.realtime > 0.0)) {
-    throw engine::ConfigError({}, "--realtime", "must be > 0");
-  }
-  if (!(o.truth_rate_hz > 0.0)) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+  CheckPacingOptions(o.realtime, o.truth_rate_hz);
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   job.MissionVehicle(mission);  // a mission without its vehicle fails before anything is written
   job.DisableImageSensors();
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
 
-  std::unique_ptr<engine::TelemetryRecorder> telemetry;
-  if (!o.out.empty()) {
-    PrepareEmptyOutputFolder(o.out, "--out");
-    engine::TelemetryOptions t;
-    t.truth_rate_hz = o.truth_rate_hz;
-    telemetry = std::make_unique<engine::TelemetryRecorder>(job.world(), o.out, t);
-    telemetry->OnTick(0);
-  }
+  const std::unique_ptr<engine::TelemetryRecorder> telemetry =
+      OpenTelemetryLog(job.world(), o.out, o.truth_rate_hz);
   const RealtimePacer pacer(o.realtime.value_or(1.0));
   MissionFlight flight;
   flight.until_ns = o.until_ns;

@@ -1,0 +1,25 @@
+#include "tools/jobs/telemetry_log.h"
+
+#include "engine/core/error.h"
+#include "tools/jobs/output_folder.h"
+
+namespace airis::tools {
+
+void CheckPacingOptions(const std::optional<double>& realtime, double truth_rate_hz) {
+  if (realtime && !(*realtime > 0.0)) throw engine::ConfigError({}, "--realtime", "must be > 0");
+  if (!(truth_rate_hz > 0.0)) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+}
+
+std::unique_ptr<engine::TelemetryRecorder> OpenTelemetryLog(engine::World& world,
+                                                            const std::string& out,
+                                                            double truth_rate_hz) {
+  if (out.empty()) return nullptr;
+  PrepareEmptyOutputFolder(out, "--out");
+  engine::TelemetryOptions t;
+  t.truth_rate_hz = truth_rate_hz;
+  auto telemetry = std::make_unique<engine::TelemetryRecorder>(world, out, t);
+  telemetry->OnTick(0);
+  return telemetry;
+}
+
+}  // namespace airis::tools
