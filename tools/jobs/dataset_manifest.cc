@@ -100,7 +100,7 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
 }  // namespace
 
 nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene& scene,
-                                   const engine::Mission& mission, const engine::World& world,
+                                   const engine::Mission* mission, const engine::World& world,
                                    const DatasetRecorder& recorder, bool complete, double sim_s) {
   nlohmann::json m;
   m["format"] = "airis-dataset";
@@ -114,8 +114,14 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
                 {"files", scene.files.size()},
                 {"name", scene.name},
                 {"seed", scene.seed}};
-  m["mission"] = {
-      {"file", o.mission_file}, {"sha256", FileHash(o.mission_file)}, {"name", mission.name}};
+  // A mission's steps flew the vehicles (the built-in controller or PX4 on its offboard link), or
+  // PX4 was flown from outside (`airis px4 --dataset`: a ground station, MAVSDK) and there is none.
+  m["flown_by"] = mission ? "mission" : "px4";
+  m["mission"] = mission ? nlohmann::json{{"file", o.mission_file},
+                                          {"sha256", FileHash(o.mission_file)},
+                                          {"name", mission->name}}
+                         : nlohmann::json(nullptr);
+  if (!o.px4.is_null()) m["px4"] = o.px4;
   m["renderer"] = RendererJson(world);
   nlohmann::json& cams = m["cameras"] = nlohmann::json::array();
   std::int64_t frames = 0;
