@@ -1,4 +1,4 @@
-// `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N]
+// `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--set KEY=VALUE]...
 //  [--cameras a,b] [--shard K/N] [--resume] [--formats npy,normals,tartanair] [--workers N]`:
 //  flies the mission and writes a labeled dataset.
 // `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "scenes/scene_overrides.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/dataset_cli.h"
@@ -25,6 +26,7 @@
 #include "tools/jobs/dataset_job.h"
 #include "tools/jobs/dataset_merge.h"
 #include "tools/jobs/dataset_status.h"
+#include "tools/jobs/process_run.h"
 #include "tools/jobs/slurm_submission.h"
 
 namespace airis::tools {
@@ -35,6 +37,7 @@ namespace fs = std::filesystem;
 // The command line as given, parsed into DatasetJobOptions by Run.
 struct DatasetArgs : DatasetWriteArgs {
   std::string scene, mission, out, seed, shard;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string streams = "capture";
   bool resume = false;
   int slurm = 0;  // N of --slurm N; 0 = run here
@@ -80,6 +83,7 @@ std::string ResumeCommand(const DatasetArgs& a) {
   if (a.min_object_area_px != 16) {
     c += " --min-object-area-px " + std::to_string(a.min_object_area_px);
   }
+  for (const std::string& text : a.overrides) c += " --set " + ShellQuote(text);
   return c + " --resume";
 }
 
@@ -94,6 +98,7 @@ int Run(const DatasetArgs& a) {
   static_cast<DatasetWriteOptions&>(o) = ParseDatasetWriteArgs(a, a.out);
   o.scene.path = a.scene;
   if (!a.seed.empty()) o.scene.seed = ParseSeed("seed", a.seed);
+  o.scene.overrides = scenes::ParseSceneOverrides(a.overrides);
   o.mission = a.mission;
   o.shard = ParseShard(a.shard);
   o.full_streams = ParseStreams(a.streams);
@@ -189,6 +194,7 @@ int SubmitToSlurm(const DatasetArgs& a) {
   ParseStreams(a.streams);
   DatasetOptionValues v;
   v.seed = a.seed;
+  v.overrides = scenes::SceneOverrideTexts(scenes::ParseSceneOverrides(a.overrides));
   v.cameras = a.cameras;
   v.formats = a.formats;
   v.streams = a.streams;
@@ -261,6 +267,7 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--mission", a->mission, "mission file (YAML)");
   cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume");
   cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)");
+  AddSceneOverrideOption(cmd, a->overrides);
   AddDatasetWriteOptions(cmd, *a);
   cmd->add_option("--shard", a->shard,
                   "write shard K of N (every N-th frame from the K-th); join with 'merge'");

@@ -1,5 +1,5 @@
 // `airis px4 SCENE.yaml [--out DIR | --dataset DIR [--cameras a,b] [--formats ...] [--workers N]
-// [--stream-format F] [--min-object-area-px N]] [--seed N] [--until SECONDS]
+// [--stream-format F] [--min-object-area-px N]] [--seed N] [--set KEY=VALUE]... [--until SECONDS]
 // [--realtime [FACTOR]]` and `airis px4 airframe SCENE.yaml --vehicle NAME [--id N]`
 // (docs/px4.md).
 #include <unistd.h>
@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
+#include "scenes/scene_overrides.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/dataset_cli.h"
@@ -23,6 +25,7 @@ struct Px4Args : DatasetWriteArgs {
   std::string out;
   std::string dataset;  // --dataset DIR
   std::string seed;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string realtime;
   bool realtime_given = false;
   std::string until;
@@ -31,6 +34,7 @@ struct Px4Args : DatasetWriteArgs {
 
 struct AirframeArgs {
   std::string scene;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string vehicle;
   int id = 22001;
 };
@@ -40,6 +44,7 @@ int Serve(const Px4Args& a) {
   Px4JobOptions job;
   job.scene.path = a.scene;
   if (!a.seed.empty()) job.scene.seed = ParseSeed("seed", a.seed);
+  job.scene.overrides = scenes::ParseSceneOverrides(a.overrides);
   job.out = a.out;
   if (a.realtime_given) {
     job.realtime = a.realtime.empty() ? 1.0 : ParseFiniteNumber("realtime", a.realtime);
@@ -95,7 +100,11 @@ int Airframe(const AirframeArgs& a) {
   }
   engine::mavlink::Px4AirframeOptions o;
   o.id = a.id;
-  std::fputs(WritePx4AirframeFor({a.scene, "", std::nullopt}, a.vehicle, o).c_str(), stdout);
+  std::fputs(
+      WritePx4AirframeFor({a.scene, "", std::nullopt, scenes::ParseSceneOverrides(a.overrides)},
+                          a.vehicle, o)
+          .c_str(),
+      stdout);
   return 0;
 }
 
@@ -111,6 +120,7 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
   airframe->add_option("scene", f->scene, "scene file (YAML)")->required();
   airframe->add_option("--vehicle", f->vehicle, "the vehicle")->required();
   airframe->add_option("--id", f->id, "airframe id (SYS_AUTOSTART, the file's number; 22001)");
+  AddSceneOverrideOption(airframe, f->overrides);
   airframe->callback(
       [f, &exit_code] { exit_code = RunReportingErrors([&] { return Airframe(*f); }); });
   cmd->add_option("scene", a->scene, "scene file (YAML)");
@@ -120,6 +130,7 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
                   "at its own rate; docs/px4.md); must be empty");
   AddDatasetWriteOptions(cmd, *a);
   cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)");
+  AddSceneOverrideOption(cmd, a->overrides);
   cmd->add_option("--until", a->until, "stop after this many simulated seconds");
   cmd->add_option("--realtime", a->realtime,
                   "pace to wall time at this factor (1 when given without a value; for a ground "

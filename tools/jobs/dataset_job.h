@@ -15,7 +15,7 @@ namespace airis::tools {
 /// What `airis dataset` makes (docs/dataset-format.md): the dataset options, and the scene and
 /// mission that make it.
 struct DatasetJobOptions : DatasetWriteOptions {
-  SceneSource scene;    ///< the scene file and the seed that replaces its own
+  SceneSource scene;    ///< the scene file, the seed that replaces its own, its overrides
   std::string mission;  ///< mission file (YAML)
   /// Set to a signal number to stop: the frame in flight is finished, the outputs are written and
   /// the manifest says incomplete (a front end's signal handler sets it).

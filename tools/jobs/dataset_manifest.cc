@@ -114,6 +114,11 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
                 {"files", scene.files.size()},
                 {"name", scene.name},
                 {"seed", scene.seed}};
+  // With the files' content, the overrides make the scene (`--set`): key path -> value.
+  if (!scene.overrides.empty()) {
+    nlohmann::json& overrides = m["scene"]["overrides"] = nlohmann::json::object();
+    for (const scenes::SceneOverride& s : scene.overrides) overrides[s.key_path] = s.value;
+  }
   // A mission's steps flew the vehicles (the built-in controller or PX4 on its offboard link), or
   // PX4 was flown from outside (`airis px4 --dataset`: a ground station, MAVSDK) and there is none.
   m["flown_by"] = mission ? "mission" : "px4";
@@ -205,9 +210,9 @@ std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::j
     }
     if (!keys.empty()) return keys;
   }
-  static constexpr const char* kInputs[] = {"/scene/seed",  "/scene/sha256", "/mission/sha256",
-                                            "/formats",     "/annotations",  "/streams",
-                                            "/streams_span"};
+  static constexpr const char* kInputs[] = {"/scene/seed",     "/scene/sha256", "/scene/overrides",
+                                            "/mission/sha256", "/formats",      "/annotations",
+                                            "/streams",        "/streams_span"};
   return differs(kInputs);
 }
 

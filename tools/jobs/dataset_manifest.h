@@ -28,8 +28,8 @@ struct ManifestSource {
 
 /// The manifest of a dataset being written (`complete` false) or finished: format and airis
 /// version, who flew (`flown_by`: the mission, or PX4 from outside when `mission` is null, with
-/// source.px4), the scene and mission files with their SHA-256, the seed, the renderer's strings,
-/// every
+/// source.px4), the scene and mission files with their SHA-256, the seed and the scene's
+/// overrides (`--set`), the renderer's strings, every
 /// camera (intrinsics, mount, outputs, frames), the streams, counts, formats, shard and classes.
 /// Throws DatasetIoError when a file cannot be read for its hash.
 nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::Scene& scene,
@@ -42,7 +42,8 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::S
 nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& option = "--resume");
 
 /// Where `now` (the manifest a run would write) differs from `existing` (an interrupted run's) in
-/// what a resume must keep: format, airis version, scene and mission content, seed, shard,
+/// what a resume must keep: format, airis version, scene and mission content, seed, overrides,
+/// shard,
 /// formats, annotation rule and every camera (frame counts aside). Empty when a resume may go on,
 /// else the first difference as "scene/sha256 (was ..., now ...)".
 std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now);

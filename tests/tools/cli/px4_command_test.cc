@@ -111,7 +111,7 @@ TEST(Px4CommandTest, ASessionsDatasetIsCompleteConsistentAndMergesLikeAnyOther) 
   // WHEN airis px4 writes a dataset of 0.5 s of lockstep session
   const auto r =
       RunAiris(AddPx4Command, "px4 " + scene.string() + " --until 0.5 --dataset " + out.string() +
-                                  " --formats npy");
+                                  " --formats npy --set scene.lighting.ambient=0.5");
   peer.Join();
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("dataset              " + out.string() + ": "), std::string::npos) << r.out;
@@ -126,6 +126,7 @@ TEST(Px4CommandTest, ASessionsDatasetIsCompleteConsistentAndMergesLikeAnyOther) 
   EXPECT_EQ(manifest["px4"][0]["link"], "TCP 127.0.0.1:4599");
   EXPECT_GT(manifest["px4"][0]["lockstep_steps"].get<int>(), 100);  // 125 exchanges, 115 answered
   EXPECT_EQ(manifest["streams_span"], "flight");
+  EXPECT_EQ(manifest["scene"]["overrides"], nlohmann::json({{"scene.lighting.ambient", "0.5"}}));
   EXPECT_EQ(manifest["counts"]["simulated_time_s"], 0.5);
   // the camera recorded at its own rate for the whole session: t = 0.001, 0.1, ... 0.5
   ASSERT_EQ(manifest["cameras"].size(), 1u);

@@ -131,5 +131,26 @@ TEST(SlurmCommandTest, CampaignDryRunExpandsSeedsAndReportsFileErrors) {
       << e.err;
 }
 
+TEST(SlurmCommandTest, OverridesReachEveryShardTaskAndAreCheckedBeforeSubmitting) {
+  const fs::path out = airis::testing::TestTempDir() / "dry_set";
+  const auto r = Dataset(kCity + " --out " + out.string() +
+                         " --slurm 2 --set 'scene.environment.wind.mean_ned_m_s=[5,0,0]' "
+                         "--set scene.lighting.fog_distance_m=300 --dry-run");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // sorted by key, normal spelling, shell-quoted where the shell would split
+  const std::string expected =
+      " --set 'scene.environment.wind.mean_ned_m_s=[5, 0, 0]' --set "
+      "scene.lighting.fog_distance_m=300 \\\n  --out \"$out\" --shard \"$k/2\" $resume\n";
+  EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\nnot in\n" << r.out;
+
+  const auto bad = Dataset(kCity + " --out " + out.string() +
+                           " --slurm 2 --set scene.lighting.fog_distanse_m=300 --dry-run");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err,
+            "error: --set scene.lighting.fog_distanse_m=300: scene.lighting.fog_distanse_m: "
+            "unknown key 'fog_distanse_m' (did you mean 'fog_distance_m'?)\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace airis::tools
