@@ -71,7 +71,6 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
                                                Px4ManifestEntry(r.vehicles));
     // No mission: every selected camera records at its own rate for the whole session.
     dataset->recorder().SetCapture(engine::CaptureStep{});
-    dataset->telemetry().SetRecording(true);
   }
   const std::unique_ptr<engine::TelemetryRecorder> log =
       OpenTelemetryLog(job.world(), o.out, o.truth_rate_hz);
