@@ -13,6 +13,7 @@
 #include "scenes/mesh_loader.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/vehicle_kinds.h"
 
 namespace airis::scenes {
@@ -451,13 +452,30 @@ void SolarAngles(double latitude_rad, double decimal_year, double hours, double*
   *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
 }
 
+namespace {
+
+// The document with the options' overrides applied, assembled; an error that an override's value
+// causes while assembling (a vehicle moved into a building) names the override.
+Scene Load(SceneDocument doc, const SceneLoadOptions& options) {
+  const AppliedSceneOverrides applied = ApplySceneOverrides(&doc, options.overrides);
+  try {
+    Scene s = SceneAssembler(std::move(doc), options).Assemble();
+    s.overrides = options.overrides;
+    return s;
+  } catch (const engine::ConfigError& e) {
+    applied.Rethrow(e);
+  }
+}
+
+}  // namespace
+
 Scene LoadScene(const std::string& path, const SceneLoadOptions& options) {
-  return SceneAssembler(ReadSceneDocument(path), options).Assemble();
+  return Load(ReadSceneDocument(path), options);
 }
 
 Scene LoadSceneFromString(const std::string& text, const std::string& path,
                           const SceneLoadOptions& options) {
-  return SceneAssembler(ReadSceneDocumentFromString(text, path), options).Assemble();
+  return Load(ReadSceneDocumentFromString(text, path), options);
 }
 
 }  // namespace airis::scenes

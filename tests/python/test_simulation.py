@@ -147,6 +147,27 @@ def test_bad_dict_scene_names_the_key_and_line():
     assert "<dict>:3:" in str(e.value) and "sede" in str(e.value)
 
 
+def test_overrides_replace_scene_keys_as_set_does():
+    scene = {"scene": {"name": "o"}, "vehicles": [{"name": "d", "preset": "quad_x"}]}
+    start = {"vehicles[0].start.position_ned_m": [1, 2, -3]}
+    windy = airis.Simulation(scene, overrides={**start,
+                                               "scene.environment.wind.mean_ned_m_s": np.array([5, -2, 0])})
+    calm = airis.Simulation(scene, overrides=start)
+    assert windy.vehicles["d"].state.position_ned_m.tolist() == [1.0, 2.0, -3.0]
+    assert airis.Simulation(scene).vehicles["d"].state.position_ned_m.tolist() != [1.0, 2.0, -3.0]
+    # the wind reaches the world: a falling body drifts west of one in calm air, which falls straight
+    windy.run_for(0.5)
+    calm.run_for(0.5)
+    assert calm.vehicles["d"].state.position_ned_m[1] == 2.0
+    assert windy.vehicles["d"].state.position_ned_m[1] < 2.0
+    with pytest.raises(airis.ConfigError) as e:
+        airis.Simulation(scene, overrides={"scene.environment.wnd.mean_ned_m_s": [5, 0, 0]})
+    assert str(e.value) == ("--set scene.environment.wnd.mean_ned_m_s=[5, 0, 0]: "
+                            "scene.environment.wnd: unknown key 'wnd' (did you mean 'wind'?)")
+    with pytest.raises(TypeError):
+        airis.Simulation(scene, overrides=["scene.lighting.ambient=0.5"])
+
+
 def test_bad_arguments_raise_clear_errors():
     sim = airis.Simulation("scenes/empty.yaml")
     v = sim.vehicles["drone1"]

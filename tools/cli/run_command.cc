@@ -1,13 +1,15 @@
-// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--realtime [FACTOR]]
-// [--until SECONDS]`
+// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--set KEY=VALUE]...
+// [--realtime [FACTOR]] [--until SECONDS]`
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
+#include "scenes/scene_overrides.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/stop_signals.h"
@@ -21,7 +23,8 @@ struct RunOptions {
   std::string mission;
   std::string out;
   std::string seed;
-  std::string realtime;  // empty: as fast as possible
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string realtime;                // empty: as fast as possible
   bool realtime_given = false;
   std::string until;
   std::string truth_rate = "100";
@@ -39,6 +42,7 @@ int Run(const RunOptions& o) {
   RunJobOptions job;
   job.scene.path = o.scene;
   if (!o.seed.empty()) job.scene.seed = ParseSeed("seed", o.seed);
+  job.scene.overrides = scenes::ParseSceneOverrides(o.overrides);
   job.mission = o.mission;
   job.out = o.out;
   if (o.realtime_given) {
@@ -100,6 +104,7 @@ void AddRunCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", options->out,
                   "folder for the telemetry log (CSV per stream); must be empty");
   cmd->add_option("--seed", options->seed, "scene seed (default: the scene's)");
+  AddSceneOverrideOption(cmd, options->overrides);
   cmd->add_option(
          "--realtime", options->realtime,
          "pace to wall time at this exact factor (default as fast as possible; 1 when given "

@@ -9,7 +9,7 @@
 
 namespace airis::tools {
 scenes::Scene LoadSceneSource(const SceneSource& source) {
-  const scenes::SceneLoadOptions options{source.seed};
+  const scenes::SceneLoadOptions options{source.seed, source.overrides};
   return source.text.empty() ? scenes::LoadScene(source.path, options)
                              : scenes::LoadSceneFromString(source.text, source.path, options);
 }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/core/clock.h"
 #include "engine/mission/mission.h"
@@ -23,10 +24,12 @@ struct SceneSource {
   std::string path;  ///< the scene file (YAML); with `text`, the name used in messages
   std::string text;  ///< YAML text used instead of reading `path` (the Python API, tests)
   std::optional<std::uint64_t> seed;  ///< replaces scene.seed before any generator runs
+  /// Keys of the scene replaced before it is validated (`--set`; scenes::ApplySceneOverrides).
+  std::vector<scenes::SceneOverride> overrides = {};
 };
 
-/// Loads `source`'s scene with its seed applied before generators run. Throws ConfigError naming
-/// file, line and key for bad input.
+/// Loads `source`'s scene with its overrides, and its seed applied before generators run. Throws
+/// ConfigError naming file, line and key (or the override) for bad input.
 scenes::Scene LoadSceneSource(const SceneSource& source);
 
 /// Where a running job is (for progress lines). Fields a job does not track stay at their defaults.

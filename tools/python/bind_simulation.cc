@@ -7,10 +7,12 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/frames.h"
 #include "engine/dataset/telemetry_recorder.h"
+#include "scenes/scene_overrides.h"
 #include "tools/python/bindings.h"
 #include "tools/python/handles.h"
 
@@ -303,13 +305,15 @@ void BindSimulation(py::module_& m) {
 
   py::class_<PythonSimulation, std::shared_ptr<PythonSimulation>>(m, "_Simulation")
       .def(py::init([](const std::string& path, const std::string& text,
-                       std::optional<std::uint64_t> seed, std::size_t max_samples) {
+                       std::optional<std::uint64_t> seed, std::size_t max_samples,
+                       const std::vector<std::string>& overrides) {
              if (max_samples < 1) throw py::value_error("max_samples: must be >= 1");
-             return std::make_shared<PythonSimulation>(tools::SceneSource{path, text, seed},
-                                                       max_samples);
+             return std::make_shared<PythonSimulation>(
+                 tools::SceneSource{path, text, seed, scenes::ParseSceneOverrides(overrides)},
+                 max_samples);
            }),
            py::arg("path"), py::arg("text") = "", py::arg("seed") = py::none(),
-           py::arg("max_samples") = 100000)
+           py::arg("max_samples") = 100000, py::arg("overrides") = std::vector<std::string>{})
       .def_property_readonly("time_ns",
                              [](PythonSimulation& s) { return s.simulation().clock().now_ns(); })
       .def_property_readonly("time_s",
