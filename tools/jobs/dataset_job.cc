@@ -44,7 +44,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   }
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
-  const std::size_t vehicle = job.MissionVehicle(mission);
+  const std::vector<std::size_t> vehicles = job.MissionVehicles(mission);
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
   const fs::path manifest_path = fs::path(o.out) / "manifest.json";
   nlohmann::json existing;
@@ -60,8 +60,10 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   for (const auto& c : job.world().scene().classes) ro.writer.annotations.stuff[c.id] = c.stuff;
   ro.shard_index = o.shard.index - 1;
   ro.shard_count = o.shard.count;
-  DatasetRecorder recorder(job.world(),
-                           ro);  // refuses outputs a camera cannot give; writes nothing
+  // Refuses outputs a camera cannot give and capture steps its cameras cannot follow; writes
+  // nothing.
+  DatasetRecorder recorder(job.world(), ro);
+  recorder.PlanCaptures(mission, vehicles);
   if (!o.resume) PrepareEmptyOutputFolder(o.out, "--out");
   ManifestSource source{o.scene.path,         o.mission,      o.outputs,      o.shard,
                         o.min_object_area_px, o.full_streams, o.stream_format};
@@ -84,18 +86,24 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   engine::TelemetryRecorder telemetry(job.world(), o.out, t);
   telemetry.OnTick(0);
 
-  const double nominal_s = engine::EstimateMissionDuration_s(
-      mission, job.world().vehicle(vehicle).state().p_W, job.world().environment().frame());
+  // The tracks fly at once: the mission lasts as long as its longest track.
+  double nominal_s = 0.0;
+  for (std::size_t t = 0; t < vehicles.size(); ++t) {
+    nominal_s =
+        std::max(nominal_s, engine::EstimateTrackDuration_s(
+                                mission.tracks[t], job.world().vehicle(vehicles[t]).state().p_W,
+                                job.world().environment().frame()));
+  }
   MissionFlight flight;
   flight.progress_every_ns = 100'000'000;
   flight.stop = o.stop;
   flight.callbacks.after_tick = [&](engine::TimeNs now_ns) { telemetry.OnTick(now_ns); };
-  flight.callbacks.on_capture = [&](const engine::CaptureStep& c) {
-    recorder.SetCapture(c);
-    telemetry.SetRecording(c.enabled);
+  flight.callbacks.on_capture = [&](std::size_t vehicle, const engine::CaptureStep& c) {
+    recorder.SetCapture(vehicle, c);
+    telemetry.SetRecording(recorder.recording());
   };
   flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
-    telemetry.RecordMissionEvent(e.time_ns, e.step_index, e.step_kind, e.what);
+    telemetry.RecordMissionEvent(e.time_ns, e.vehicle, e.step_index, e.step_kind, e.what);
   };
   if (progress) {
     flight.progress = [&](JobProgress p) {

@@ -25,6 +25,8 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
   const RealtimePacer pacer(o.realtime.value_or(1.0));
   engine::Simulation& sim = job.simulation();
   Px4JobResult r;
+  std::int64_t contacts = 0;  // the job's world, and its listener, end with this function
+  job.world().AddCollisionListener([&contacts](const engine::CollisionEvent&) { ++contacts; });
   const auto report = [&] {
     r.vehicles.clear();
     for (const AttachedAutopilot& a : px4) {
@@ -49,10 +51,8 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
       progress(p);
     }
   }
-  if (telemetry) {
-    telemetry->Close();
-    r.collisions = telemetry->collision_count();
-  }
+  if (telemetry) telemetry->Close();
+  r.contacts = contacts;
   report();
   r.simulated_s = sim.clock().now_s();
   r.wall_s = job.wall_s();
