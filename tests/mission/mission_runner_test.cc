@@ -384,6 +384,32 @@ TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
   EXPECT_NEAR(ToSeconds(t - orbit_start), 2 * M_PI * 10 / 5 + ramp_loss_s, 0.01);
 }
 
+// GIVEN a vehicle east of and below an orbit's centre WHEN the orbit starts THEN its reference is
+// the point of the circle on the bearing to the vehicle, at the centre's z; the vehicle flies there
+// first and the orbit ends where it began (docs/mission-format.md, "Where an orbit begins").
+TEST(MissionRunnerTest, AnOrbitBeginsOnItsCircleNearestTheVehicleAndEndsThere) {
+  MissionTrack m;
+  OrbitStep orbit;
+  orbit.center_ned_m = Vec3(0, 0, -10);
+  orbit.radius_m = 10;
+  orbit.speed_m_s = 5;
+  orbit.turns = 1;
+  m.steps = {Step(orbit, 3)};
+  MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
+  PointVehicle v;
+  v.state.p_W = Vec3(0, 30, -2);  // due east of the centre, 8 m lower
+  VehicleCommand c;
+  TimeNs t = 0;
+  runner.Update({t, v.state, false}, &c);
+  EXPECT_LT((c.position_W - Vec3(0, 10, -10)).norm(), 1e-9);
+  while (runner.Update({t, v.state, false}, &c) == MissionRunner::State::kRunning) {
+    v.Apply(c, 1e-3);
+    t += kTickNs;
+  }
+  ASSERT_EQ(runner.state(), MissionRunner::State::kSucceeded) << runner.failure();
+  EXPECT_LT((c.position_W - Vec3(0, 10, -10)).norm(), 1e-6);  // one whole turn later
+}
+
 TEST(MissionRunnerTest, HostStepsReachTheHostAndRandomPosesAreSeeded) {
   auto run = [](std::uint64_t seed) {
     MissionTrack m;
