@@ -121,6 +121,24 @@ def test_mission_flies_to_success(write):
     assert np.allclose(sim.vehicles["drone1"].state.position_ned_m, [2, 1, -3], atol=0.3)
 
 
+def test_run_mission_flies_a_track_per_vehicle(write):
+    scene = write("two.yaml", "vehicles:\n"
+                  "  - {name: a, preset: quad_x, start: {position_ned_m: [0, 0, -0.2]}}\n"
+                  "  - {name: b, preset: quad_x, start: {position_ned_m: [0, 5, -0.2]}}\n")
+    mission = write("two_m.yaml", "vehicles:\n"
+                    "  a: {steps: [{takeoff: {height_above_start_m: 2}}, {barrier: {label: up}},"
+                    " {land: }]}\n"
+                    "  b: {steps: [{takeoff: {height_above_start_m: 4}}, {barrier: {label: up}},"
+                    " {land: }]}\n")
+    sim = airis.Simulation(scene)
+    out = sim.run_mission(mission)
+    assert out["succeeded"], out
+    assert [t["vehicle"] for t in out["tracks"]] == ["a", "b"]
+    assert all(t["state"] == "succeeded" and t["collisions"] == 0 for t in out["tracks"])
+    assert out["contacts"] == sum(t["contacts"] for t in out["tracks"]) > 0  # the landings
+    assert out["vehicle"] == "a" and out["steps"] == 3  # the first track's
+
+
 def test_step_flies_a_started_mission(write):
     from conftest import HOVER_MISSION
     sim = airis.Simulation(write("s.yaml", SENSOR_SCENE))

@@ -81,7 +81,7 @@ int Serve(const Px4Args& a) {
         static_cast<long long>(v.stats.lockstep_steps), static_cast<long long>(v.stats.timeouts),
         v.stats.armed ? ", armed" : "");
   }
-  std::printf("  collisions           %lld\n", static_cast<long long>(r.collisions));
+  std::printf("  contacts             %lld\n", static_cast<long long>(r.contacts));
   std::printf("  simulated time       %.3f s\n", r.simulated_s);
   std::printf("  wall time            %.3f s (%.1fx real time)\n", r.wall_s,
               r.simulated_s / std::max(r.wall_s, 1e-9));

@@ -32,10 +32,17 @@ struct RunOptions {
 
 // One line, rewritten in place, when stderr is a terminal.
 void PrintProgress(const JobProgress& p) {
-  std::fprintf(stderr, "\r  step %d/%d %-12s t = %8.2f s  x%-7.1f  p = (%7.1f, %7.1f, %6.1f) m   ",
-               p.step, p.steps, p.step_kind.c_str(), p.simulated_s,
+  std::fprintf(stderr,
+               "\r  %s step %d/%d %-12s t = %8.2f s  x%-7.1f  p = (%7.1f, %7.1f, %6.1f) m   ",
+               p.vehicle.c_str(), p.step, p.steps, p.step_kind.c_str(), p.simulated_s,
                p.simulated_s / std::max(p.wall_s, 1e-9), p.position_W.x(), p.position_W.y(),
                p.position_W.z());
+}
+
+const char* StateWord(engine::MissionRunner::State s) {
+  return s == engine::MissionRunner::State::kSucceeded ? "succeeded"
+         : s == engine::MissionRunner::State::kFailed  ? "FAILED"
+                                                       : "not finished";
 }
 
 int Run(const RunOptions& o) {
@@ -81,7 +88,17 @@ int Run(const RunOptions& o) {
               m.steps_done, m.steps);
   std::printf("  distance flown       %.1f m\n", m.distance_flown_m);
   std::printf("  max tracking error   %.2f m\n", m.max_tracking_error_m);
-  std::printf("  collisions           %lld\n", static_cast<long long>(r.collisions));
+  // A contact is any touch (landings too); collisions are the contacts that are no touchdown.
+  std::printf("  contacts             %d\n", m.contacts);
+  std::printf("  collisions           %d%s\n", m.collisions,
+              m.ended_by_collision ? " (one ended the run)" : "");
+  if (m.tracks.size() > 1) {
+    for (const TrackOutcome& t : m.tracks) {
+      std::printf("  %-20s %s, %d of %d steps, %.1f m, %d contacts, %d collisions\n",
+                  t.vehicle.c_str(), StateWord(t.state), t.steps_done, t.steps, t.distance_flown_m,
+                  t.contacts, t.collisions);
+    }
+  }
   std::printf("  simulated time       %.3f s\n", m.simulated_s);
   std::printf("  wall time            %.3f s (%.1fx real time)\n", r.wall_s,
               m.simulated_s / std::max(r.wall_s, 1e-9));

@@ -13,22 +13,28 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   CheckDatasetWriteOptions(o);
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
-  const std::size_t vehicle = job.MissionVehicle(mission);
+  const std::vector<std::size_t> vehicles = job.MissionVehicles(mission);
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
-  DatasetSession dataset(job, o, o.scene.path, &mission);
+  DatasetSession dataset(job, o, o.scene.path, &mission, vehicles);
 
-  const double nominal_s = engine::EstimateMissionDuration_s(
-      mission, job.world().vehicle(vehicle).state().p_W, job.world().environment().frame());
+  // The tracks fly at once: the mission lasts as long as its longest track.
+  double nominal_s = 0.0;
+  for (std::size_t t = 0; t < vehicles.size(); ++t) {
+    nominal_s =
+        std::max(nominal_s, engine::EstimateTrackDuration_s(
+                                mission.tracks[t], job.world().vehicle(vehicles[t]).state().p_W,
+                                job.world().environment().frame()));
+  }
   MissionFlight flight;
   flight.progress_every_ns = 100'000'000;
   flight.stop = o.stop;
   flight.callbacks.after_tick = [&](engine::TimeNs now_ns) { dataset.telemetry().OnTick(now_ns); };
-  flight.callbacks.on_capture = [&](const engine::CaptureStep& c) {
-    dataset.recorder().SetCapture(c);
-    dataset.telemetry().SetRecording(c.enabled);
+  flight.callbacks.on_capture = [&](std::size_t vehicle, const engine::CaptureStep& c) {
+    dataset.recorder().SetCapture(vehicle, c);
+    dataset.telemetry().SetRecording(dataset.recorder().recording());
   };
   flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
-    dataset.telemetry().RecordMissionEvent(e.time_ns, e.step_index, e.step_kind, e.what);
+    dataset.telemetry().RecordMissionEvent(e.time_ns, e.vehicle, e.step_index, e.step_kind, e.what);
   };
   if (progress) {
     flight.progress = [&](JobProgress p) {

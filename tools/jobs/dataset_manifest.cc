@@ -84,6 +84,7 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
                           {"p2", k.distortion.p2},
                           {"k3", k.distortion.k3}}},
                         {"rate_hz", c.stream.rate_hz},
+                        {"capture_rates_hz", c.capture_rates_hz},
                         {"mount", MountJson(c.stream)},
                         {"outputs", OutputsJson(c.outputs)},
                         {"frames", c.frames}};

@@ -49,6 +49,7 @@ void CheckDatasetWriteOptions(const DatasetWriteOptions& o) {
 
 DatasetSession::DatasetSession(SimulationJob& job, const DatasetWriteOptions& o,
                                const std::string& scene_file, const engine::Mission* mission,
+                               const std::vector<std::size_t>& mission_vehicles,
                                const nlohmann::json& px4)
     : job_(job), mission_(mission), manifest_path_(fs::path(o.out) / "manifest.json") {
   source_.scene_file = scene_file;
@@ -61,8 +62,10 @@ DatasetSession::DatasetSession(SimulationJob& job, const DatasetWriteOptions& o,
   source_.px4 = px4;
   nlohmann::json existing;
   if (o.resume) existing = ReadDatasetManifest(o.out);
-  // Refuses outputs a camera cannot give; writes nothing.
+  // Refuses outputs a camera cannot give and capture steps its cameras cannot follow; writes
+  // nothing.
   recorder_ = std::make_unique<DatasetRecorder>(job.world(), RecorderOptions(job.world(), o));
+  if (mission) recorder_->PlanCaptures(*mission, mission_vehicles);
   if (!o.resume) PrepareEmptyOutputFolder(o.out, "--out");
   const nlohmann::json start =
       MakeDatasetManifest(source_, job.scene(), mission, job.world(), *recorder_, false, 0.0);

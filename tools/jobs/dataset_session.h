@@ -47,12 +47,14 @@ class DatasetSession {
   /// Subscribes to the cameras; prepares `options.out` (an empty or absent folder, or with
   /// `options.resume` an interrupted run of the same dataset: FindResumeMismatch, then its
   /// half-written files removed); writes the first manifest; opens the streams and writes their
-  /// first rows. `mission` is the mission that flies the vehicles, or null when PX4 is flown from
-  /// outside: then `px4` is the manifest's `px4` entry. Throws ConfigError for cameras or formats
-  /// the scene cannot give, a folder that holds something else, a resume of another dataset;
-  /// DatasetIoError when the folder cannot be written.
+  /// first rows. `mission` is the mission that flies the vehicles (`mission_vehicles`: the world
+  /// index of each of its tracks' vehicles), or null when PX4 is flown from outside: then `px4` is
+  /// the manifest's `px4` entry. Throws ConfigError for cameras or formats the scene cannot give,
+  /// capture steps its cameras cannot follow, a folder that holds something else, a resume of
+  /// another dataset; DatasetIoError when the folder cannot be written.
   DatasetSession(SimulationJob& job, const DatasetWriteOptions& options,
                  const std::string& scene_file, const engine::Mission* mission,
+                 const std::vector<std::size_t>& mission_vehicles,
                  const nlohmann::json& px4 = nullptr);
   ~DatasetSession();
 

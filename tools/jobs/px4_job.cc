@@ -57,6 +57,8 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
                               "(docs/px4.md)");
   }
   Px4JobResult r;
+  std::int64_t contacts = 0;  // the job's world, and its listener, end with this function
+  job.world().AddCollisionListener([&contacts](const engine::CollisionEvent&) { ++contacts; });
   const auto report = [&] {
     r.vehicles.clear();
     for (const AttachedAutopilot& a : px4) {
@@ -67,10 +69,13 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
   std::unique_ptr<DatasetSession> dataset;
   if (dataset_options) {
     report();
-    dataset = std::make_unique<DatasetSession>(job, *dataset_options, o.scene.path, nullptr,
-                                               Px4ManifestEntry(r.vehicles));
+    dataset =
+        std::make_unique<DatasetSession>(job, *dataset_options, o.scene.path, nullptr,
+                                         std::vector<std::size_t>{}, Px4ManifestEntry(r.vehicles));
     // No mission: every selected camera records at its own rate for the whole session.
-    dataset->recorder().SetCapture(engine::CaptureStep{});
+    for (std::size_t v = 0; v < job.world().vehicle_count(); ++v) {
+      dataset->recorder().SetCapture(v, engine::CaptureStep{});
+    }
   }
   const std::unique_ptr<engine::TelemetryRecorder> log =
       OpenTelemetryLog(job.world(), o.out, o.truth_rate_hz);
@@ -88,7 +93,6 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
     } else if (telemetry) {
       telemetry->Close();
     }
-    if (telemetry) r.collisions = telemetry->collision_count();
   };
   constexpr engine::TimeNs kProgressEvery = 250'000'000;
   engine::TimeNs next_progress = kProgressEvery;
@@ -114,6 +118,7 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
     throw;
   }
   finish(r.interrupted_by == 0);
+  r.contacts = contacts;
   r.simulated_s = sim.clock().now_s();
   r.wall_s = job.wall_s();
   return r;

@@ -44,7 +44,8 @@ struct Px4JobResult {
   double simulated_s = 0.0;
   double wall_s = 0.0;
   int interrupted_by = 0;  ///< the signal that stopped it, 0 if --until did
-  std::int64_t collisions = 0;
+  /// Touches that began between a vehicle and anything (landings too; no mission judges them)
+  std::int64_t contacts = 0;
   std::vector<Px4VehicleReport> vehicles;
   std::int64_t frames = 0;  ///< dataset frames written, all cameras
   std::size_t cameras = 0;  ///< dataset cameras (a stereo camera counts two)
