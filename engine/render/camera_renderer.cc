@@ -205,6 +205,10 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
     r.type = preferred ? kPreferredType[t] : kFallbackType[t];
     r.bytes_per_pixel = preferred ? kPreferredBytes[t] : 16;
     r.direct = preferred && t != kNormal;
+    // Each image starts on a 16-byte boundary: glReadPixels into a buffer needs an offset that is
+    // a multiple of the type's size (a 16-bit instance image after an odd-sized 8-bit class image
+    // would be refused).
+    pbo_bytes = (pbo_bytes + 15) / 16 * 16;
     for (auto& slot : slots_) slot.offset[t] = pbo_bytes;
     pbo_bytes += pixels * r.bytes_per_pixel;
   }
