@@ -22,6 +22,9 @@ struct ImageStream {
   RenderOutputs outputs;        ///< the image planes its frames carry
   MountConfig mount;            ///< the sensor's mount on its vehicle (or in the world)
   bool world_fixed = false;     ///< the mount is in the world frame, not on the vehicle's body
+  /// Its images show its own vehicle's body (a camera on a vehicle leaves it out unless its mount
+  /// is set to see it; a world-fixed camera sees every vehicle).
+  bool sees_own_body = false;
   /// Offset of this eye from the mount along the left eye's image x axis (m): 0 for a mono camera
   /// and the left eye, the baseline for the right eye.
   double offset_x_m = 0.0;
@@ -34,6 +37,10 @@ struct ImageStream {
 /// mount, C the optical frame (x right, y down, z forward; CalcR_SC) and T_offset the eye's offset
 /// along C's x. Requires `state` unless the mount is world-fixed.
 Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBodyState* state);
+
+/// The vehicle whose body stream `stream` of vehicle `vehicle` leaves out of its images: its own,
+/// unless the stream is world-fixed or sees its own body; -1 for none.
+int CalcHiddenVehicle(const ImageStream& stream, std::size_t vehicle);
 
 /// The GL implementation an image sensor renders with (for manifests and reports).
 struct RendererInfo {
