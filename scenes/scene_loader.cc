@@ -61,6 +61,7 @@ class SceneAssembler {
 
     for (const auto& c : doc_.classes) DefineClass(c);
     builder_.scene().lighting = MakeLighting(settings, s.origin.latitude_rad);
+    s.sun = sun_;
     GroundConfig ground;
     if (doc_.ground) ground = doc_.ground->config;
     if (ground.enabled) AddGround(ground);
@@ -91,17 +92,18 @@ class SceneAssembler {
     c.Fail("name", "no free class id left (255 classes at most)");
   }
 
-  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings,
-                                     double latitude_rad) const {
+  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings, double latitude_rad) {
     const LightingConfig& c = settings.lighting;
     engine::SceneLighting out;
-    double azimuth = DegToRad(c.sun_azimuth_deg);
-    double elevation = DegToRad(c.sun_elevation_deg);
+    sun_.time_of_day_h = c.time_of_day_h;
+    sun_.azimuth_rad = DegToRad(c.sun_azimuth_deg.value_or(LightingConfig::kDefaultSunAzimuth_deg));
+    sun_.elevation_rad =
+        DegToRad(c.sun_elevation_deg.value_or(LightingConfig::kDefaultSunElevation_deg));
     if (c.time_of_day_h) {
-      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h, &azimuth,
-                  &elevation);
+      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h,
+                  &sun_.azimuth_rad, &sun_.elevation_rad);
     }
-    out.sun_direction_W = SunDirectionFromAngles(azimuth, elevation);
+    out.sun_direction_W = SunDirectionFromAngles(sun_.azimuth_rad, sun_.elevation_rad);
     out.sun_color_rgb = c.sun_color.cast<float>();
     out.sky_zenith_rgb = c.sky_zenith_color.cast<float>();
     out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
@@ -425,6 +427,7 @@ class SceneAssembler {
   engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
   std::uint32_t ground_instance_ = engine::kNoInstance;
+  SunPosition sun_;  // set by MakeLighting
 };
 
 }  // namespace
