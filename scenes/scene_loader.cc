@@ -71,6 +71,9 @@ class SceneAssembler {
     CheckObjects();
     for (const auto& v : doc_.vehicles)
       s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
+    // The vehicles' looks take the instance ids after every object's, in vehicle order.
+    for (std::size_t i = 0; i < s.vehicles.size(); ++i)
+      AddVehicleBody(doc_.vehicles[i], s.vehicles[i]);
     s.static_scene = builder_.Finish();
     s.files.insert(s.files.end(), inputs_.begin(), inputs_.end());
     return s;
@@ -357,6 +360,36 @@ class SceneAssembler {
                                              ", instance " + std::to_string(o.instance_id) + ")");
     }
     return v;
+  }
+
+  /// The look of vehicle `v` (its `body` block): its mesh file, or a body generated from its
+  /// airframe.
+  void AddVehicleBody(const Sourced<VehicleEntryConfig>& entry, const VehicleDescription& v) {
+    const BodyConfig& c = entry.config.body;
+    const std::uint8_t cls = ClassOf(entry, "body.class", c.class_name);
+    std::int32_t material = -1;
+    std::uint32_t model = 0;
+    if (!c.mesh.empty()) {
+      model = MeshModel(entry, "body.mesh", c.mesh, c.mesh_axes);
+      if (c.color) {
+        engine::Material m;
+        m.base_color_rgb = c.color->cast<float>();
+        material = static_cast<std::int32_t>(builder_.Material(m));
+      }
+    } else {
+      std::unique_ptr<engine::Vehicle> vehicle;
+      try {
+        vehicle = v.spec->Build(v.name);
+      } catch (const engine::InvalidField& e) {
+        entry.Fail(e.field(), e.problem());
+      }
+      model = GenerateBodyModel(*vehicle, c.color.value_or(kDefaultBodyColor),
+                                c.rotor_color.value_or(kDefaultRotorColor), builder_);
+    }
+    if (!builder_.AddVehicleBody(model, c.CalcModelPose(), cls, v.name, material)) {
+      entry.Fail("body", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
+                             " objects and vehicles (instance ids are 16-bit)");
+    }
   }
 
   /// An `autopilot:` block that fits its vehicle (a channel per actuator) and uses its own PX4
