@@ -112,7 +112,7 @@ int RunStats(const SceneOptions& options) {
   out["files"] = loaded.scene.files;
   out["seed"] = loaded.scene.seed;
   out["objects"] = stats.objects;
-  out["instances"] = stats.objects;
+  out["instances"] = stats.objects + loaded.scene.static_scene.vehicle_bodies.size();
   out["models"] = stats.models;
   out["meshes"] = stats.meshes;
   out["materials"] = stats.materials;
@@ -157,16 +157,13 @@ int RunPreview(const SceneOptions& o) {
     preview.yaw_deg = v[3];
     preview.pitch_deg = v[4];
   }
-  PreviewResult r;
-  if (!o.camera.empty()) {
-    // The camera as mounted on its vehicle at the vehicle's start pose, with its own intrinsics.
-    SceneSource source;
-    source.path = o.file;
-    const SimulationJob job(source);
-    r = RenderPreviewPng(job.world().scene(), PreviewOfImageStream(job, o.camera), o.out);
-  } else {
-    r = RenderPreviewPng(scenes::LoadScene(o.file).static_scene, preview, o.out);
-  }
+  // The vehicles at their start poses; a camera as mounted on its vehicle, with its own
+  // intrinsics.
+  SceneSource source;
+  source.path = o.file;
+  const SimulationJob job(source);
+  if (!o.camera.empty()) preview = PreviewOfImageStream(job, o.camera);
+  const PreviewResult r = RenderPreviewPng(job, preview, o.out);
   std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
               o.out.c_str(), r.triangles, r.gl_renderer.c_str());
   return 0;
