@@ -7,22 +7,26 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "scenes/mission_file.h"
 #include "scenes/scene.h"
 #include "scenes/scene_schema.h"
 #include "scenes/scene_stats.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/jobs/preview_render.h"
+#include "tools/jobs/scene_report.h"
 
 namespace airis::tools {
 namespace {
 
 struct SceneOptions {
   std::string file;
+  std::string mission;  // check: the mission to report the captures of
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -93,8 +97,20 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
 
 int RunCheck(const SceneOptions& options) {
   const Loaded loaded = Load(options.file);
+  std::optional<engine::Mission> mission;
+  if (!options.mission.empty()) mission = scenes::LoadMissionFile(options.mission);
+  const SceneReport report = BuildSceneReport(loaded.scene, mission ? &*mission : nullptr);
+  if (options.json) {
+    nlohmann::json out = SceneReportJson(report);
+    out["scene"] = loaded.scene.name;
+    out["file"] = loaded.scene.path;
+    out["valid"] = true;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   PrintSummary(loaded, stats);
+  std::printf("%s", FormatSceneReport(report).c_str());
   std::printf("ok          %s is valid\n", options.file.c_str());
   return 0;
 }
@@ -179,6 +195,9 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   CLI::App* check =
       cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  check->add_option("--mission", options->mission,
+                    "a mission file: also list the cameras its capture steps record");
+  check->add_flag("--json", options->json, "print one JSON object instead of text");
   check->callback([options, &exit_code] {
     exit_code = RunReportingErrors([&] { return RunCheck(*options); });
   });
