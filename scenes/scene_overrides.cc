@@ -276,12 +276,17 @@ void AppliedSceneOverrides::Rethrow(const engine::ConfigError& error) const {
 AppliedSceneOverrides ApplySceneOverrides(SceneDocument* doc,
                                           const std::vector<SceneOverride>& overrides) {
   AppliedSceneOverrides applied;
-  for (const SceneOverride& o : overrides) {
-    try {
-      applied.Add(ApplyOne(*doc, o));
-    } catch (const ConfigError& e) {
-      // The file was valid before: whatever the changed block's reader finds is the override's.
-      throw ConfigError({"--set " + o.text(), 0, 0}, e.key_path(), e.problem());
+  // Removals first: a key replaced by another that excludes it (time_of_day_h=null with
+  // sun_elevation_deg=20) never passes through a block that holds both.
+  for (const bool removals : {true, false}) {
+    for (const SceneOverride& o : overrides) {
+      if ((o.value == "null") != removals) continue;
+      try {
+        applied.Add(ApplyOne(*doc, o));
+      } catch (const ConfigError& e) {
+        // The file was valid before: whatever the changed block's reader finds is the override's.
+        throw ConfigError({"--set " + o.text(), 0, 0}, e.key_path(), e.problem());
+      }
     }
   }
   return applied;

@@ -67,13 +67,13 @@ class AppliedSceneOverrides {
   std::vector<Applied> applied_;
 };
 
-/// Replaces each override's key in `doc` (in order) and reads the changed block again through the
-/// scene format's reader, so that an override passes the checks a file's value passes. `scene`,
-/// `ground` and `physics` are set in the block that wins (the including file's); a list entry is
-/// addressed by its index among all of the document's entries. Throws ConfigError naming the
-/// override (`--set KEY=VALUE: key.path: problem`) for an unknown key (with the closest valid
-/// one), `include`, a list without an index, an index past the list's end, a key inside a value
-/// that has none, and for any problem the reader finds in the value.
+/// Replaces each override's key in `doc` (removals first, then the rest in order) and reads the
+/// changed block again through the scene format's reader, so that an override passes the checks a
+/// file's value passes. `scene`, `ground` and `physics` are set in the block that wins (the
+/// including file's); a list entry is addressed by its index among all of the document's entries.
+/// Throws ConfigError naming the override (`--set KEY=VALUE: key.path: problem`) for an unknown key
+/// (with the closest valid one), `include`, a list without an index, an index past the list's end,
+/// a key inside a value that has none, and for any problem the reader finds in the value.
 AppliedSceneOverrides ApplySceneOverrides(SceneDocument* doc,
                                           const std::vector<SceneOverride>& overrides);
 

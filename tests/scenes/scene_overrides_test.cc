@@ -11,6 +11,7 @@
 
 #include "engine/world/world.h"
 #include "scenes/scene.h"
+#include "scenes/scene_stats.h"
 #include "scenes/world_builder.h"
 #include "tests/fixtures/temp_dir.h"
 
@@ -34,7 +35,7 @@ std::string SceneFile(const std::string& name) {
                  "scene:\n"
                  "  name: overrides\n"
                  "  environment: {wind: {mean_ned_m_s: [1, 0, 0]}}\n"
-                 "  lighting: {sun_azimuth_deg: 90, sun_elevation_deg: 50, time_of_day_h: 10}\n"
+                 "  lighting: {time_of_day_h: 10}\n"
                  "objects:\n"
                  "  - {name: crate, primitive: box, position_ned_m: [10, 0, -1], scale: [2, 2, "
                  "2]}\n"
@@ -66,9 +67,10 @@ TEST(SceneOverridesTest, ValuesReachTheBuiltWorld) {
   // angles, the fog, the wind and the second vehicle's start are set
   const std::string path = SceneFile("reach");
   const Scene s = LoadWith(
-      path, {"scene.lighting.time_of_day_h=null", "scene.lighting.sun_elevation_deg=20",
-             "scene.lighting.fog_distance_m=300", "scene.environment.wind.mean_ned_m_s=[5, -2, 0]",
-             "scene.environment.wind.gust=dryden", "vehicles[1].start.position_ned_m=[3,4,-6]"});
+      path, {"scene.lighting.time_of_day_h=null", "scene.lighting.sun_azimuth_deg=90",
+             "scene.lighting.sun_elevation_deg=20", "scene.lighting.fog_distance_m=300",
+             "scene.environment.wind.mean_ned_m_s=[5, -2, 0]", "scene.environment.wind.gust=dryden",
+             "vehicles[1].start.position_ned_m=[3,4,-6]"});
   const std::unique_ptr<engine::World> world = BuildWorld(s);
   // THEN the world has them (the sun direction from the same formula: exact)
   EXPECT_EQ(world->scene().lighting.sun_direction_W,
@@ -80,15 +82,20 @@ TEST(SceneOverridesTest, ValuesReachTheBuiltWorld) {
   EXPECT_EQ(world->vehicle(1).state().p_W, engine::Vec3(3, 4, -6));
   EXPECT_EQ(world->vehicle(0).state().p_W, engine::Vec3(0, 0, -5));  // untouched
   // the scene remembers them, sorted by key
-  ASSERT_EQ(s.overrides.size(), 6u);
+  ASSERT_EQ(s.overrides.size(), 7u);
   EXPECT_EQ(s.overrides.front().text(), "scene.environment.wind.gust=dryden");
   EXPECT_EQ(s.overrides[1].text(), "scene.environment.wind.mean_ned_m_s=[5, -2, 0]");
 
-  // A block no file has (`ground`) is made; without the time of day removed, it still wins.
-  const Scene t =
-      LoadWith(path, {"ground.size_ne_m=[50, 60]", "scene.lighting.sun_elevation_deg=20"});
-  EXPECT_NE(BuildWorld(t)->scene().lighting.sun_direction_W,
-            SunDirectionFromAngles(DegToRad(90.0), DegToRad(20.0)));
+  // A block no file has (`ground`) is made.
+  const Scene t = LoadWith(path, {"ground.size_ne_m=[50, 60]"});
+  const Eigen::Vector3d extent_m = CalcSceneStats(t).bounds_W.sizes();
+  EXPECT_EQ(extent_m.x(), 50.0);  // the ground plane is the widest object
+  EXPECT_EQ(extent_m.y(), 60.0);
+  // A sun angle set while the file's time of day stays is refused, as in a file.
+  EXPECT_NE(ErrorOf(path, {"scene.lighting.sun_elevation_deg=20"})
+                .find("scene.lighting.sun_elevation_deg: give time_of_day_h or sun_elevation_deg, "
+                      "not both"),
+            std::string::npos);
 }
 
 TEST(SceneOverridesTest, ParsingNormalisesTheValueAndRefusesWhatIsNoOverride) {
