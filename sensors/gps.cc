@@ -152,10 +152,15 @@ void Gps::Sample(const engine::SensorContext& context) {
 
   // Position error: unit-variance slow Gauss-Markov part advanced over the time since the last fix,
   // plus white, scaled by the current accuracy estimates. Draw order is fixed for reproducibility.
-  const double dt_s = previous_fix_ns_ < 0 ? 0.0 : engine::ToSeconds(now - previous_fix_ns_);
+  // The step's coefficients (an exp and an expm1) are kept while the fixes stay evenly spaced.
+  const TimeNs dt_ns = previous_fix_ns_ < 0 ? 0 : now - previous_fix_ns_;
   previous_fix_ns_ = now;
-  slow_error_ = GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, dt_s)
-                    .Next(slow_error_, stream_);
+  if (dt_ns != slow_error_step_ns_) {
+    slow_error_step_ =
+        GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, engine::ToSeconds(dt_ns));
+    slow_error_step_ns_ = dt_ns;
+  }
+  slow_error_ = slow_error_step_.Next(slow_error_, stream_);
   const Vec3 white = GaussianVec3(stream_, 1.0);
   const double w = config_.position_white_fraction;
   const Vec3 unit_error = std::sqrt(1.0 - w) * slow_error_ + std::sqrt(w) * white;

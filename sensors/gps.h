@@ -8,6 +8,7 @@
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
 #include "engine/world/sensor_samples.h"
+#include "sensors/gauss_markov.h"
 
 namespace airis::sensors {
 
@@ -120,6 +121,8 @@ class Gps final : public engine::Sensor {
   engine::Vec3 slow_error_ =
       engine::Vec3::Zero();              // unit-variance Gauss-Markov state per axis (N, E, D)
   engine::TimeNs previous_fix_ns_ = -1;  // time of the previous Sample, -1 before the first
+  GaussMarkovStep slow_error_step_;      // slow_error_'s step over slow_error_step_ns_
+  engine::TimeNs slow_error_step_ns_ = -1;
   engine::GnssSample latest_;
   engine::RandomStream vertical_stream_;  // vertical velocity noise (its own: added later)
 };

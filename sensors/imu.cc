@@ -45,7 +45,9 @@ Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
       config_(config),
       stream_(stream),
       R_SB_(config.mount.q_BS().conjugate().toRotationMatrix()),
-      p_BS_(config.mount.position_m) {
+      p_BS_(config.mount.position_m),
+      rotated_(R_SB_ != engine::Mat3::Identity()),
+      has_lever_arm_(p_BS_ != Vec3::Zero()) {
   // A white noise of density N (unit/sqrt(Hz)) sampled at f_s has per-sample sigma N sqrt(f_s).
   const double sqrt_rate = std::sqrt(config.rate_hz);
   const double dt_s = 1.0 / config.rate_hz;
@@ -85,12 +87,14 @@ void Imu::Sample(const engine::SensorContext& context) {
   const engine::RigidBodyState& s = *context.state;
   const engine::RigidBodyAccelerations& a = *context.accelerations;
 
-  // Truth at the mounting point (rigid body kinematics), in sensor axes.
+  // Truth at the mounting point (rigid body kinematics), in sensor axes. The lever-arm terms and
+  // the mount rotation are skipped where they are exactly zero and the identity (an IMU at the
+  // centre of mass, not rotated: the usual mount), which leaves every number as it was.
   const Vec3& w_B = s.w_B;
-  const Vec3 f_B =
-      a.CalcSpecificForce_B(s.q_WB) + a.alpha_B.cross(p_BS_) + w_B.cross(w_B.cross(p_BS_));
-  const Vec3 w_S = R_SB_ * w_B;
-  const Vec3 f_S = R_SB_ * f_B;
+  Vec3 f_B = a.CalcSpecificForce_B(s.q_WB);
+  if (has_lever_arm_) f_B = f_B + a.alpha_B.cross(p_BS_) + w_B.cross(w_B.cross(p_BS_));
+  const Vec3 w_S = rotated_ ? Vec3(R_SB_ * w_B) : w_B;
+  const Vec3 f_S = rotated_ ? Vec3(R_SB_ * f_B) : f_B;
 
   // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
   // reproducible.

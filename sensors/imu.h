@@ -100,6 +100,8 @@ class Imu final : public engine::Sensor {
   engine::RandomStream stream_;
   engine::Mat3 R_SB_;
   engine::Vec3 p_BS_;
+  bool rotated_;        // R_SB_ is not the identity
+  bool has_lever_arm_;  // p_BS_ is not zero
   double gyro_white_sigma_rad_s_;
   double accel_white_sigma_m_s2_;
   GaussMarkovStep gyro_bias_step_;

@@ -41,8 +41,11 @@ class Sensor {
   Sensor& operator=(const Sensor&) = delete;
 
   /// Called by the Simulation every tick after physics: samples when the schedule says so and
-  /// notifies the listeners. Returns true when a sample was taken.
-  bool Update(const SensorContext& context);
+  /// notifies the listeners. Returns true when a sample was taken. Inline when nothing is due (most
+  /// ticks of a sensor slower than the physics).
+  bool Update(const SensorContext& context) {
+    return schedule_.IsDue(context.now_ns) && UpdateDue(context);
+  }
 
   /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...};
   /// constant over the run.
@@ -98,6 +101,9 @@ class Sensor {
   virtual void Sample(const SensorContext& context) = 0;
 
  private:
+  // Update once the schedule says a sample is due.
+  bool UpdateDue(const SensorContext& context);
+
   std::string name_;
   RateSchedule schedule_;
   TimeNs last_sample_ns_ = -1;
