@@ -49,7 +49,7 @@ TEST(BarometerTest, MountOffsetIsRotatedIntoTheWorld) {
   Barometer baro("baro", c, engine::RandomStream(1));
   Truth truth;
   truth.state.q_WB = engine::QuatFromEuler({engine::DegToRad(180.0), 0.0, 0.0});
-  baro.Update(truth.At(0, env));
+  baro.Update(truth.At(20'000'000, env));
   EXPECT_NEAR(baro.latest().altitude_m, 123.0, 1e-3);
 }
 
@@ -65,7 +65,7 @@ TEST(BarometerTest, DriftHasConfiguredStationarySigmaAndCorrelationTime) {
   const engine::TimeNs period = 40 * engine::kNsPerSecond;
   std::vector<double> b(900'000);
   for (std::size_t k = 0; k < b.size(); ++k) {
-    baro.Update(truth.At(static_cast<engine::TimeNs>(k) * period, env));
+    baro.Update(truth.At(static_cast<engine::TimeNs>(k + 1) * period, env));
     b[k] = baro.drift();
   }
   // AND the output is p (1 + b) exactly when the white noise is off
@@ -99,7 +99,7 @@ TEST(BarometerTest, WhiteNoiseHasConfiguredSigma) {
   const double p = engine::ussa1976::Calc(122.0).pressure_pa;
   double ss = 0.0;
   const int n = 20000;
-  for (int k = 0; k < n; ++k) {
+  for (int k = 1; k <= n; ++k) {
     baro.Update(truth.At(static_cast<engine::TimeNs>(k) * 20'000'000, env));
     ss += std::pow(baro.latest().pressure_pa - p, 2);
   }
@@ -116,10 +116,13 @@ TEST(BarometerTest, FiftyHertzOnAKilohertzTickIsExact) {
   baro.AddListener([&](const engine::Sensor& s) {
     sample_times.push_back(static_cast<const Barometer&>(s).latest().time_ns);
   });
-  for (std::int64_t k = 0; k < 3000; ++k) baro.Update(truth.At(k * 1'000'000, env));
-  // THEN exactly 150 samples, on every 20th tick, each stamped with its tick's time
+  for (std::int64_t k = 0; k <= 3000; ++k) baro.Update(truth.At(k * 1'000'000, env));
+  // THEN exactly 150 samples, on every 20th tick from 20 ms (one period after the start) to 3 s,
+  // each stamped with its tick's time
   ASSERT_EQ(sample_times.size(), 150u);
-  for (std::size_t i = 0; i < sample_times.size(); ++i) EXPECT_EQ(sample_times[i], 20'000'000 * i);
+  for (std::size_t i = 0; i < sample_times.size(); ++i) {
+    EXPECT_EQ(sample_times[i], 20'000'000 * (i + 1));
+  }
 }
 
 TEST(BarometerTest, BadConfigurationNamesTheField) {

@@ -33,14 +33,15 @@ TEST(ImuTest, AtRestReadsOneGUpAndNoRotation) {
   Truth truth;
   truth.accelerations = testing::AtRest(env, truth.state.p_W);
   Imu imu("imu", NoiselessConfig(), engine::RandomStream(1));
-  // WHEN it samples
-  ASSERT_TRUE(imu.Update(truth.At(0, env)));
+  // WHEN it samples (its first sample is one period after the start; none at t = 0)
+  EXPECT_FALSE(imu.Update(truth.At(0, env)));
+  ASSERT_TRUE(imu.Update(truth.At(kTick, env)));
   // THEN the accelerometer reads -g along body z (1 g up in FRD) and the gyro zero, exactly
   const double g = env.CalcGravity_m_s2(truth.state.p_W);
   EXPECT_NEAR(g, 9.80665 * std::pow(6371000.0 / (6371000.0 + 122.0), 2), 1e-9);
   EXPECT_EQ(imu.latest().specific_force_S_m_s2, Vec3(0, 0, -g));
   EXPECT_EQ(imu.latest().angular_velocity_S_rad_s, Vec3::Zero());
-  EXPECT_EQ(imu.latest().time_ns, 0);
+  EXPECT_EQ(imu.latest().time_ns, kTick);
 }
 
 TEST(ImuTest, TiltedAtRestSeesGravityInBodyAxes) {
@@ -50,7 +51,7 @@ TEST(ImuTest, TiltedAtRestSeesGravityInBodyAxes) {
   truth.state.q_WB = engine::QuatFromEuler({engine::DegToRad(90.0), 0.0, 0.0});
   truth.accelerations = testing::AtRest(env, truth.state.p_W);
   Imu imu("imu", NoiselessConfig(), engine::RandomStream(1));
-  imu.Update(truth.At(0, env));
+  imu.Update(truth.At(kTick, env));
   const double g = truth.accelerations.gravity_W.z();
   EXPECT_NEAR((imu.latest().specific_force_S_m_s2 - Vec3(0, -g, 0)).norm(), 0.0, 1e-12);
 }
@@ -62,7 +63,7 @@ TEST(ImuTest, FreeFallReadsZero) {
   truth.accelerations = testing::AtRest(env, truth.state.p_W);
   truth.accelerations.a_W = truth.accelerations.gravity_W;  // falling freely
   Imu imu("imu", NoiselessConfig(), engine::RandomStream(1));
-  imu.Update(truth.At(0, env));
+  imu.Update(truth.At(kTick, env));
   EXPECT_LT(imu.latest().specific_force_S_m_s2.norm(), 1e-12);
 }
 
@@ -83,7 +84,7 @@ TEST(ImuTest, LandingShowsASpikeThenOneG) {
     } else {
       truth.accelerations.a_W = Vec3::Zero();
     }
-    imu.Update(truth.At(k * kTick, env));
+    imu.Update(truth.At((k + 1) * kTick, env));
     f_z.push_back(imu.latest().specific_force_S_m_s2.z());
   }
   // THEN: ~0 while falling, a spike of -(g + 50) at the impact, -g at rest
@@ -105,7 +106,7 @@ TEST(ImuTest, LeverArmAddsCentripetalAndTangentialTerms) {
   ImuConfig config = NoiselessConfig();
   config.mount.position_m = Vec3(0.1, 0, 0);
   Imu imu("imu", config, engine::RandomStream(1));
-  imu.Update(truth.At(0, env));
+  imu.Update(truth.At(kTick, env));
   // THEN f = alpha x r + w x (w x r) = (0, 1.0, 0) + (-w^2 r, 0, 0) = (-1.6, 1.0, 0)
   EXPECT_NEAR((imu.latest().specific_force_S_m_s2 - Vec3(-1.6, 1.0, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((imu.latest().angular_velocity_S_rad_s - Vec3(0, 0, 4.0)).norm(), 0.0, 1e-12);
@@ -120,7 +121,7 @@ TEST(ImuTest, MountRotationExpressesTruthInSensorAxes) {
   ImuConfig config = NoiselessConfig();
   config.mount.yaw_deg = 90.0;
   Imu imu("imu", config, engine::RandomStream(1));
-  imu.Update(truth.At(0, env));
+  imu.Update(truth.At(kTick, env));
   EXPECT_NEAR((imu.latest().angular_velocity_S_rad_s - Vec3(0, -1.0, 0)).norm(), 0.0, 1e-12);
 }
 
@@ -139,7 +140,7 @@ Record RecordAtRest(const ImuConfig& config, double seconds, std::uint64_t seed)
   r.gyro_x.reserve(n);
   r.accel_z.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
-    imu.Update(truth.At(static_cast<engine::TimeNs>(k) * period, env));
+    imu.Update(truth.At(static_cast<engine::TimeNs>(k + 1) * period, env));
     r.gyro_x.push_back(imu.latest().angular_velocity_S_rad_s.x());
     r.accel_z.push_back(imu.latest().specific_force_S_m_s2.z());
   }
@@ -191,9 +192,9 @@ TEST(ImuTest, TurnOnBiasAndScaleFactorAreDrawnOnceAndHeld) {
   config.gyro_turn_on_bias_deg_s = 0.5;
   config.accel_scale_factor_ppm = 1000.0;
   Imu imu("imu", config, engine::RandomStream(3));
-  imu.Update(truth.At(0, env));
-  const engine::InertialSample first = imu.latest();
   imu.Update(truth.At(kTick, env));
+  const engine::InertialSample first = imu.latest();
+  imu.Update(truth.At(2 * kTick, env));
   EXPECT_EQ(imu.latest().angular_velocity_S_rad_s, first.angular_velocity_S_rad_s);
   EXPECT_GT(first.angular_velocity_S_rad_s.norm(), 0.0);
   // Scale error of ~1000 ppm on 9.8 m/s^2: |error| a few mm/s^2, not zero.
@@ -210,7 +211,7 @@ TEST(ImuTest, SameSeedSameStreamOtherSensorsDoNotMatter) {
   Imu a("imu", {}, streams.Stream("vehicles/drone/imu"));
   Imu b("imu", {}, streams.Stream("vehicles/drone/imu"));
   Imu other("imu", {}, streams.Stream("vehicles/drone/imu2"));
-  for (int k = 0; k < 100; ++k) {
+  for (int k = 1; k <= 100; ++k) {
     a.Update(truth.At(k * kTick, env));
     other.Update(truth.At(k * kTick, env));  // sampling another sensor in between changes nothing
     b.Update(truth.At(k * kTick, env));
