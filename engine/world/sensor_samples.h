@@ -23,7 +23,7 @@ struct InertialSample {
 struct BarometricSample {
   TimeNs time_ns = -1;         ///< simulated time of the sample
   double pressure_pa = 0.0;    ///< measured static pressure
-  double temperature_k = 0.0;  ///< air temperature at the sensor (standard atmosphere)
+  double temperature_k = 0.0;  ///< measured air temperature at the sensor
   double altitude_m = 0.0;  ///< pressure altitude: the standard atmosphere inverted at pressure_pa
 };
 

@@ -18,6 +18,8 @@ BarometerConfig NoiselessConfig() {
   BarometerConfig c;
   c.pressure_noise_pa = 0.0;
   c.drift_sigma = 0.0;
+  c.temperature_noise_k = 0.0;
+  c.temperature_offset_k = 0.0;
   return c;
 }
 
@@ -125,26 +127,88 @@ TEST(BarometerTest, FiftyHertzOnAKilohertzTickIsExact) {
   }
 }
 
-TEST(BarometerTest, BadConfigurationNamesTheField) {
-  BarometerConfig c;
-  c.pressure_noise_pa = -1.0;
-  try {
-    c.Validate();
-    FAIL();
-  } catch (const engine::InvalidField& e) {
-    EXPECT_EQ(e.field(), "pressure_noise_pa");
+TEST(BarometerTest, TemperatureHasTheDataSheetOffsetAndNoise) {
+  // GIVEN the default barometer's temperature model (MS5611-01BA03: accuracy +-0.8 K read as 3
+  // sigma, 0.27 K; resolution 0.01 K as white noise) at rest at the origin
+  const engine::Environment env = testing::MakeEnvironment();
+  const double air_k = engine::ussa1976::Calc(122.0).temperature_k;
+  Truth truth;
+  // WHEN 2,000 barometers (seeds) are switched on: the offset is drawn once per sensor
+  double offsets_ss = 0.0;
+  const int sensors = 2000;
+  for (int seed = 0; seed < sensors; ++seed) {
+    Barometer baro("baro", BarometerConfig{}, engine::RandomStream(seed));
+    offsets_ss += baro.temperature_offset_k() * baro.temperature_offset_k();
   }
+  // THEN their offsets have sigma 0.27 K: 2,000 draws, standard error of sigma 1.6%; 5%.
+  EXPECT_NEAR(std::sqrt(offsets_ss / sensors) / 0.27, 1.0, 0.05);
+  // AND one barometer's samples scatter about T + its offset with sigma 0.01 K, uncorrelated from
+  // sample to sample (20,000 samples: standard error of sigma 0.5%, 5% tolerance; of the mean 7e-5
+  // K, 4e-4 K tolerance; lag-1 correlation sigma 0.007, 0.03 tolerance)
+  Barometer baro("baro", BarometerConfig{}, engine::RandomStream(3));
+  std::vector<double> e;
+  for (std::int64_t k = 1; k <= 20000; ++k) {
+    baro.Update(truth.At(k * 20'000'000, env));
+    e.push_back(baro.latest().temperature_k - air_k - baro.temperature_offset_k());
+  }
+  double mean = 0.0;
+  for (double v : e) mean += v;
+  mean /= e.size();
+  double var = 0.0;
+  double lag1 = 0.0;
+  for (std::size_t k = 0; k < e.size(); ++k) {
+    var += (e[k] - mean) * (e[k] - mean);
+    if (k > 0) lag1 += (e[k] - mean) * (e[k - 1] - mean);
+  }
+  EXPECT_NEAR(mean, 0.0, 4e-4);
+  EXPECT_NEAR(std::sqrt(var / e.size()) / 0.01, 1.0, 0.05);
+  EXPECT_NEAR(lag1 / var, 0.0, 0.03);
+  EXPECT_NE(baro.temperature_offset_k(), 0.0);
+}
+
+TEST(BarometerTest, TemperatureNoiseLeavesThePressureUnchanged) {
+  // The temperature draws from a stream of its own: the pressures of the same seed are identical
+  // with and without it (so adding the model changed no pressure a barometer reported).
+  const engine::Environment env = testing::MakeEnvironment();
+  BarometerConfig quiet;
+  quiet.temperature_noise_k = 0.0;
+  quiet.temperature_offset_k = 0.0;
+  Barometer a("baro", BarometerConfig{}, engine::RandomStream(9));
+  Barometer b("baro", quiet, engine::RandomStream(9));
+  Truth truth;
+  for (std::int64_t k = 1; k <= 500; ++k) {
+    a.Update(truth.At(k * 20'000'000, env));
+    b.Update(truth.At(k * 20'000'000, env));
+    ASSERT_EQ(a.latest().pressure_pa, b.latest().pressure_pa);
+  }
+  EXPECT_NE(a.latest().temperature_k, b.latest().temperature_k);
+}
+
+TEST(BarometerTest, BadConfigurationNamesTheField) {
+  const auto field_of = [](const BarometerConfig& c) {
+    try {
+      c.ValidateForPhysicsRate(1000.0);
+    } catch (const engine::InvalidField& e) {
+      return e.field();
+    }
+    return std::string("(none)");
+  };
+  BarometerConfig c;
+  EXPECT_EQ(field_of(c), "(none)");
+  c.pressure_noise_pa = -1.0;
+  EXPECT_EQ(field_of(c), "pressure_noise_pa");
   c = BarometerConfig{};
   c.drift_correlation_s = 0.0;
-  EXPECT_THROW(c.Validate(), engine::InvalidField);
+  EXPECT_EQ(field_of(c), "drift_correlation_s");
+  c = BarometerConfig{};
+  c.temperature_noise_k = -0.1;
+  EXPECT_EQ(field_of(c), "temperature_noise_k");
+  c = BarometerConfig{};
+  c.temperature_offset_k = -0.1;
+  EXPECT_EQ(field_of(c), "temperature_offset_k");
   c = BarometerConfig{};
   c.rate_hz = 2000.0;
-  try {
-    c.ValidateForPhysicsRate(1000.0);
-    FAIL();
-  } catch (const engine::InvalidField& e) {
-    EXPECT_EQ(e.field(), "rate_hz");
-  }
+  EXPECT_EQ(field_of(c), "rate_hz");
 }
 
 }  // namespace
