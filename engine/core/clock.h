@@ -72,6 +72,8 @@ class RateSchedule {
   TimeNs next_due_ns() const { return next_due_ns_; }
   /// Number of events consumed so far.
   std::int64_t count() const { return next_index_ - first_event_; }
+  /// Index k of the last event consumed (due at DueTime(k)); first_event - 1 before any.
+  std::int64_t last_event() const { return next_index_ - 1; }
   double rate_hz() const;
   /// Mean period in seconds (1 / rate).
   double period_s() const { return 1.0 / rate_hz(); }

@@ -83,9 +83,12 @@ TEST(RateScheduleTest, ConsumedEventsFallOnTheirExactDueTimes) {
 TEST(RateScheduleTest, FirstEventOneStartsOnePeriodLater) {
   RateSchedule schedule(50.0, 0, 1);
   EXPECT_EQ(schedule.next_due_ns(), 20'000'000);
+  EXPECT_EQ(schedule.last_event(), 0);  // none consumed; event 0 is skipped
   EXPECT_EQ(schedule.ConsumeDue(19'999'999), 0);
   EXPECT_EQ(schedule.ConsumeDue(20'000'000), 1);
   EXPECT_EQ(schedule.next_due_ns(), 40'000'000);
+  EXPECT_EQ(schedule.last_event(), 1);  // the event due at 1 / 50 s
+  EXPECT_EQ(schedule.count(), 1);
 }
 
 TEST(RateScheduleTest, RejectsNonPositiveRates) {
