@@ -17,6 +17,8 @@ void BarometerConfig::Validate() const {
   engine::RequireNonNegative("pressure_noise_pa", pressure_noise_pa);
   engine::RequireInRange("drift_sigma", drift_sigma, 0.0, 0.5);
   engine::RequirePositive("drift_correlation_s", drift_correlation_s);
+  engine::RequireNonNegative("temperature_noise_k", temperature_noise_k);
+  engine::RequireNonNegative("temperature_offset_k", temperature_offset_k);
 }
 
 void BarometerConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
@@ -29,10 +31,12 @@ Barometer::Barometer(std::string name, const BarometerConfig& config, engine::Ra
       config_(config),
       stream_(stream),
       drift_step_(GaussMarkovStep::Make(config.drift_sigma, config.drift_correlation_s,
-                                        1.0 / config.rate_hz)) {
+                                        1.0 / config.rate_hz)),
+      temperature_stream_(stream.Fork("temperature")) {
   // The drift starts in its stationary distribution, so its statistics do not depend on the run's
   // length.
   drift_ = config.drift_sigma * StandardNormal(stream_);
+  temperature_offset_k_ = config.temperature_offset_k * StandardNormal(temperature_stream_);
 }
 
 std::span<const std::string> Barometer::columns() const { return kColumns; }
@@ -55,7 +59,8 @@ void Barometer::Sample(const engine::SensorContext& context) {
 
   latest_.time_ns = context.now_ns;
   latest_.pressure_pa = air.pressure_pa * (1.0 + drift_) + white_pa;
-  latest_.temperature_k = air.temperature_k;
+  latest_.temperature_k = air.temperature_k + temperature_offset_k_ +
+                          config_.temperature_noise_k * StandardNormal(temperature_stream_);
   latest_.altitude_m = engine::ussa1976::CalcAltitudeFromPressure(latest_.pressure_pa);
 }
 

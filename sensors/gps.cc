@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/core/config.h"
 #include "sensors/gauss_markov.h"
@@ -79,6 +80,15 @@ double Gps::CalcEpv_m(TimeNs t_ns) const {
                t_ns);
 }
 
+engine::GnssFixType Gps::CalcFixType(TimeNs t_ns, double eph_m) const {
+  if (t_ns < startup_ns_ || first_truth_ns_ < 0 || t_ns - latency_ns_ < first_truth_ns_) {
+    return engine::GnssFixType::kNoFix;
+  }
+  if (eph_m <= config_.fix_3d_max_eph_m) return engine::GnssFixType::k3D;
+  if (eph_m <= config_.fix_2d_max_eph_m) return engine::GnssFixType::k2D;
+  return engine::GnssFixType::kNoFix;
+}
+
 std::span<const std::string> Gps::columns() const { return kColumns; }
 
 engine::LogType Gps::column_type(std::size_t column) const {
@@ -97,7 +107,8 @@ void Gps::CopyLatestRow(std::span<double> out) const {
   out[5] = latest_.velocity_east_m_s;
   out[6] = latest_.eph_m;
   out[7] = latest_.epv_m;
-  out[8] = engine::ToSeconds(latest_.position_time_ns);
+  out[8] = latest_.position_time_ns < 0 ? std::numeric_limits<double>::quiet_NaN()
+                                        : engine::ToSeconds(latest_.position_time_ns);
   out[9] = latest_.velocity_down_m_s;
 }
 
@@ -147,40 +158,55 @@ void Gps::Sample(const engine::SensorContext& context) {
   history_[(history_head_ + history_size_) % history_.size()] = truth;
   ++history_size_;
 
-  // Before the first fix is a latency old, the earliest recorded truth stands in (Lookup clamps).
-  const Truth past = Lookup(now - latency_ns_);
+  if (first_truth_ns_ < 0) first_truth_ns_ = now;
 
   // Position error: unit-variance slow Gauss-Markov part advanced over the time since the last fix,
-  // plus white, scaled by the current accuracy estimates. Draw order is fixed for reproducibility.
-  const double dt_s = previous_fix_ns_ < 0 ? 0.0 : engine::ToSeconds(now - previous_fix_ns_);
+  // plus white, scaled by the current accuracy estimates. Every sample draws the same numbers in a
+  // fixed order, fix or not, so a fix's noise does not depend on how many came before without one.
+  // The step's coefficients (an exp and an expm1) are kept while the fixes stay evenly spaced.
+  const TimeNs dt_ns = previous_fix_ns_ < 0 ? 0 : now - previous_fix_ns_;
   previous_fix_ns_ = now;
-  slow_error_ = GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, dt_s)
-                    .Next(slow_error_, stream_);
+  if (dt_ns != slow_error_step_ns_) {
+    slow_error_step_ =
+        GaussMarkovStep::Make(1.0, config_.position_error_correlation_s, engine::ToSeconds(dt_ns));
+    slow_error_step_ns_ = dt_ns;
+  }
+  slow_error_ = slow_error_step_.Next(slow_error_, stream_);
   const Vec3 white = GaussianVec3(stream_, 1.0);
-  const double w = config_.position_white_fraction;
-  const Vec3 unit_error = std::sqrt(1.0 - w) * slow_error_ + std::sqrt(w) * white;
+  const double vn_noise = config_.velocity_noise_m_s * StandardNormal(stream_);
+  const double ve_noise = config_.velocity_noise_m_s * StandardNormal(stream_);
+  const double vd_noise = config_.velocity_down_noise_m_s * StandardNormal(vertical_stream_);
   const double eph = CalcEph_m(now);
   const double epv = CalcEpv_m(now);
+
+  latest_.time_ns = now;
+  latest_.eph_m = eph;
+  latest_.epv_m = epv;
+  latest_.fix_type = CalcFixType(now, eph);
+  if (latest_.fix_type == engine::GnssFixType::kNoFix) {
+    // No fix, no position: a receiver without one has nothing to report but its status.
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    latest_.position_time_ns = -1;
+    latest_.latitude_rad = latest_.longitude_rad = latest_.altitude_m = kNone;
+    latest_.p_W = Vec3::Constant(kNone);
+    latest_.velocity_north_m_s = latest_.velocity_east_m_s = latest_.velocity_down_m_s = kNone;
+    latest_.ground_speed_m_s = latest_.course_rad = kNone;
+    return;
+  }
+
+  // A fix reports the state a latency ago, recorded (CalcFixType made sure) at or after the first
+  // sample.
+  const Truth past = Lookup(now - latency_ns_);
+  const double w = config_.position_white_fraction;
+  const Vec3 unit_error = std::sqrt(1.0 - w) * slow_error_ + std::sqrt(w) * white;
   const double sigma_h = eph / std::sqrt(2.0);
   const Vec3 error_W =
       Vec3(sigma_h * unit_error.x(), sigma_h * unit_error.y(), epv * unit_error.z());
   const Vec3 p_W = config_.position_noise ? Vec3(past.p_W + error_W) : past.p_W;
-  const double vn = past.v_W.x() + config_.velocity_noise_m_s * StandardNormal(stream_);
-  const double ve = past.v_W.y() + config_.velocity_noise_m_s * StandardNormal(stream_);
-  const double vd =
-      past.v_W.z() + config_.velocity_down_noise_m_s * StandardNormal(vertical_stream_);
-
-  latest_.time_ns = now;
+  const double vn = past.v_W.x() + vn_noise;
+  const double ve = past.v_W.y() + ve_noise;
+  const double vd = past.v_W.z() + vd_noise;
   latest_.position_time_ns = past.t_ns;
-  if (now < startup_ns_) {
-    latest_.fix_type = engine::GnssFixType::kNoFix;
-  } else if (eph <= config_.fix_3d_max_eph_m) {
-    latest_.fix_type = engine::GnssFixType::k3D;
-  } else if (eph <= config_.fix_2d_max_eph_m) {
-    latest_.fix_type = engine::GnssFixType::k2D;
-  } else {
-    latest_.fix_type = engine::GnssFixType::kNoFix;
-  }
   const engine::GeodeticPosition g = context.environment->frame().ToGeodetic(p_W);
   latest_.latitude_rad = g.latitude_rad;
   latest_.longitude_rad = g.longitude_rad;
@@ -191,8 +217,6 @@ void Gps::Sample(const engine::SensorContext& context) {
   latest_.velocity_down_m_s = vd;
   latest_.ground_speed_m_s = std::hypot(vn, ve);
   latest_.course_rad = std::atan2(ve, vn);
-  latest_.eph_m = eph;
-  latest_.epv_m = epv;
 }
 
 }  // namespace airis::sensors

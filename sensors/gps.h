@@ -8,6 +8,7 @@
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
 #include "engine/world/sensor_samples.h"
+#include "sensors/gauss_markov.h"
 
 namespace airis::sensors {
 
@@ -17,7 +18,7 @@ struct GpsConfig {
   double rate_hz = 10.0;      ///< fixes per simulated second
   engine::MountConfig mount;  ///< antenna position on the vehicle (its rotation is not used)
   double latency_s = 0.2;     ///< a fix delivered at t describes the antenna at t - latency (paper)
-  double startup_delay_s = 1.0;  ///< no fix before this simulated time
+  double startup_delay_s = 1.0;  ///< no fix (and no position) before this simulated time
   double eph_initial_m = 100.0;  ///< horizontal accuracy estimate at startup
   double eph_final_m = 0.1;      ///< horizontal accuracy estimate it settles to
   double eph_time_constant_s = 0.9;
@@ -38,7 +39,8 @@ struct GpsConfig {
     v.Field("rate_hz", rate_hz, "fixes per simulated second (Hz)");
     v.Field("mount", mount, "antenna position on the vehicle");
     v.Field("latency_s", latency_s, "age of the state a fix reports (s)");
-    v.Field("startup_delay_s", startup_delay_s, "simulated time before the first fix (s)");
+    v.Field("startup_delay_s", startup_delay_s,
+            "simulated time before the first fix; samples before it report no position (s)");
     v.Field("eph_initial_m", eph_initial_m, "horizontal accuracy estimate at startup, 1 sigma (m)");
     v.Field("eph_final_m", eph_final_m, "horizontal accuracy estimate after convergence (m)");
     v.Field("eph_time_constant_s", eph_time_constant_s, "time constant of the eph decay (s)");
@@ -65,9 +67,9 @@ struct GpsConfig {
 };
 
 /// GNSS receiver (paper sec. 3.4.4). At each fix time t it reports the antenna's state at t -
-/// latency, taken from a ring buffer of the truth seen at earlier fixes (cubic Hermite
-/// interpolation in position from the bracketing fixes' positions and velocities; exact when t -
-/// latency is itself a fix time, as with the defaults 10 Hz and 0.2 s).
+/// latency, taken from a ring buffer of the truth seen at earlier samples (cubic Hermite
+/// interpolation in position from the bracketing samples' positions and velocities; exact when t -
+/// latency is itself a sample time, as with the defaults 10 Hz and 0.2 s).
 ///
 /// Accuracy estimates decay from their initial to final values as a first-order filter started at
 /// startup_delay_s: eph(t) = eph_f + (eph_0 - eph_f) exp(-(t - t_start) / T). The position error is
@@ -75,7 +77,10 @@ struct GpsConfig {
 /// error), vertical sigma = epv, each made of a unit-variance Gauss-Markov part (correlation
 /// position_error_correlation_s) and a white part, mixed as sqrt(1 - w) g + sqrt(w) n. Horizontal
 /// velocity gets white noise. Fix type: 3D at eph <= fix_3d_max_eph_m, 2D at eph <=
-/// fix_2d_max_eph_m, otherwise none; none before startup_delay_s. Latitude, longitude and altitude
+/// fix_2d_max_eph_m, otherwise none; none before startup_delay_s, and none until the state it would
+/// report (t - latency) is at or after the first sample. A sample without a fix has no position:
+/// latitude, longitude, altitude, p_W, velocities, ground speed and course are NaN,
+/// position_time_ns is -1 (eph and epv are still the estimates). Latitude, longitude and altitude
 /// come from the scene's geodetic frame.
 class Gps final : public engine::Sensor {
  public:
@@ -91,10 +96,14 @@ class Gps final : public engine::Sensor {
   /// Horizontal and vertical accuracy estimates at simulated time `t_ns` (the closed form above).
   double CalcEph_m(engine::TimeNs t_ns) const;
   double CalcEpv_m(engine::TimeNs t_ns) const;
+  /// Fix type of a sample at `t_ns` with horizontal accuracy estimate `eph_m` (the rules above;
+  /// none before the first sample).
+  engine::GnssFixType CalcFixType(engine::TimeNs t_ns, double eph_m) const;
 
   std::span<const std::string> columns() const override;
   /// Latitude, longitude, altitude and the fix's position time are float64 (a float32 latitude
-  /// would be off by up to 0.2 m); the fix type is a whole number.
+  /// would be off by up to 0.2 m); the fix type is a whole number. Without a fix the position,
+  /// velocity and position time columns are NaN.
   engine::LogType column_type(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;
 
@@ -119,7 +128,10 @@ class Gps final : public engine::Sensor {
   std::size_t history_size_ = 0;
   engine::Vec3 slow_error_ =
       engine::Vec3::Zero();              // unit-variance Gauss-Markov state per axis (N, E, D)
+  engine::TimeNs first_truth_ns_ = -1;   // time of the first Sample, -1 before it
   engine::TimeNs previous_fix_ns_ = -1;  // time of the previous Sample, -1 before the first
+  GaussMarkovStep slow_error_step_;      // slow_error_'s step over slow_error_step_ns_
+  engine::TimeNs slow_error_step_ns_ = -1;
   engine::GnssSample latest_;
   engine::RandomStream vertical_stream_;  // vertical velocity noise (its own: added later)
 };

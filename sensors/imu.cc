@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/core/config.h"
+#include "engine/core/geodetic.h"
 #include "sensors/sensor_checks.h"
 
 namespace airis::sensors {
@@ -45,18 +46,21 @@ Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
       config_(config),
       stream_(stream),
       R_SB_(config.mount.q_BS().conjugate().toRotationMatrix()),
-      p_BS_(config.mount.position_m) {
+      p_BS_(config.mount.position_m),
+      rotated_(R_SB_ != engine::Mat3::Identity()),
+      has_lever_arm_(p_BS_ != Vec3::Zero()) {
   // A white noise of density N (unit/sqrt(Hz)) sampled at f_s has per-sample sigma N sqrt(f_s).
   const double sqrt_rate = std::sqrt(config.rate_hz);
   const double dt_s = 1.0 / config.rate_hz;
   gyro_white_sigma_rad_s_ = engine::DegToRad(config.gyro_noise_density_deg_s_sqrt_hz) * sqrt_rate;
   accel_white_sigma_m_s2_ = config.accel_noise_density_ug_sqrt_hz * kMicroG * sqrt_rate;
 
-  // Bias instability B is the peak of the bias's Allan deviation: sigma_b = B / 0.617.
+  // The peak of the bias's Allan deviation is the floor IEEE Std 952 reads a data sheet's bias
+  // instability B from, 0.664 B: sigma_b = 0.664 B / 0.617.
+  constexpr double kSigmaPerInstability = kFlickerAllanFloor / kGaussMarkovAllanPeak;
   const double gyro_bias_sigma =
-      config.gyro_bias_instability_deg_h * kDegPerHourToRadPerSecond / kGaussMarkovAllanPeak;
-  const double accel_bias_sigma =
-      config.accel_bias_instability_ug * kMicroG / kGaussMarkovAllanPeak;
+      config.gyro_bias_instability_deg_h * kDegPerHourToRadPerSecond * kSigmaPerInstability;
+  const double accel_bias_sigma = config.accel_bias_instability_ug * kMicroG * kSigmaPerInstability;
   gyro_bias_step_ = GaussMarkovStep::Make(gyro_bias_sigma, config.gyro_bias_correlation_s, dt_s);
   accel_bias_step_ = GaussMarkovStep::Make(accel_bias_sigma, config.accel_bias_correlation_s, dt_s);
 
@@ -81,16 +85,29 @@ void Imu::CopyLatestRow(std::span<double> out) const {
 }
 
 void Imu::Sample(const engine::SensorContext& context) {
-  AIRIS_DEMAND(context.state != nullptr && context.accelerations != nullptr);
+  AIRIS_DEMAND(context.state != nullptr && context.accelerations != nullptr &&
+               context.environment != nullptr);
   const engine::RigidBodyState& s = *context.state;
   const engine::RigidBodyAccelerations& a = *context.accelerations;
 
-  // Truth at the mounting point (rigid body kinematics), in sensor axes.
+  // Truth at the mounting point (rigid body kinematics), in sensor axes. The lever-arm terms and
+  // the mount rotation are skipped where they are exactly zero and the identity (an IMU at the
+  // centre of mass, not rotated: the usual mount), which leaves every number as it was.
   const Vec3& w_B = s.w_B;
-  const Vec3 f_B =
-      a.CalcSpecificForce_B(s.q_WB) + a.alpha_B.cross(p_BS_) + w_B.cross(w_B.cross(p_BS_));
-  const Vec3 w_S = R_SB_ * w_B;
-  const Vec3 f_S = R_SB_ * f_B;
+  Vec3 f_B = a.CalcSpecificForce_B(s.q_WB);
+  if (has_lever_arm_) f_B = f_B + a.alpha_B.cross(p_BS_) + w_B.cross(w_B.cross(p_BS_));
+  // The gyroscope senses rotation against inertial space: the body's rate in the Earth-fixed world
+  // frame plus the Earth's own. The Earth's axis is ECEF z, so its rate in W is Omega times the
+  // third row of R_EW: Omega [cos(lat0), 0, -sin(lat0)] at the origin's latitude lat0. The
+  // lever-arm terms above keep w_B (the Earth's rate changes them by < 1e-8 m/s^2).
+  Vec3 w_IB_B = w_B;
+  if (config_.gyro_earth_rotation) {
+    const Vec3 earth_W = engine::wgs84::kAngularVelocity_rad_s *
+                         context.environment->frame().R_EW().row(2).transpose();
+    w_IB_B += s.q_WB.conjugate() * earth_W;
+  }
+  const Vec3 w_S = rotated_ ? Vec3(R_SB_ * w_IB_B) : w_IB_B;
+  const Vec3 f_S = rotated_ ? Vec3(R_SB_ * f_B) : f_B;
 
   // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
   // reproducible.

@@ -20,15 +20,16 @@ struct ImuConfig {
   engine::MountConfig mount;
 
   double gyro_noise_density_deg_s_sqrt_hz = 0.005;  ///< angle random walk N (0.3 deg/sqrt(h))
-  double gyro_bias_instability_deg_h = 4.6;         ///< flat region of the gyro's Allan deviation
+  double gyro_bias_instability_deg_h = 4.6;         ///< B as data sheets give it (IEEE Std 952)
   double gyro_bias_correlation_s = 500.0;           ///< correlation time of the in-run bias
   double gyro_turn_on_bias_deg_s = 0.0;  ///< 1 sigma of the constant bias drawn at power-on
   double gyro_scale_factor_ppm = 0.0;    ///< 1 sigma of the per-axis scale error drawn at power-on
+  bool gyro_earth_rotation = true;       ///< the gyro senses the Earth's rotation (15.04 deg/h)
 
   double accel_noise_density_ug_sqrt_hz = 240.0;  ///< velocity random walk (0.24 mg/sqrt(Hz))
-  double accel_bias_instability_ug = 36.0;  ///< flat region of the accelerometer's Allan deviation
-  double accel_bias_correlation_s = 800.0;  ///< correlation time of the in-run bias
-  double accel_turn_on_bias_mg = 0.0;       ///< 1 sigma of the constant bias drawn at power-on
+  double accel_bias_instability_ug = 36.0;        ///< B as data sheets give it (IEEE Std 952)
+  double accel_bias_correlation_s = 800.0;        ///< correlation time of the in-run bias
+  double accel_turn_on_bias_mg = 0.0;   ///< 1 sigma of the constant bias drawn at power-on
   double accel_scale_factor_ppm = 0.0;  ///< 1 sigma of the per-axis scale error drawn at power-on
 
   template <class V>
@@ -38,16 +39,21 @@ struct ImuConfig {
     v.Field("gyro_noise_density_deg_s_sqrt_hz", gyro_noise_density_deg_s_sqrt_hz,
             "gyro white noise density = angle random walk (deg/s/sqrt(Hz))");
     v.Field("gyro_bias_instability_deg_h", gyro_bias_instability_deg_h,
-            "gyro bias instability, the flat region of the Allan deviation (deg/h)");
+            "gyro bias instability B as a data sheet gives it: the Allan deviation's floor is "
+            "0.664 B (deg/h)");
     v.Field("gyro_bias_correlation_s", gyro_bias_correlation_s, "gyro bias correlation time (s)");
     v.Field("gyro_turn_on_bias_deg_s", gyro_turn_on_bias_deg_s,
             "1 sigma of the gyro's constant turn-on bias (deg/s)");
     v.Field("gyro_scale_factor_ppm", gyro_scale_factor_ppm,
             "1 sigma of the gyro scale error (ppm)");
+    v.Field(
+        "gyro_earth_rotation", gyro_earth_rotation,
+        "the gyro senses the Earth's rotation, 15.04 deg/h (false: rates relative to the Earth)");
     v.Field("accel_noise_density_ug_sqrt_hz", accel_noise_density_ug_sqrt_hz,
             "accelerometer white noise density = velocity random walk (ug/sqrt(Hz))");
     v.Field("accel_bias_instability_ug", accel_bias_instability_ug,
-            "accelerometer bias instability, the flat region of the Allan deviation (ug)");
+            "accelerometer bias instability B as a data sheet gives it: the Allan deviation's "
+            "floor is 0.664 B (ug)");
     v.Field("accel_bias_correlation_s", accel_bias_correlation_s,
             "accelerometer bias correlation time (s)");
     v.Field("accel_turn_on_bias_mg", accel_turn_on_bias_mg,
@@ -66,12 +72,15 @@ struct ImuConfig {
 ///   output = (1 + s) * truth + b_on + b(t) + w,
 /// where w is white noise with per-sample sigma = N * sqrt(rate_hz) (a noise density N sampled at
 /// rate_hz; its Allan deviation is N / sqrt(tau)), b(t) a first-order Gauss-Markov bias with
-/// correlation time tau_c and stationary sigma B / 0.617 (so that the peak of its Allan deviation,
-/// the flat region read off a plot, equals the bias instability B), and b_on, s constants drawn at
-/// power-on.
+/// correlation time tau_c and stationary sigma 0.664 B / 0.617 = 1.076 B (so that the peak of its
+/// Allan deviation, the plateau read off a plot, is 0.664 B: where IEEE Std 952 reads a data
+/// sheet's bias instability B), and b_on, s constants drawn at power-on.
 ///
-/// Truth: the gyroscope reads the body's angular velocity w_B; the accelerometer reads the specific
-/// force at its mounting point r = p_BS, lever arm included:
+/// Truth: the gyroscope reads the body's rotation against inertial space, w_B plus the Earth's
+/// rotation (WGS84: 7.292115e-5 rad/s about the Earth's axis, Omega [cos(lat0), 0, -sin(lat0)] in
+/// the world frame's NED axes, lat0 its origin's latitude) rotated into body axes, unless
+/// gyro_earth_rotation is false; the accelerometer reads the specific force at its mounting point
+/// r = p_BS, lever arm included:
 ///   f_S = R_SB (R_BW (a_W - g_W) + alpha_B x r + w_B x (w_B x r)),
 /// about (0, 0, -g) at rest (1 g up in FRD), zero in free fall, with spikes at contacts because a_W
 /// includes contact forces.
@@ -100,6 +109,8 @@ class Imu final : public engine::Sensor {
   engine::RandomStream stream_;
   engine::Mat3 R_SB_;
   engine::Vec3 p_BS_;
+  bool rotated_;        // R_SB_ is not the identity
+  bool has_lever_arm_;  // p_BS_ is not zero
   double gyro_white_sigma_rad_s_;
   double accel_white_sigma_m_s2_;
   GaussMarkovStep gyro_bias_step_;

@@ -29,6 +29,17 @@ std::array<double, kLayers + 1> MakeEdges() {
 
 const std::array<double, 257> kLayerEdges = MakeEdges();
 
+namespace {
+// f(x[i]) for every edge: the wedge test needs the curve's height at both ends of a layer, and
+// evaluating exp there on every wedge draw cost more than the rest of the slow path.
+std::array<double, kLayers + 1> MakeEdgeDensities() {
+  std::array<double, kLayers + 1> f{};
+  for (int i = 0; i <= kLayers; ++i) f[i] = Density(kLayerEdges[i]);
+  return f;
+}
+const std::array<double, kLayers + 1> kEdgeDensities = MakeEdgeDensities();
+}  // namespace
+
 double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u) {
   for (;;) {
     const std::size_t i = u & 0xFF;
@@ -47,8 +58,8 @@ double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u) {
       return negative ? -(kR + a) : kR + a;
     }
     // Wedge between the layer's rectangle and the curve.
-    const double f_lo = Density(kLayerEdges[i]);
-    const double f_hi = Density(kLayerEdges[i + 1]);
+    const double f_lo = kEdgeDensities[i];
+    const double f_hi = kEdgeDensities[i + 1];
     if (f_lo + stream.Uniform01() * (f_hi - f_lo) < Density(x)) return negative ? -x : x;
     u = stream.NextU64();
   }

@@ -40,16 +40,24 @@ SimClock SimClock::FromRateHz(double rate_hz, double min_hz, double max_hz) {
   return SimClock(static_cast<TimeNs>(whole));
 }
 
-RateSchedule::RateSchedule(double rate_hz, TimeNs start_ns) : start_ns_(start_ns) {
+RateSchedule::RateSchedule(double rate_hz, TimeNs start_ns, std::int64_t first_event)
+    : start_ns_(start_ns), first_event_(first_event), next_index_(first_event) {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 1e9) {
     throw InvalidField("rate_hz",
                        "must be > 0 and at most 1e9 Hz (got " + std::to_string(rate_hz) + ")");
   }
+  AIRIS_DEMAND(first_event >= 0);
   rate_uhz_ = std::llround(rate_hz * kMicroHzPerHz);
   if (rate_uhz_ <= 0) {
     throw InvalidField("rate_hz", "must be at least 1e-6 Hz (got " + std::to_string(rate_hz) + ")");
   }
-  next_due_ns_ = DueTime(0);
+  constexpr std::int64_t kNsMicroHz = kNsPerSecond * kMicroHzPerHz;  // 1e15: one period's numerator
+  period_quotient_ = kNsMicroHz / rate_uhz_;
+  period_remainder_ = kNsMicroHz % rate_uhz_;
+  const __int128 num = static_cast<__int128>(first_event) * kNsMicroHz;
+  next_quotient_ = static_cast<std::int64_t>(num / rate_uhz_);
+  next_remainder_ = static_cast<std::int64_t>(num % rate_uhz_);
+  next_due_ns_ = DueTime(first_event);
 }
 
 TimeNs RateSchedule::DueTime(std::int64_t k) const {
@@ -60,12 +68,22 @@ TimeNs RateSchedule::DueTime(std::int64_t k) const {
   return start_ns_ + static_cast<TimeNs>(q);
 }
 
-int RateSchedule::ConsumeDue(TimeNs now_ns) {
+void RateSchedule::Advance() {
+  ++next_index_;
+  next_quotient_ += period_quotient_;
+  next_remainder_ += period_remainder_;  // < 2 rate_uhz_ <= 2e15: no overflow
+  if (next_remainder_ >= rate_uhz_) {
+    next_remainder_ -= rate_uhz_;
+    ++next_quotient_;
+  }
+  next_due_ns_ = start_ns_ + next_quotient_ + (next_remainder_ > 0 ? 1 : 0);
+}
+
+int RateSchedule::ConsumeDueEvents(TimeNs now_ns) {
   int n = 0;
   while (now_ns >= next_due_ns_) {
     ++n;
-    ++next_index_;
-    next_due_ns_ = DueTime(next_index_);
+    Advance();
   }
   return n;
 }

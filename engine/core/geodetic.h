@@ -10,6 +10,8 @@ inline constexpr double kSemiMajorAxis_m = 6378137.0;
 inline constexpr double kFlattening = 1.0 / 298.257223563;
 inline constexpr double kSemiMinorAxis_m = kSemiMajorAxis_m * (1.0 - kFlattening);
 inline constexpr double kEccentricitySq = kFlattening * (2.0 - kFlattening);
+/// The Earth's rotation rate about the ECEF z axis (15.04 deg/h).
+inline constexpr double kAngularVelocity_rad_s = 7.292115e-5;
 }  // namespace wgs84
 
 /// A point given by geodetic latitude and longitude on the WGS84 ellipsoid and height above it.

@@ -33,9 +33,13 @@ struct SensorContext {
 
 /// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete
 /// sensor). It samples at its own exact rate on the simulated clock and tells its listeners of each
-/// new sample. Generic consumers (telemetry log, dataset writer) read samples as rows of numbers
-/// named by columns(); sensors that produce images are ImageSensors (image() is not null) and give
-/// their frames there.
+/// new sample. Sample k of a sensor of rate r is due at k / r for k = 1, 2, ... (RateSchedule,
+/// first event 1), taken at the first tick at or after that time and stamped with the tick's time:
+/// a sensor reads the state a tick produced (DESIGN principle 3), and the initial state at t = 0 is
+/// no tick's output (an IMU's accelerations over the last step do not exist before the first step),
+/// so the first sample comes one period after the start and every interval is one period. Generic
+/// consumers (telemetry log, dataset writer) read samples as rows of numbers named by columns();
+/// sensors that produce images are ImageSensors (image() is not null) and give their frames there.
 class Sensor {
  public:
   /// @param name unique within its vehicle, e.g. "imu"; @param rate_hz samples per simulated
@@ -46,8 +50,11 @@ class Sensor {
   Sensor& operator=(const Sensor&) = delete;
 
   /// Called by the Simulation every tick after physics: samples when the schedule says so and
-  /// notifies the listeners. Returns true when a sample was taken.
-  bool Update(const SensorContext& context);
+  /// notifies the listeners. Returns true when a sample was taken. Inline when nothing is due (most
+  /// ticks of a sensor slower than the physics).
+  bool Update(const SensorContext& context) {
+    return schedule_.IsDue(context.now_ns) && UpdateDue(context);
+  }
 
   /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...};
   /// constant over the run.
@@ -103,6 +110,9 @@ class Sensor {
   virtual void Sample(const SensorContext& context) = 0;
 
  private:
+  // Update once the schedule says a sample is due.
+  bool UpdateDue(const SensorContext& context);
+
   std::string name_;
   RateSchedule schedule_;
   TimeNs last_sample_ns_ = -1;

@@ -23,7 +23,7 @@ struct InertialSample {
 struct BarometricSample {
   TimeNs time_ns = -1;         ///< simulated time of the sample
   double pressure_pa = 0.0;    ///< measured static pressure
-  double temperature_k = 0.0;  ///< air temperature at the sensor (standard atmosphere)
+  double temperature_k = 0.0;  ///< measured air temperature at the sensor
   double altitude_m = 0.0;  ///< pressure altitude: the standard atmosphere inverted at pressure_pa
 };
 
@@ -36,11 +36,11 @@ struct MagneticSample {
 /// Fix quality, numbered as MAVLink's GPS_FIX_TYPE.
 enum class GnssFixType { kNoFix = 1, k2D = 2, k3D = 3 };
 
-/// A GNSS fix.
+/// A GNSS sample: a fix, or (fix_type kNoFix) the receiver's status without a position, whose
+/// position and velocity fields are then NaN and position_time_ns -1.
 struct GnssSample {
-  TimeNs time_ns = -1;  ///< simulated time the fix is delivered
-  /// Simulated time the fix describes: time_ns - latency, or the first fix's time while the run is
-  /// younger than the latency.
+  TimeNs time_ns = -1;  ///< simulated time the sample is delivered
+  /// Simulated time the fix describes (time_ns - latency); -1 without a fix.
   TimeNs position_time_ns = -1;
   GnssFixType fix_type = GnssFixType::kNoFix;
   double latitude_rad = 0.0;   ///< WGS84 geodetic latitude

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "engine/world/embree_ray_caster.h"
+#include "engine/world/simulation.h"
 #include "sensors/barometer.h"
 #include "sensors/gps.h"
 #include "sensors/imu.h"
@@ -154,6 +155,17 @@ void BM_QuadTickRates(benchmark::State& state) {
   state.counters["with_sensors_ns_per_tick"] = 1e9 / rates.with_sensors_ticks_per_s;
 }
 
+// One tick of the reference quad without (argument 0) and with (1) its four sensors, for
+// instruction counts under callgrind (docs/performance.md has the command): the instructions of
+// Simulation::Step called from here over its calls.
+void BM_ReferenceQuadTick(benchmark::State& state) {
+  const std::unique_ptr<engine::Simulation> simulation =
+      tools::MakeReferenceQuadSimulation(state.range(0) != 0);
+  simulation->RunFor(5.0);  // past the GPS's first fix (4.0 s): the steady state
+  for (auto _ : state) simulation->Step();
+  state.SetItemsProcessed(state.iterations());
+}
+
 BENCHMARK(BM_ImuSample);
 BENCHMARK(BM_BarometerSample);
 BENCHMARK(BM_MagnetometerSampleWmm);
@@ -163,6 +175,7 @@ BENCHMARK(BM_RangefinderSampleCity);
 BENCHMARK(BM_ReferenceQuadSensorsPerTick);
 BENCHMARK(BM_LidarScanCity)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EmbreeIncoherentRaysCity)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ReferenceQuadTick)->Arg(0)->Arg(1);
 BENCHMARK(BM_QuadTickRates)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

@@ -63,6 +63,34 @@ TEST(RateScheduleTest, NonIntegerRateIsExactOverLongRuns) {
   EXPECT_EQ(schedule.DueTime(1), 33'366'701);
 }
 
+TEST(RateScheduleTest, ConsumedEventsFallOnTheirExactDueTimes) {
+  // GIVEN rates whose periods are whole, fractional and irrational-looking numbers of nanoseconds
+  // (the running quotient and remainder must reproduce the 128-bit division exactly)
+  for (const double rate_hz : {1000.0, 50.0, 29.97, 0.025, 7.000001, 333.333333, 1e9}) {
+    for (const std::int64_t first : {std::int64_t{0}, std::int64_t{1}, std::int64_t{12345}}) {
+      RateSchedule schedule(rate_hz, 17, first);
+      // WHEN each event is consumed exactly at its due time
+      for (std::int64_t k = first; k < first + 5000; ++k) {
+        ASSERT_EQ(schedule.next_due_ns(), schedule.DueTime(k)) << rate_hz << " Hz, event " << k;
+        ASSERT_EQ(schedule.ConsumeDue(schedule.next_due_ns()), 1);
+      }
+      // THEN every due time was DueTime(k), and count() counts from the first event
+      EXPECT_EQ(schedule.count(), 5000);
+    }
+  }
+}
+
+TEST(RateScheduleTest, FirstEventOneStartsOnePeriodLater) {
+  RateSchedule schedule(50.0, 0, 1);
+  EXPECT_EQ(schedule.next_due_ns(), 20'000'000);
+  EXPECT_EQ(schedule.last_event(), 0);  // none consumed; event 0 is skipped
+  EXPECT_EQ(schedule.ConsumeDue(19'999'999), 0);
+  EXPECT_EQ(schedule.ConsumeDue(20'000'000), 1);
+  EXPECT_EQ(schedule.next_due_ns(), 40'000'000);
+  EXPECT_EQ(schedule.last_event(), 1);  // the event due at 1 / 50 s
+  EXPECT_EQ(schedule.count(), 1);
+}
+
 TEST(RateScheduleTest, RejectsNonPositiveRates) {
   EXPECT_THROW(RateSchedule(0.0), InvalidField);
   EXPECT_THROW(RateSchedule(-5.0), InvalidField);

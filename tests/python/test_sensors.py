@@ -30,9 +30,12 @@ def test_since_last_returns_each_sample_once_in_order(write):
     baro = sensors["barometer"].since_last()
     gps = sensors["gps"].since_last()
     # Over the first second: one IMU sample per tick; the slower ones sample at their due times
-    # 0, 1/rate, ... 1 s (the one due at 0 taken at the first tick).
-    assert len(imu) == 1000 and len(baro) == 51 and len(gps) == 11
-    assert list(baro["time_ns"][:3]) == [1_000_000, 20_000_000, 40_000_000]
+    # 1/rate, 2/rate, ... 1 s (the first one period after the start, docs/sensors.md).
+    assert len(imu) == 1000 and len(baro) == 50 and len(gps) == 10
+    assert list(baro["time_ns"][:3]) == [20_000_000, 40_000_000, 60_000_000]
+    assert list(gps["time_ns"][:2]) == [100_000_000, 200_000_000]
+    # Before its first fix the GPS reports no position: fix type 1, NaN latitude.
+    assert np.all(gps["fix_type"] == 1) and np.all(np.isnan(gps["latitude_deg"]))
     assert np.all(np.diff(imu["time_ns"]) == 1_000_000)
     assert len(sensors["imu"].since_last()) == 0
     sim.step(5)

@@ -13,6 +13,10 @@ namespace {
 using engine::RigidBodyState;
 using engine::SensorContext;
 
+// A sensor's first sample is one period after the start (docs/sensors.md): at 1 s every camera of
+// at least 1 Hz has one due.
+constexpr engine::TimeNs kFirstFrameDue = engine::kNsPerSecond;
+
 std::shared_ptr<const engine::RenderScene> BoxesScene() {
   engine::testing::SharedContext();  // fails the test with EGL's message if no context can be made
   engine::StaticScene scene = engine::testing::MakeEmptyScene();
@@ -43,11 +47,12 @@ TEST(CameraSensorTest, IdentityMountLooksAlongBodyX) {
   state.p_W = {0.0, 0.0, -2.0};
   SensorContext context;
   context.state = &state;
+  context.now_ns = kFirstFrameDue;
   ASSERT_TRUE(camera.Update(context));
   EXPECT_EQ(CentreInstance(camera.latest(0)), 10);  // facing north
   // Yawed 90 degrees right: body x points east.
   state.q_WB = engine::Quat(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-  context.now_ns = engine::kNsPerSecond;
+  context.now_ns = 2 * kFirstFrameDue;
   ASSERT_TRUE(camera.Update(context));
   EXPECT_EQ(CentreInstance(camera.latest(0)), 20);
   // Planar depth of the east box's west face (y = 9) from y = 0.
@@ -63,6 +68,7 @@ TEST(CameraSensorTest, MountPitchedDownSeesTheGroundAtTheHeight) {
   state.p_W = {-20.0, -20.0, -30.0};
   SensorContext context;
   context.state = &state;
+  context.now_ns = kFirstFrameDue;
   ASSERT_TRUE(camera.Update(context));
   EXPECT_EQ(CentreInstance(camera.latest(0)), 1);
   EXPECT_NEAR(camera.latest(0).depth_planar_m.at(10, 40), 29.5, 29.5 * 1e-6);
@@ -84,6 +90,7 @@ TEST(CameraSensorTest, WorldAttachedCameraIgnoresTheVehicle) {
   state.q_WB = engine::Quat(Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitZ()));
   SensorContext context;
   context.state = &state;
+  context.now_ns = kFirstFrameDue;
   ASSERT_TRUE(camera.Update(context));
   EXPECT_EQ(CentreInstance(camera.latest(0)), 20);
 }
@@ -98,12 +105,12 @@ TEST(CameraSensorTest, RendersAtItsOwnExactRate) {
   int frames = 0;
   camera.AddListener([&](const engine::Sensor& s) {
     const auto& c = static_cast<const CameraSensor&>(s);
-    // Frame k is the first 1 kHz tick at or after k / 30 s.
-    const engine::TimeNs due = (frames * engine::kNsPerSecond + 29) / 30;
+    // Frame k = 1, 2, ... is the first 1 kHz tick at or after k / 30 s.
+    const engine::TimeNs due = ((frames + 1) * engine::kNsPerSecond + 29) / 30;
     EXPECT_EQ(c.latest(0).time_ns, (due + 999'999) / 1'000'000 * 1'000'000);
     ++frames;
   });
-  for (engine::TimeNs t = 0; t < 2 * engine::kNsPerSecond; t += 1'000'000) {
+  for (engine::TimeNs t = 0; t <= 2 * engine::kNsPerSecond; t += 1'000'000) {
     context.now_ns = t;
     camera.Update(context);
   }
@@ -121,7 +128,7 @@ TEST(StereoCameraSensorTest, PairIsSynchronisedWithTheBaselineAlongImageRight) {
   state.q_WB = engine::Quat(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
   SensorContext context;
   context.state = &state;
-  context.now_ns = 0;
+  context.now_ns = kFirstFrameDue;
   ASSERT_TRUE(stereo.Update(context));
   EXPECT_EQ(stereo.left().time_ns, stereo.right().time_ns);
   // Right camera = left + baseline along body y (image right) rotated into the world.

@@ -10,6 +10,7 @@
 #include "engine/world/simulation.h"
 #include "engine/world/world.h"
 #include "sensors/barometer.h"
+#include "sensors/gps.h"
 #include "sensors/imu.h"
 #include "tests/sensors/sensor_test_util.h"
 
@@ -114,6 +115,41 @@ TEST(ImuWorldTest, SameSeedIsBitIdenticalAndOtherSensorsDoNotChangeTheStream) {
   EXPECT_TRUE(Identical(first, RecordDrop(11, true)));
   // Another scene seed gives another stream (so the comparisons above can fail).
   EXPECT_FALSE(Identical(first, RecordDrop(12, false)));
+}
+
+TEST(ImuWorldTest, EverySensorSamplesFromOnePeriodAfterTheStart) {
+  // GIVEN a body at rest on the ground with an IMU (1 kHz), a barometer (50 Hz) and a GPS (10 Hz)
+  // in a Simulation on a 1 kHz tick
+  testing::BoxSpec ground;
+  ground.center_W = Vec3(0, 0, 1.0);
+  ground.size_m = Vec3(100, 100, 2.0);
+  auto scene = std::make_shared<const engine::StaticScene>(testing::MakeBoxScene({ground}));
+  auto world = std::make_unique<engine::World>(scene, testing::MakeEnvironment());
+  const std::size_t index = world->AddVehicle(std::make_unique<PassiveBody>());
+  std::vector<std::unique_ptr<engine::Sensor>> sensors;
+  sensors.push_back(std::make_unique<Imu>("imu", ImuConfig{}, engine::RandomStream(1)));
+  sensors.push_back(
+      std::make_unique<Barometer>("baro", BarometerConfig{}, engine::RandomStream(2)));
+  sensors.push_back(std::make_unique<Gps>("gps", GpsConfig{}, engine::RandomStream(3)));
+  std::vector<std::vector<engine::TimeNs>> times(sensors.size());
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    world->AddSensor(index, std::move(sensors[i]))
+        .AddListener(
+            [&times, i](const engine::Sensor& s) { times[i].push_back(s.last_sample_ns()); });
+  }
+  engine::Simulation simulation(std::move(world));
+  // WHEN it runs for 1 s
+  simulation.RunFor(1.0);
+  // THEN sample k of a sensor of rate r is stamped k / r for k = 1, 2, ...: the first one period
+  // after the start (the state at t = 0 is the initial one, which no tick produced), the last at
+  // 1 s, every interval exactly one period
+  const engine::TimeNs periods[] = {1'000'000, 20'000'000, 100'000'000};
+  for (std::size_t i = 0; i < 3; ++i) {
+    ASSERT_EQ(static_cast<engine::TimeNs>(times[i].size()), engine::kNsPerSecond / periods[i]);
+    for (std::size_t k = 0; k < times[i].size(); ++k) {
+      EXPECT_EQ(times[i][k], static_cast<engine::TimeNs>(k + 1) * periods[i]) << i << " " << k;
+    }
+  }
 }
 
 }  // namespace

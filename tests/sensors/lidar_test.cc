@@ -16,6 +16,7 @@ using testing::Truth;
 
 // Embree's single-precision distances plus float beam directions: ~1e-6 relative.
 constexpr double kRelativeTolerance = 1e-5;
+constexpr engine::TimeNs kFirstScan = 100'000'000;  // one rotation of the 10 Hz default after t = 0
 
 LidarConfig NoiselessConfig() {
   LidarConfig c;
@@ -71,7 +72,7 @@ TEST(LidarTest, GroundPlaneRangesMatchHeightOverSineOfElevation) {
   Lidar lidar("lidar", NoiselessConfig(), engine::RandomStream(1));
   Truth truth;
   truth.state.p_W = Vec3(3, -4, -10.0);
-  ASSERT_TRUE(lidar.Update(truth.At(0, env, &caster)));
+  ASSERT_TRUE(lidar.Update(truth.At(kFirstScan, env, &caster)));
   const LidarScan& scan = lidar.latest();
   // THEN every downward beam (elevation e < 0) returns h / sin(-e) when within 100 m, labelled;
   // upward and near-horizontal ones do not return
@@ -105,7 +106,7 @@ TEST(LidarTest, WallRangesMatchDistanceOverDirectionCosine) {
   Lidar lidar("lidar", NoiselessConfig(), engine::RandomStream(1));
   Truth truth;
   truth.state.q_WB = engine::QuatFromEuler({0.0, 0.0, engine::DegToRad(30.0)});
-  lidar.Update(truth.At(0, env, &caster));
+  lidar.Update(truth.At(kFirstScan, env, &caster));
   const LidarScan& scan = lidar.latest();
   const engine::Mat3 R_WS = scan.q_WS.toRotationMatrix();
   std::size_t hits = 0;
@@ -139,7 +140,7 @@ TEST(LidarTest, MovingLidarCastsEachColumnFromItsFiringPose) {
   Lidar lidar("lidar", NoiselessConfig(), engine::RandomStream(1));
   Truth truth;
   truth.state.v_W = Vec3(10.0, 0, 0);
-  lidar.Update(truth.At(0, env, &caster));
+  lidar.Update(truth.At(kFirstScan, env, &caster));
   const LidarScan& scan = lidar.latest();
   // THEN column c, fired dt_c = 0.1 s * (624 - c) / 625 earlier from x = -10 dt_c, reads
   // (20 + 10 dt_c) / d_x: up to 1 m longer than a static scan at azimuth 0
@@ -161,7 +162,7 @@ TEST(LidarTest, MovingLidarCastsEachColumnFromItsFiringPose) {
   LidarConfig c = NoiselessConfig();
   c.motion_distortion = false;
   Lidar still("lidar", c, engine::RandomStream(1));
-  still.Update(truth.At(0, env, &caster));
+  still.Update(truth.At(kFirstScan, env, &caster));
   EXPECT_NEAR(still.latest().points[0].range_m, 20.0 / lidar.direction_S(0).x(), 1e-3);
 }
 
@@ -181,12 +182,12 @@ TEST(LidarTest, ScanIsDeliveredByReferenceAndBuffersAreReused) {
   Truth truth;
   truth.state.p_W = Vec3(0, 0, -5);
   const LidarPoint* data = lidar.latest().points.data();
-  // 10 Hz on a 1 kHz tick for 1 s: 10 scans, the points buffer never reallocated.
-  for (std::int64_t k = 0; k < 1000; ++k) lidar.Update(truth.At(k * 1'000'000, env, &caster));
+  // 10 Hz on a 1 kHz tick for 1 s: 10 scans (0.1 s to 1 s), the points buffer never reallocated.
+  for (std::int64_t k = 0; k <= 1000; ++k) lidar.Update(truth.At(k * 1'000'000, env, &caster));
   EXPECT_EQ(calls, 10);
   EXPECT_EQ(seen, &lidar.latest());
   EXPECT_EQ(lidar.latest().points.data(), data);
-  EXPECT_EQ(lidar.latest().time_ns, 900'000'000);
+  EXPECT_EQ(lidar.latest().time_ns, 1'000'000'000);
 }
 
 TEST(LidarTest, RangeNoiseHasConfiguredSigma) {
@@ -199,8 +200,8 @@ TEST(LidarTest, RangeNoiseHasConfiguredSigma) {
   Lidar exact("lidar", NoiselessConfig(), engine::RandomStream(3));
   Truth truth;
   truth.state.p_W = Vec3(0, 0, -10);
-  noisy.Update(truth.At(0, env, &caster));
-  exact.Update(truth.At(0, env, &caster));
+  noisy.Update(truth.At(kFirstScan, env, &caster));
+  exact.Update(truth.At(kFirstScan, env, &caster));
   double ss = 0.0;
   std::size_t n = 0;
   for (std::size_t i = 0; i < noisy.latest().points.size(); ++i) {

@@ -70,18 +70,18 @@ TEST(RangefinderTest, ForwardBeamSeesTheWallAndNotBeyondMaxRange) {
   Rangefinder rf("rf", c, engine::RandomStream(1));
   Truth truth;
   truth.state.p_W = Vec3(0, 0, -5);
-  rf.Update(truth.At(0, env, &caster));
+  rf.Update(truth.At(20'000'000, env, &caster));  // the first sample of 50 Hz
   ASSERT_TRUE(rf.latest().hit);
   EXPECT_NEAR(rf.latest().distance_m, 24.5, kFloatTolerance_m);
   EXPECT_EQ(rf.latest().instance_id, 10u);
   // Turned away from the wall, level: nothing within 40 m (the ground is parallel to the beam).
   truth.state.q_WB = engine::QuatFromEuler({0.0, 0.0, engine::DegToRad(180.0)});
-  rf.Update(truth.At(20'000'000, env, &caster));
+  rf.Update(truth.At(40'000'000, env, &caster));
   EXPECT_FALSE(rf.latest().hit);
   EXPECT_EQ(rf.latest().distance_m, -1.0f);
   EXPECT_EQ(rf.latest().class_id, engine::kNoClass);
   // Without a ray caster there is never a return.
-  rf.Update(truth.At(40'000'000, env, nullptr));
+  rf.Update(truth.At(60'000'000, env, nullptr));
   EXPECT_FALSE(rf.latest().hit);
 }
 
@@ -93,7 +93,7 @@ TEST(RangefinderTest, NoiseHasConfiguredSigma) {
   truth.state.p_W = Vec3(0, 0, -10.0);
   double ss = 0.0;
   const int n = 5000;
-  for (int k = 0; k < n; ++k) {
+  for (int k = 1; k <= n; ++k) {
     rf.Update(truth.At(static_cast<engine::TimeNs>(k) * 20'000'000, env, &caster));
     ss += std::pow(rf.latest().distance_m - 10.0, 2);
   }

@@ -39,12 +39,25 @@ TEST(SensorTest, GateSkipsSamplesWithoutShiftingTheSchedule) {
   int notified = 0;
   gated.AddListener([&](const Sensor&) { ++notified; });
   Tick(gated, 0, 1'000'000'000);
-  // Due at 0, 100, ..., 1000 ms: 11 asked, the 2nd, 4th, ... taken, at their exact due times.
-  ASSERT_EQ(asked.size(), 11u);
-  EXPECT_EQ(gated.times,
-            (std::vector<TimeNs>{100'000'000, 300'000'000, 500'000'000, 700'000'000, 900'000'000}));
+  // Due at 100, 200, ..., 1000 ms: 10 asked, the 2nd, 4th, ... taken, at their exact due times.
+  ASSERT_EQ(asked.size(), 10u);
+  EXPECT_EQ(gated.times, (std::vector<TimeNs>{200'000'000, 400'000'000, 600'000'000, 800'000'000,
+                                              1'000'000'000}));
   EXPECT_EQ(notified, 5);
-  EXPECT_EQ(gated.last_sample_ns(), 900'000'000);
+  EXPECT_EQ(gated.last_sample_ns(), 1'000'000'000);
+}
+
+TEST(SensorTest, FirstSampleIsOnePeriodAfterTheStart) {
+  // GIVEN a 50 Hz sensor updated on every 1 ms tick from t = 0 (the initial state, which no tick
+  // produced) to 100 ms
+  TimeSensor sensor("baro", 50.0);
+  EXPECT_FALSE(sensor.Update(SensorContext{0}));
+  EXPECT_EQ(sensor.last_sample_ns(), -1);
+  Tick(sensor, 1'000'000, 100'000'000);
+  // THEN sample k is at k / 50 s for k = 1, 2, ...: every interval one period, the first included
+  EXPECT_EQ(sensor.times,
+            (std::vector<TimeNs>{20'000'000, 40'000'000, 60'000'000, 80'000'000, 100'000'000}));
+  EXPECT_EQ(sensor.schedule().count(), 5);
 }
 
 TEST(SensorTest, DisabledSensorIsNotAskedAndKeepsItsPhase) {

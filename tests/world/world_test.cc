@@ -166,9 +166,8 @@ TEST(WorldTest, SensorsSampleAtTheirRateAfterPhysics) {
                InvalidField);
   Simulation sim(std::move(world));
   sim.RunFor(1.0);
-  // Samples are due at 0, 10, ..., 1000 ms; the one due at 0 is taken after the first tick: 101 in
-  // all.
-  EXPECT_EQ(raw->samples, 101);
+  // Samples are due at 10, 20, ..., 1000 ms (one period after the start, docs/sensors.md): 100.
+  EXPECT_EQ(raw->samples, 100);
   EXPECT_TRUE(raw->saw_own_state);
   EXPECT_TRUE(raw->had_environment);
   EXPECT_EQ(sim.world().sensors(1).size(), 1u);

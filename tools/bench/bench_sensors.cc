@@ -95,42 +95,43 @@ double TimeSamples(SensorT& sensor, engine::SensorContext context, int samples) 
 
 }  // namespace
 
+std::unique_ptr<engine::Simulation> MakeReferenceQuadSimulation(bool with_sensors) {
+  const engine::RandomStreams streams(1);
+  auto world = std::make_unique<engine::World>(
+      std::make_shared<const engine::StaticScene>(),
+      engine::Environment(engine::EnvironmentConfig{},
+                          {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
+                          streams.Stream("environment")));
+  auto quad =
+      std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
+  quad->state().p_W = Vec3(0, 0, -50);
+  // Hover for the air and gravity at 50 m, so the open-loop quad stays near its start.
+  const double rho = world->environment().CalcAir(quad->state().p_W).density_kg_m3;
+  const double g = world->environment().CalcGravity_m_s2(quad->state().p_W);
+  const std::vector<double> hover(static_cast<std::size_t>(quad->actuator_count()),
+                                  quad->CalcHoverCommand(rho, g));
+  quad->ResetActuators(hover);
+  const std::size_t index = world->AddVehicle(std::move(quad));
+  if (with_sensors) {
+    world->AddSensor(index, std::make_unique<sensors::Imu>("imu", sensors::ImuConfig{},
+                                                           streams.Stream("quad/imu")));
+    world->AddSensor(index,
+                     std::make_unique<sensors::Barometer>("barometer", sensors::BarometerConfig{},
+                                                          streams.Stream("quad/baro")));
+    world->AddSensor(
+        index, std::make_unique<sensors::Magnetometer>(
+                   "magnetometer", sensors::MagnetometerConfig{}, streams.Stream("quad/mag")));
+    world->AddSensor(index, std::make_unique<sensors::Gps>("gps", sensors::GpsConfig{},
+                                                           streams.Stream("quad/gps")));
+  }
+  return std::make_unique<engine::Simulation>(std::move(world));
+}
+
 QuadTickRates MeasureReferenceQuadTicks(double seconds) {
-  const auto make = [](bool with_sensors) {
-    const engine::RandomStreams streams(1);
-    auto world = std::make_unique<engine::World>(
-        std::make_shared<const engine::StaticScene>(),
-        engine::Environment(engine::EnvironmentConfig{},
-                            {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
-                            streams.Stream("environment")));
-    auto quad =
-        std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
-    quad->state().p_W = Vec3(0, 0, -50);
-    // Hover for the air and gravity at 50 m, so the open-loop quad stays near its start.
-    const double rho = world->environment().CalcAir(quad->state().p_W).density_kg_m3;
-    const double g = world->environment().CalcGravity_m_s2(quad->state().p_W);
-    const std::vector<double> hover(static_cast<std::size_t>(quad->actuator_count()),
-                                    quad->CalcHoverCommand(rho, g));
-    quad->ResetActuators(hover);
-    const std::size_t index = world->AddVehicle(std::move(quad));
-    if (with_sensors) {
-      world->AddSensor(index, std::make_unique<sensors::Imu>("imu", sensors::ImuConfig{},
-                                                             streams.Stream("quad/imu")));
-      world->AddSensor(index,
-                       std::make_unique<sensors::Barometer>("barometer", sensors::BarometerConfig{},
-                                                            streams.Stream("quad/baro")));
-      world->AddSensor(
-          index, std::make_unique<sensors::Magnetometer>(
-                     "magnetometer", sensors::MagnetometerConfig{}, streams.Stream("quad/mag")));
-      world->AddSensor(index, std::make_unique<sensors::Gps>("gps", sensors::GpsConfig{},
-                                                             streams.Stream("quad/gps")));
-    }
-    return std::make_unique<engine::Simulation>(std::move(world));
-  };
   // Alternate short rounds of the two and keep each one's best, timed in this thread's CPU time so
   // that other processes on the machine do not count; transient slowdowns are discarded.
-  auto bare = make(false);
-  auto with_sensors = make(true);
+  auto bare = MakeReferenceQuadSimulation(false);
+  auto with_sensors = MakeReferenceQuadSimulation(true);
   bare->RunFor(1.0);  // warm-up
   with_sensors->RunFor(1.0);
   QuadTickRates rates;

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
+
+namespace airis::engine {
+class Simulation;
+}
 
 namespace airis::tools {
 
@@ -18,6 +23,10 @@ struct QuadTickRates {
   double bare_ticks_per_s = 0.0;
   double with_sensors_ticks_per_s = 0.0;
 };
+/// The reference quad-x hovering open loop 50 m up in an empty world at 47.6 deg N (1 kHz
+/// physics), with IMU (1 kHz), barometer and magnetometer (50 Hz) and GPS (10 Hz), all at their
+/// defaults, when `with_sensors`, else none.
+std::unique_ptr<engine::Simulation> MakeReferenceQuadSimulation(bool with_sensors);
 /// Measures QuadTickRates over about `seconds` of simulated time each (alternating rounds, best
 /// kept).
 QuadTickRates MeasureReferenceQuadTicks(double seconds = 20.0);

@@ -269,9 +269,9 @@ bool DatasetRecorder::TakeFrame(std::size_t camera, engine::TimeNs) {
   rec.pending = -1;
   const VehicleCameras& own = vehicles_[rec.vehicle];
   if (!own.on || !Selects(own.only, rec.own_name, rec.own_rig)) return false;
-  // The sensor's k-th frame (k counted from 0 at t = 0) is due at ceil(k / rate): every n-th is
-  // due at exact multiples of the capture period.
-  if ((rec.sensor->schedule().count() - 1) % rec.every != 0) return false;
+  // The sensor's frame k (k = 1, 2, ...: the first one period after the start) is due at
+  // ceil(k / rate): every n-th is due at exact multiples of the capture period.
+  if (rec.sensor->schedule().last_event() % rec.every != 0) return false;
   const std::int64_t index = rec.next_frame++;
   if (index % options_.shard_count != options_.shard_index) return false;  // another shard's frame
   rec.pending = index;

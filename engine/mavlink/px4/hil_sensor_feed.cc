@@ -138,20 +138,25 @@ bool HilSensorFeed::TakeHilGps(HilGps* out) {
   const GnssSample& g = *gps_->gnss();
   *out = HilGps{};
   out->time_usec = utc_start_us_ + static_cast<std::uint64_t>(g.time_ns / 1000);
-  out->lat = DegE7(g.latitude_rad);
-  out->lon = DegE7(g.longitude_rad);
-  out->alt = ClampTo<std::int32_t>(g.altitude_m * 1000.0);  // the ellipsoid height (docs/px4.md)
-  out->eph = ClampTo<std::uint16_t>(g.eph_m * 100.0);       // PX4 reads cm of accuracy
+  out->eph = ClampTo<std::uint16_t>(g.eph_m * 100.0);  // PX4 reads cm of accuracy
   out->epv = ClampTo<std::uint16_t>(g.epv_m * 100.0);
-  out->vel = ClampTo<std::uint16_t>(g.ground_speed_m_s * 100.0);
-  out->vn = ClampTo<std::int16_t>(g.velocity_north_m_s * 100.0);
-  out->ve = ClampTo<std::int16_t>(g.velocity_east_m_s * 100.0);
-  out->vd = ClampTo<std::int16_t>(g.velocity_down_m_s * 100.0);
-  double course_deg = RadToDeg(g.course_rad);
-  if (course_deg < 0) course_deg += 360.0;
-  out->cog = g.ground_speed_m_s > 0.1 ? ClampTo<std::uint16_t>(std::fmod(course_deg, 360.0) * 100.0)
-                                      : std::uint16_t{65535};  // unknown when hovering
+  out->vel = std::uint16_t{65535};  // unknown (HIL_GPS: UINT16_MAX)
+  out->cog = std::uint16_t{65535};
   out->fix_type = static_cast<std::uint8_t>(g.fix_type);
+  if (g.fix_type != GnssFixType::kNoFix) {  // without a fix the receiver has no position: zeros
+    out->lat = DegE7(g.latitude_rad);
+    out->lon = DegE7(g.longitude_rad);
+    out->alt = ClampTo<std::int32_t>(g.altitude_m * 1000.0);  // the ellipsoid height (docs/px4.md)
+    out->vel = ClampTo<std::uint16_t>(g.ground_speed_m_s * 100.0);
+    out->vn = ClampTo<std::int16_t>(g.velocity_north_m_s * 100.0);
+    out->ve = ClampTo<std::int16_t>(g.velocity_east_m_s * 100.0);
+    out->vd = ClampTo<std::int16_t>(g.velocity_down_m_s * 100.0);
+    double course_deg = RadToDeg(g.course_rad);
+    if (course_deg < 0) course_deg += 360.0;
+    if (g.ground_speed_m_s > 0.1) {  // else unknown when hovering
+      out->cog = ClampTo<std::uint16_t>(std::fmod(course_deg, 360.0) * 100.0);
+    }
+  }
   out->satellites_visible =
       g.fix_type == GnssFixType::k3D ? static_cast<std::uint8_t>(satellites_visible_) : 0;
   out->id = 0;

@@ -20,8 +20,9 @@ namespace airis::engine::mavlink {
 ///   rotation applied; accel as specific force, m/s^2; gyro rad/s), and the magnetometer (gauss,
 ///   body FRD) and barometer (hPa, pressure altitude in m, degC) when they sampled since the last
 ///   message, each group flagged in fields_updated only then;
-/// - HIL_GPS for each new fix (lat/lon degE7, altitude mm, eph/epv in cm of accuracy, velocities
-///   cm/s, course cdeg, UTC time);
+/// - HIL_GPS for each new GPS sample (lat/lon degE7, altitude mm, eph/epv in cm of accuracy,
+///   velocities cm/s, course cdeg, UTC time); a sample without a fix (fix_type 1) has no position:
+///   zero latitude, longitude, altitude and velocities, speed and course unknown (UINT16_MAX);
 /// - DISTANCE_SENSOR for each new rangefinder sample (cm, its orientation from the mount);
 /// - HIL_STATE_QUATERNION, the ground truth PX4 logs.
 /// The first sensor of each kind is used. Listens to the sensors: construct it before the run.

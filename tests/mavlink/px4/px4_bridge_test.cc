@@ -306,6 +306,19 @@ TEST_F(Px4BridgeTest, FeedsAirisSensorModelsInPx4UnitsAtTheirOwnRates) {
   // eph in cm of accuracy: the model's 0.1 + 99.9 exp(-5.9 / 0.9) m at the last fix.
   EXPECT_NEAR(g.eph, 100.0 * (0.1 + 99.9 * std::exp(-(6.0 - 1.0 - 0.1) / 0.9)), 25.0);
   EXPECT_GT(g.time_usec, UnixTimeUsFromDecimalYear(2026.5));
+  // Before its first fix (2D at 3.92 s) the GPS has no position: fix type 1 (no fix), zero
+  // position and velocity, speed and course unknown (UINT16_MAX), the accuracy estimate still sent
+  // (100 m before the 1 s startup).
+  const HilGps& early = seen.gps.front();
+  EXPECT_EQ(early.fix_type, 1);
+  EXPECT_EQ(early.lat, 0);
+  EXPECT_EQ(early.lon, 0);
+  EXPECT_EQ(early.alt, 0);
+  EXPECT_EQ(early.vn, 0);
+  EXPECT_EQ(early.vel, 65535);
+  EXPECT_EQ(early.cog, 65535);
+  EXPECT_EQ(early.eph, 10000);
+  EXPECT_EQ(early.satellites_visible, 0);
 
   ASSERT_NEAR(static_cast<double>(seen.distances.size()), 300.0, 1.0);  // 50 Hz
   EXPECT_EQ(seen.distances.back().orientation, 25);     // MAV_SENSOR_ROTATION_PITCH_270: down

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "engine/dataset/csv_reader.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
@@ -91,6 +92,43 @@ TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
   EXPECT_EQ(std::count(truth.begin(), truth.end(), '\n'), 1 + 1501);
   const std::string imu = ReadFile(a / "drone1.imu.csv");
   EXPECT_EQ(std::count(imu.begin(), imu.end(), '\n'), 1 + 15000);
+}
+
+TEST(RunCommandTest, SensorRowsStartOnePeriodInAndGpsRowsHaveNoPositionBeforeTheFix) {
+  // GIVEN the orbit mission's quad (IMU 1 kHz, barometer and magnetometer 50 Hz, GPS 10 Hz with
+  // the default 1 s startup and eph from 100 m: 2D fix at 3.92 s) logged for 5 s
+  const fs::path dir = FreshDir("first_rows");
+  ASSERT_EQ(
+      RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 5 --out " +
+               dir.string())
+          .exit_code,
+      0);
+  // THEN each sensor's first row is one period after the start (docs/sensors.md), its last at 5 s
+  const std::pair<const char*, std::int64_t> streams[] = {{"imu", 1'000'000},
+                                                          {"barometer", 20'000'000},
+                                                          {"magnetometer", 20'000'000},
+                                                          {"gps", 100'000'000}};
+  for (const auto& [name, period_ns] : streams) {
+    const engine::CsvText csv = engine::ReadCsvText(dir / ("drone1." + std::string(name) + ".csv"));
+    const std::size_t t = csv.Column("time_ns");
+    ASSERT_EQ(static_cast<std::int64_t>(csv.rows.size()), 5'000'000'000 / period_ns) << name;
+    EXPECT_EQ(csv.Integer(0, t), period_ns) << name;
+    EXPECT_EQ(csv.Integer(csv.rows.size() - 1, t), 5'000'000'000) << name;
+  }
+  // AND the GPS rows before the first fix (fix_type 1) carry no position, velocity or position
+  // time (nan), only the accuracy estimate; from the fix on (the row at 4.0 s, 2D) they all do
+  const engine::CsvText gps = engine::ReadCsvText(dir / "drone1.gps.csv");
+  const std::size_t fix = gps.Column("fix_type");
+  for (std::size_t r = 0; r < gps.rows.size(); ++r) {
+    const bool before_fix = r < 39;  // row r is at (r + 1) * 0.1 s
+    EXPECT_EQ(gps.Integer(r, fix) == 1, before_fix) << gps.rows[r];
+    for (const char* column : {"latitude_deg", "longitude_deg", "altitude_m", "velocity_ned_x_m_s",
+                               "velocity_ned_z_m_s", "position_time_s"}) {
+      EXPECT_EQ(gps.Field(r, gps.Column(column)) == "nan", before_fix)
+          << column << ": " << gps.rows[r];
+    }
+    EXPECT_GT(gps.Number(r, gps.Column("eph_m")), 0.0) << gps.rows[r];
+  }
 }
 
 TEST(RunCommandTest, AnotherSeedChangesTheSensorNoise) {

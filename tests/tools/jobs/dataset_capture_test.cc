@@ -99,16 +99,17 @@ TEST(DatasetCaptureTest, CamerasOfSeveralVehiclesRecordUnderUniqueNamesInTheirOw
   EXPECT_EQ((*a_front)["vehicle"], "a");
   EXPECT_EQ((*down)["vehicle"], "b");
   // Missions act before each tick and cameras after it: a's front records the frames of the ticks
-  // from its capture step at 0 s to the one at 1 s, due at 0 (taken at the end of the first tick),
-  // 0.2, 0.4, 0.6, 0.8 and 1.0 s.
-  EXPECT_EQ((*a_front)["frames"], 6);
+  // from its capture step at 0 s to the one at 1 s, due at 0.2, 0.4, 0.6, 0.8 and 1.0 s (a
+  // camera's first frame is one period after the start, docs/sensors.md).
+  EXPECT_EQ((*a_front)["frames"], 5);
   EXPECT_EQ((*b_front)["frames"], 0);  // b's track never captures its front
   // b's down: 10 Hz after 1.5 s up to 2 s: 1.6, 1.7, 1.8, 1.9 and 2.0 s.
   EXPECT_EQ((*down)["frames"], 5);
   const engine::CsvText poses = engine::ReadCsvText(fs::path(o.out) / "down" / "poses.csv");
   EXPECT_EQ(poses.Field(0, poses.Column("time_ns")), "1600000000");
   EXPECT_NEAR(poses.Number(0, poses.Column("position_ned_y_m")), 10.0, 0.5);  // on b
-  EXPECT_TRUE(fs::exists(fs::path(o.out) / "a_front" / "rgb" / "000005.png"));
+  EXPECT_TRUE(fs::exists(fs::path(o.out) / "a_front" / "rgb" / "000004.png"));
+  EXPECT_FALSE(fs::exists(fs::path(o.out) / "a_front" / "rgb" / "000005.png"));
 }
 
 TEST(DatasetCaptureTest, TheCamerasOptionTakesTheDatasetNames) {
