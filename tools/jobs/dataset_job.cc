@@ -121,6 +121,8 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
                                   .dump(1));
   for (const auto& c : recorder.cameras()) r.frames += c.frames;
   r.cameras = recorder.cameras().size();
+  for (const auto& l : recorder.lidars()) r.scans += l.scans;
+  r.lidars = recorder.lidars().size();
   r.redone = recorder.redone();
   r.wall_s = job.wall_s();
   return r;

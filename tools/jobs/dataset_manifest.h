@@ -26,7 +26,8 @@ struct ManifestSource {
 
 /// The manifest of a dataset being written (`complete` false) or finished: format and airis
 /// version, the scene and mission files with their SHA-256, the seed, the renderer's strings, every
-/// camera (intrinsics, mount, outputs, frames), the streams, counts, formats, shard and classes.
+/// camera (intrinsics, mount, outputs, frames), every lidar (scan pattern, mount, scans), the
+/// streams, counts, formats, shard and classes.
 /// Throws DatasetIoError when a file cannot be read for its hash.
 nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::Scene& scene,
                                    const engine::Mission& mission, const engine::World& world,
@@ -39,7 +40,8 @@ nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& op
 
 /// Where `now` (the manifest a run would write) differs from `existing` (an interrupted run's) in
 /// what a resume must keep: format, airis version, scene and mission content, seed, shard,
-/// formats, annotation rule and every camera (frame counts aside). Empty when a resume may go on,
+/// formats, annotation rule, every camera (frame counts aside) and every lidar (scan counts
+/// aside). Empty when a resume may go on,
 /// else the first difference as "scene/sha256 (was ..., now ...)".
 std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now);
 

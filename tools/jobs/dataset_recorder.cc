@@ -63,7 +63,11 @@ struct DatasetRecorder::Recording {
 };
 
 DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
-    : world_(world), options_(options), writer_(options.root, options.writer) {
+    : world_(world),
+      options_(options),
+      writer_(options.root, options.writer),
+      scans_(world, writer_, options.root,
+             {options.resume, options.shard_index, options.shard_count}) {
   AIRIS_DEMAND(options_.shard_count >= 1 && options_.shard_index >= 0 &&
                options_.shard_index < options_.shard_count);
   auto wanted = [&](const std::string& name) {
@@ -120,9 +124,10 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
           "no camera '" + name + "' in the scene (it has " + (all.empty() ? "none" : all) + ")");
     }
   }
-  if (recordings_.empty()) {
-    throw engine::ConfigError(
-        {}, "scene", "the scene has no camera to record (add a 'camera' sensor to a vehicle)");
+  if (recordings_.empty() && scans_.lidars().empty()) {
+    throw engine::ConfigError({}, "scene",
+                              "the scene has no camera or lidar to record (add a 'camera' or "
+                              "'lidar' sensor to a vehicle)");
   }
   if (options_.resume) writer_.LoadRecordedChecksums();
 }
@@ -131,6 +136,8 @@ DatasetRecorder::~DatasetRecorder() = default;
 
 void DatasetRecorder::SetCapture(const engine::CaptureStep& capture) {
   recording_ = capture.enabled;
+  scans_.SetRecording(
+      capture.enabled);  // every scan of the window: the camera filters do not apply
   // Cameras render only while recording.
   for (engine::Sensor* sensor : image_sensors_) sensor->set_enabled(capture.enabled);
   only_ = capture.cameras;
@@ -177,6 +184,12 @@ void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& fra
 
 std::int64_t DatasetRecorder::frames_written() const { return writer_.frames_written(); }
 
+std::vector<std::string> DatasetRecorder::redone() const {
+  std::vector<std::string> all = redone_;
+  all.insert(all.end(), scans_.redone().begin(), scans_.redone().end());
+  return all;
+}
+
 void DatasetRecorder::Finish() {
   writer_.Flush();
   for (std::size_t i = 0; i < recordings_.size(); ++i) {
@@ -207,26 +220,34 @@ void DatasetRecorder::Finish() {
                                   engine::TartanAirPosePath(options_.root, info.tartanair));
     }
   }
+  scans_.Finish();
   writer_.WriteChecksums();
   WriteLabels();
   WritePreview();
 }
 
+const std::vector<engine::LogColumn>& DatasetRecorder::PoseColumns() {
+  using enum engine::LogType;
+  static const std::vector<engine::LogColumn> kColumns = {
+      {"frame", kInt64, {}, "frame index: the files NNNNNN.*"},
+      {"position_ned_x_m", kFloat64, {}, "camera centre, world NED (m)"},
+      {"position_ned_y_m", kFloat64, {}, ""},
+      {"position_ned_z_m", kFloat64, {}, ""},
+      {"attitude_cam_to_ned_w", kFloat64, {}, "rotation camera optical frame -> world NED (q_WC)"},
+      {"attitude_cam_to_ned_x", kFloat64, {}, ""},
+      {"attitude_cam_to_ned_y", kFloat64, {}, ""},
+      {"attitude_cam_to_ned_z", kFloat64, {}, ""},
+      {"latitude_deg", kFloat64, {}, "camera centre, WGS84"},
+      {"longitude_deg", kFloat64, {}, ""},
+      {"altitude_m", kFloat64, {}, "above the WGS84 ellipsoid"},
+  };
+  return kColumns;
+}
+
 void DatasetRecorder::WritePoses(const Recording& rec, const std::filesystem::path& path) const {
-  static const std::vector<std::string> kColumns = {"time_ns",
-                                                    "time_s",
-                                                    "frame",
-                                                    "position_ned_x_m",
-                                                    "position_ned_y_m",
-                                                    "position_ned_z_m",
-                                                    "attitude_cam_to_ned_w",
-                                                    "attitude_cam_to_ned_x",
-                                                    "attitude_cam_to_ned_y",
-                                                    "attitude_cam_to_ned_z",
-                                                    "latitude_deg",
-                                                    "longitude_deg",
-                                                    "altitude_m"};
-  engine::CsvWriter out(path, kColumns);
+  std::vector<std::string> names = {"time_ns", "time_s"};
+  for (const engine::LogColumn& c : PoseColumns()) names.push_back(c.name);
+  engine::CsvWriter out(path, names);
   for (const Recording::Pose& pose : rec.poses) {
     const Eigen::Vector3d p = pose.T_WC.translation();
     const engine::Quat q(pose.T_WC.rotation());

@@ -13,12 +13,14 @@
 #include "engine/mission/mission.h"
 #include "engine/world/image_sensor.h"
 #include "engine/world/world.h"
+#include "tools/jobs/scan_recorder.h"
 
 namespace airis::tools {
 
-/// Records the frames of a world's image sensors into a dataset folder while a mission runs
-/// (docs/dataset-format.md): frames go to a DatasetWriter (worker threads, bounded queue), poses to
-/// <camera>/poses.csv; Finish writes coco_instances.json per camera, labels.json and preview.png.
+/// Records the frames of a world's image sensors and the scans of its lidars into a dataset folder
+/// while a mission runs (docs/dataset-format.md): frames and scans go to a DatasetWriter (worker
+/// threads, bounded queue), poses to <camera>/poses.csv and <vehicle>.<lidar>/poses.csv
+/// (ScanRecorder); Finish writes coco_instances.json per camera, labels.json and preview.png.
 /// Each image stream is one dataset camera (a stereo pair's are <name>_left and <name>_right).
 /// Recording is on between the mission's capture steps. Sensors render only the frames this run
 /// records: a shard (K of N) records frame indices i with i % N == K - 1 of every camera, and skips
@@ -45,21 +47,27 @@ class DatasetRecorder {
     std::int64_t clipped_depth_pixels = 0;  ///< beyond the depth PNG's range (after Finish)
   };
 
-  /// Subscribes to the cameras. Throws ConfigError("--cameras") naming an unknown camera.
+  /// Subscribes to the cameras and lidars. Throws ConfigError("--cameras") naming an unknown
+  /// camera, ConfigError("scene") when the world has neither a camera nor a lidar.
   DatasetRecorder(engine::World& world, const Options& options);
   ~DatasetRecorder();
 
   /// Starts or stops recording (mission capture step); rate_hz > 0 subsamples the cameras' frames.
   void SetCapture(const engine::CaptureStep& capture);
-  /// Waits for every frame, then writes each camera's poses.csv and COCO file (listing only the
-  /// frames whose files were written), checksums.csv, labels.json and preview.png.
+  /// Waits for every frame and scan, then writes each camera's poses.csv and COCO file (listing
+  /// only the frames whose files were written), each lidar's poses.csv, checksums.csv, labels.json
+  /// and preview.png (when a camera has colour, depth and labels).
   void Finish();
 
   std::int64_t frames_written() const;
   const std::vector<CameraInfo>& cameras() const { return info_; }
-  /// Frames a resumed run found short, changed or unrecorded and wrote again, one line each
-  /// ("front frame 12: front/rgb/000012.png: 0 bytes, written with 523412").
-  const std::vector<std::string>& redone() const { return redone_; }
+  const std::vector<ScanRecorder::LidarInfo>& lidars() const { return scans_.lidars(); }
+  /// Frames and scans a resumed run found short, changed or unrecorded and wrote again, one line
+  /// each ("front frame 12: front/rgb/000012.png: 0 bytes, written with 523412").
+  std::vector<std::string> redone() const;
+
+  /// The columns of a camera's poses.csv after time_ns and time_s (the time the frame shows).
+  static const std::vector<engine::LogColumn>& PoseColumns();
 
  private:
   struct Recording;
@@ -74,6 +82,7 @@ class DatasetRecorder {
   engine::World& world_;
   Options options_;
   engine::DatasetWriter writer_;
+  ScanRecorder scans_;
   std::vector<CameraInfo> info_;
   std::vector<std::unique_ptr<Recording>> recordings_;
   std::vector<engine::Sensor*> image_sensors_;  // every one of the world (switched with recording)
