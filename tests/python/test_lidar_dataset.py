@@ -48,3 +48,20 @@ def test_a_lidar_only_dataset_reads_back_as_typed_points_on_the_wall(write, airi
     world = scans.world_points(0)[points["class_id"] == wall["class_id"][0]]
     assert world[:, 0] == pytest.approx(10.0, abs=1e-3)
     assert ((0 <= points["intensity"]) & (points["intensity"] <= 1)).all()
+
+
+def test_open3d_reads_every_field_of_a_scan_with_its_type(write, airis_bin, tmp_path):
+    o3d = pytest.importorskip("open3d")  # Debian python3-open3d, when installed
+    out = tmp_path / "ds"
+    run([airis_bin, "dataset", write("s.yaml", LIDAR_SCENE), "--mission",
+         write("m.yaml", CAPTURE_MISSION), "--out", str(out)])
+    scans = airis.Dataset(str(out)).lidars["drone1.lidar"]
+    points = scans[0]["points"]
+    cloud = o3d.t.io.read_point_cloud(str(out / "drone1.lidar" / "000000.pcd"))
+    xyz = np.stack([points["x"], points["y"], points["z"]], axis=1)
+    assert np.array_equal(cloud.point["positions"].numpy(), xyz)
+    for name in ("range_m", "intensity", "time_offset_s", "ring", "column", "instance_id",
+                 "class_id"):
+        values = cloud.point[name].numpy().reshape(-1)
+        assert values.dtype == points.dtype[name], name
+        assert np.array_equal(values, points[name]), name
