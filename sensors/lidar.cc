@@ -94,6 +94,7 @@ Lidar::Lidar(std::string name, const LidarConfig& config, engine::RandomStream s
   pattern.mount = config.mount;
   pattern.ring_elevations_deg = elevations_deg;
   pattern.columns = columns;
+  pattern.horizontal_fov_deg = config.horizontal_fov_deg;
   pattern.min_range_m = config.min_range_m;
   pattern.max_range_m = config.max_range_m;
   pattern.motion_distortion = config.motion_distortion;

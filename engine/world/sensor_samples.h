@@ -74,6 +74,7 @@ struct ScanPattern {
   MountConfig mount;                        ///< the sensor frame S on the body
   std::vector<double> ring_elevations_deg;  ///< elevation of each ring (laser) above S's x-y plane
   int columns = 0;                          ///< azimuth steps per scan
+  double horizontal_fov_deg = 360.0;        ///< azimuth swept; less than 360 is centred on S's x
   double min_range_m = 0.0;                 ///< nearer surfaces give no return
   double max_range_m = 0.0;                 ///< farther surfaces give no return
   /// Each column was cast from the pose the sensor had when it fired (true), or the whole scan

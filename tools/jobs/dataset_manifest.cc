@@ -54,6 +54,7 @@ nlohmann::json LidarJson(const ScanRecorder::LidarInfo& l) {
           {"rate_hz", l.rate_hz},
           {"rings", p.ring_elevations_deg.size()},
           {"columns", p.columns},
+          {"horizontal_fov_deg", p.horizontal_fov_deg},
           {"ring_elevations_deg", p.ring_elevations_deg},
           {"min_range_m", p.min_range_m},
           {"max_range_m", p.max_range_m},

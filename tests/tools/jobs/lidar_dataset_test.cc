@@ -110,6 +110,8 @@ TEST(LidarDatasetTest, TheForestVehicleWithALidarAndNoCameraMakesALidarDataset) 
   EXPECT_EQ(lidar["name"], "drone1.lidar");
   EXPECT_EQ(lidar["rings"], 16);
   EXPECT_EQ(lidar["columns"], 625);
+  EXPECT_EQ(lidar["horizontal_fov_deg"], 360.0);
+  EXPECT_EQ(lidar["ring_elevations_deg"][0], -15.0);
   EXPECT_EQ(lidar["scans"], r.scans);
   EXPECT_EQ(m["counts"]["scans"], r.scans);
   EXPECT_TRUE(m["cameras"].empty());
