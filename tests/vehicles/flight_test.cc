@@ -232,12 +232,13 @@ TEST(FlightTest, EveryPresetFliesASquareAndEndsWithinThirtyCentimetres) {
 }
 
 TEST(FlightTest, AHexaWithOneRotorMovedInwardFliesTheSquare) {
-  // docs/vehicles.md's example: rotor 3 of hexa_x 6.4 cm closer to the centre of mass. The
-  // allocation follows the geometry, so it tracks as the stock hexa does (same bound).
+  // docs/vehicles.md's example `bent`: rotor 3 of hexa_x 6.4 cm closer to the centre of mass,
+  // with a slower motor. The allocation follows the geometry, so it tracks as the stock hexa does
+  // (same bound).
   MultirotorConfig config = scenes::LoadMultirotorPreset("hexa_x");
-  Vec3& p = config.rotors[3].position_m;
-  const double arm_m = p.head<2>().norm();
-  p.head<2>() *= (arm_m - 0.064) / arm_m;
+  ASSERT_NEAR((config.rotors[3].position_m - Vec3(-0.1414, -0.0816, 0.025)).norm(), 0.064, 5e-4);
+  config.rotors[3].position_m = Vec3(-0.1414, -0.0816, 0.025);
+  config.rotors[3].time_constant_s = 0.01;
   EXPECT_LT(FlySquare(config), 0.25);
 }
 
