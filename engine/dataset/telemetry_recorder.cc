@@ -90,21 +90,26 @@ std::vector<LogColumn> TelemetryRecorder::CommandColumns(int actuator_count) {
 std::vector<LogColumn> TelemetryRecorder::CollisionColumns() {
   using enum LogType;
   std::vector<LogColumn> c = {
-      {"vehicle", kLabel, {}, "the vehicle that collided"},
+      {"vehicle", kLabel, {}, "the vehicle that touched something"},
       {"object", kLabel, {}, "what it hit: a static object's name or another vehicle's"},
       {"class_id", kInt64, {}, "class of what it hit, 0 for a vehicle"},
       {"instance_id", kInt64, {}, "instance of what it hit, 0 for a vehicle"}};
   AddVec3(c, "point_ned", "m", kFloat64, "contact point, world NED");
-  AddVec3(c, "normal_ned", "", kFloat64, "contact normal, world NED (unit)");
+  AddVec3(c, "normal_ned", "", kFloat64,
+          "contact normal, world NED (unit), from the object toward the vehicle");
   c.push_back({"impulse_n_s", kFloat64, {}, "impulse of the contact"});
   return c;
 }
 
 std::vector<LogColumn> TelemetryRecorder::MissionEventColumns() {
   using enum LogType;
-  return {{"step", kInt64, {}, "step number, from 1 in the mission file's order"},
+  return {{"vehicle", kLabel, {}, "the vehicle whose track the step is in"},
+          {"step", kInt64, {}, "step number, from 1 in the track's order"},
           {"kind", kLabel, {}, "step kind (goto, survey, ...)"},
-          {"event", kLabel, {}, "started, done or failed: why"}};
+          {"event",
+           kLabel,
+           {},
+           "started, done, failed: ..., contact: ground 'ground' or collision: building 'x'"}};
 }
 
 std::vector<std::string> TelemetryRecorder::FileNames(const World& world, StreamFormat format) {
@@ -218,9 +223,10 @@ void TelemetryRecorder::WriteCommandRow(std::size_t v, TimeNs now_ns) {
   commands_[v]->AddRow(now_ns, row_);
 }
 
-void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index,
-                                           const std::string& step_kind, const std::string& what) {
-  events_->Add(static_cast<std::int64_t>(time_ns)).Add(ToSeconds(time_ns));
+void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, const std::string& vehicle,
+                                           int step_index, const std::string& step_kind,
+                                           const std::string& what) {
+  events_->Add(static_cast<std::int64_t>(time_ns)).Add(ToSeconds(time_ns)).Add(vehicle);
   events_->Add(static_cast<std::int64_t>(step_index + 1)).Add(step_kind).Add(what);
   events_->EndRow();
 }

@@ -54,7 +54,7 @@ Flight MakeHoveringFlight(const MultirotorConfig& config, const Vec3& start_W) {
 }
 
 // Flies `mission` and returns the largest tilt seen (deg).
-double FlyMaxTilt(Flight& f, const engine::Mission& mission, double until_s) {
+double FlyMaxTilt(Flight& f, const engine::MissionTrack& mission, double until_s) {
   engine::MissionRunner runner(mission, f.sim->world().environment().frame(),
                                engine::RandomStream(1), nullptr);
   VehicleCommand command;
@@ -86,9 +86,9 @@ engine::MissionStep Goto(const Vec3& p_W, double speed_m_s, std::optional<double
 }
 
 // The hardest step transitions for the tilt: each starts from hover at (0, 0, -30).
-std::vector<std::pair<const char*, engine::Mission>> WorstTransitions() {
-  std::vector<std::pair<const char*, engine::Mission>> out;
-  engine::Mission m;
+std::vector<std::pair<const char*, engine::MissionTrack>> WorstTransitions() {
+  std::vector<std::pair<const char*, engine::MissionTrack>> out;
+  engine::MissionTrack m;
   // Full speed north, then back south: the heading turns 180 deg while the thrust reverses.
   m.steps = {Goto(Vec3(200, 0, -30), 12.0, {}, 150.0), Goto(Vec3(-50, 0, -30), 12.0)};
   out.emplace_back("reversal at full speed", m);
@@ -101,7 +101,7 @@ std::vector<std::pair<const char*, engine::Mission>> WorstTransitions() {
   // The end of a survey (three lines, the last northward) to a goto behind it with a 145 deg turn.
   engine::SurveyStep survey;
   survey.polygon_ne_m = {Eigen::Vector2d(0, 0), Eigen::Vector2d(60, 40)};
-  survey.altitude_m = 10.0;
+  survey.height_above_start_m = 10.0;
   survey.spacing_m = 20.0;
   survey.speed_m_s = 12.0;
   m.steps = {engine::MissionStep::Of(survey), Goto(Vec3(-20, 80, -10), 12.0, 145.0)};

@@ -1,5 +1,6 @@
 #include "tools/jobs/scan_recorder.h"
 
+#include <algorithm>
 #include <memory>
 
 #include "engine/dataset/csv_writer.h"
@@ -33,7 +34,11 @@ const std::vector<engine::LogColumn>& ScanRecorder::PoseColumns() {
 
 ScanRecorder::ScanRecorder(engine::World& world, engine::DatasetWriter& writer,
                            std::filesystem::path root, const Options& options)
-    : world_(world), writer_(writer), root_(std::move(root)), options_(options) {
+    : world_(world),
+      writer_(writer),
+      root_(std::move(root)),
+      options_(options),
+      recording_(world.vehicle_count(), 0) {
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& sensor : world.sensors(v)) {
       const engine::PointCloudSample* cloud = sensor->point_cloud();
@@ -44,7 +49,7 @@ ScanRecorder::ScanRecorder(engine::World& world, engine::DatasetWriter& writer,
       info.name = info.vehicle + "." + info.sensor;  // names hold no '.': unique, and no camera's
       info.rate_hz = sensor->schedule().rate_hz();
       info.pattern = cloud->pattern;
-      recordings_.push_back({writer_.AddScanner(info.name), 0, {}});
+      recordings_.push_back({v, writer_.AddScanner(info.name), 0, {}});
       info_.push_back(std::move(info));
       const std::size_t lidar = info_.size() - 1;
       engine::Sensor* source = sensor.get();
@@ -54,9 +59,18 @@ ScanRecorder::ScanRecorder(engine::World& world, engine::DatasetWriter& writer,
   }
 }
 
+bool ScanRecorder::recording() const {
+  return std::find(recording_.begin(), recording_.end(), 1) != recording_.end();
+}
+
+bool ScanRecorder::has_lidar(std::size_t vehicle) const {
+  return std::any_of(recordings_.begin(), recordings_.end(),
+                     [&](const Recording& r) { return r.vehicle == vehicle; });
+}
+
 void ScanRecorder::OnScan(std::size_t lidar, const engine::PointCloudSample& scan) {
-  if (!recording_) return;
   Recording& rec = recordings_[lidar];
+  if (!recording_[rec.vehicle]) return;
   const std::int64_t index = rec.next_scan++;
   if (index % options_.shard_count != options_.shard_index) return;  // another shard's scan
   std::string why;

@@ -37,8 +37,13 @@ class ScanRecorder {
   ScanRecorder(engine::World& world, engine::DatasetWriter& writer, std::filesystem::path root,
                const Options& options);
 
-  /// Records the scans taken while on (the mission's capture windows).
-  void SetRecording(bool on) { recording_ = on; }
+  /// Records the scans of world vehicle `vehicle`'s lidars taken while on (the capture windows of
+  /// its mission track).
+  void SetRecording(std::size_t vehicle, bool on) { recording_.at(vehicle) = on; }
+  /// True while some vehicle's lidars record.
+  bool recording() const;
+  /// True when world vehicle `vehicle` has a lidar.
+  bool has_lidar(std::size_t vehicle) const;
   /// After the writer's Flush: writes each lidar's poses.csv (the scans whose files were written
   /// or adopted, in scan order). Throws DatasetIoError.
   void Finish();
@@ -61,7 +66,8 @@ class ScanRecorder {
     engine::Quat q_WS;
   };
   struct Recording {
-    int scanner = 0;  // the writer's index
+    std::size_t vehicle = 0;  // world index
+    int scanner = 0;          // the writer's index
     std::int64_t next_scan = 0;
     std::vector<Pose> poses;
   };
@@ -71,7 +77,7 @@ class ScanRecorder {
   engine::DatasetWriter& writer_;
   std::filesystem::path root_;
   Options options_;
-  bool recording_ = false;
+  std::vector<char> recording_;  // by world vehicle index
   std::vector<LidarInfo> info_;
   std::vector<Recording> recordings_;
   std::vector<std::string> redone_;

@@ -171,6 +171,11 @@ TEST(LidarDatasetTest, ForestScansReprojectOntoTheDepthOfACoLocatedCameraWithinO
   ASSERT_TRUE(r.succeeded) << r.failure;
   const fs::path root = o.out;
   const json m = ReadJson(root / "manifest.json");
+  // Each vehicle's lidars record in its own track's capture windows: drone1 has no track.
+  ASSERT_EQ(m["lidars"].size(), 2u);
+  EXPECT_EQ(m["lidars"][0]["name"], "drone1.lidar");
+  EXPECT_EQ(m["lidars"][0]["scans"], 0);
+  EXPECT_EQ(m["lidars"][1]["scans"], r.scans);
   const json& cam = m["cameras"][0];
   const double fx = cam["fx"], fy = cam["fy"], cx = cam["cx"], cy = cam["cy"];
   const int width = cam["width"], height = cam["height"];
