@@ -7,10 +7,12 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "scenes/mission_file.h"
 #include "scenes/scene.h"
 #include "scenes/scene_overrides.h"
 #include "scenes/scene_schema.h"
@@ -18,6 +20,7 @@
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/jobs/preview_render.h"
+#include "tools/jobs/scene_report.h"
 
 namespace airis::tools {
 namespace {
@@ -25,6 +28,7 @@ namespace {
 struct SceneOptions {
   std::string file;
   std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string mission;                 // check: the mission to report the captures of
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -103,8 +107,20 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
 
 int RunCheck(const SceneOptions& options) {
   const Loaded loaded = Load(options);
+  std::optional<engine::Mission> mission;
+  if (!options.mission.empty()) mission = scenes::LoadMissionFile(options.mission);
+  const SceneReport report = BuildSceneReport(loaded.scene, mission ? &*mission : nullptr);
+  if (options.json) {
+    nlohmann::json out = SceneReportJson(report);
+    out["scene"] = loaded.scene.name;
+    out["file"] = loaded.scene.path;
+    out["valid"] = true;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   PrintSummary(loaded, stats);
+  std::printf("%s", FormatSceneReport(report).c_str());
   std::printf("ok          %s is valid\n", options.file.c_str());
   return 0;
 }
@@ -123,7 +139,7 @@ int RunStats(const SceneOptions& options) {
   out["seed"] = loaded.scene.seed;
   out["overrides"] = scenes::SceneOverrideTexts(loaded.scene.overrides);
   out["objects"] = stats.objects;
-  out["instances"] = stats.objects;
+  out["instances"] = stats.objects + loaded.scene.static_scene.vehicle_bodies.size();
   out["models"] = stats.models;
   out["meshes"] = stats.meshes;
   out["materials"] = stats.materials;
@@ -168,17 +184,14 @@ int RunPreview(const SceneOptions& o) {
     preview.yaw_deg = v[3];
     preview.pitch_deg = v[4];
   }
-  PreviewResult r;
-  if (!o.camera.empty()) {
-    // The camera as mounted on its vehicle at the vehicle's start pose, with its own intrinsics.
-    SceneSource source;
-    source.path = o.file;
-    source.overrides = scenes::ParseSceneOverrides(o.overrides);
-    const SimulationJob job(source);
-    r = RenderPreviewPng(job.world().scene(), PreviewOfImageStream(job, o.camera), o.out);
-  } else {
-    r = RenderPreviewPng(LoadWithOverrides(o).static_scene, preview, o.out);
-  }
+  // The vehicles at their start poses; a camera as mounted on its vehicle, with its own
+  // intrinsics.
+  SceneSource source;
+  source.path = o.file;
+  source.overrides = scenes::ParseSceneOverrides(o.overrides);
+  const SimulationJob job(source);
+  if (!o.camera.empty()) preview = PreviewOfImageStream(job, o.camera);
+  const PreviewResult r = RenderPreviewPng(job, preview, o.out);
   std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
               o.out.c_str(), r.triangles, r.gl_renderer.c_str());
   return 0;
@@ -194,6 +207,9 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   CLI::App* check =
       cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  check->add_option("--mission", options->mission,
+                    "a mission file: also list the cameras its capture steps record");
+  check->add_flag("--json", options->json, "print one JSON object instead of text");
   AddSceneOverrideOption(check, options->overrides);
   check->callback([options, &exit_code] {
     exit_code = RunReportingErrors([&] { return RunCheck(*options); });
