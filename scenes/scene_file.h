@@ -43,7 +43,8 @@ struct VehicleEntryConfig {
             "(vehicles/presets/PRESET.yaml)");
     v.Field("start", start, "start state");
     v.Field("overrides", overrides,
-            "airframe keys to change (as in vehicles/presets/PRESET.yaml); a list replaces");
+            "airframe keys to change (docs/vehicles.md); a list replaces, a map of indices "
+            "changes those entries");
     v.Field("sensors", sensors, "sensors with their configs and mounts");
     v.Field("autopilot", autopilot,
             "who flies it: the built-in flight controller (default) or PX4 (docs/px4.md)");
@@ -112,9 +113,9 @@ struct Sourced {
       if (key[pos] == '[') {
         const std::size_t close = key.find(']', pos);
         const std::size_t index = std::stoul(key.substr(pos + 1, close - pos - 1));
-        if (!current.IsSequence() || index >= current.size()) break;
-        current.reset(current[index]);
-        at = current.Mark();
+        YAML::Node value;
+        if (!YamlReader::FindListEntry(current, index, &value, &at)) break;
+        current.reset(value);
         pos = close + 1;
         continue;
       }

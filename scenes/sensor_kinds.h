@@ -25,6 +25,8 @@ struct SensorKind {
                                                   const std::string& key_path)>
       read;
   std::function<std::vector<FieldDoc>()> fields;
+  /// A sensor of this kind with its default config (the dataset format's column tables).
+  std::function<std::shared_ptr<const SensorSpec>()> make_default;
 };
 
 /// The kind `name` of config `Config` and sensor class `SensorT`.
@@ -37,7 +39,10 @@ SensorKind SensorKindOf(std::string_view name, std::string_view doc) {
             reader.ReadStruct(value, mark, key_path, config);
             return std::make_shared<const SensorSpecOf<Config, SensorT>>(name, std::move(config));
           },
-          [] { return ListFields<Config>(); }};
+          [] { return ListFields<Config>(); },
+          [name]() -> std::shared_ptr<const SensorSpec> {
+            return std::make_shared<const SensorSpecOf<Config, SensorT>>(name, Config{});
+          }};
 }
 
 /// Every sensor kind, in the order the docs list them.

@@ -137,6 +137,47 @@ bool YamlReader::FindKey(const YAML::Node& node, const std::string& key, YAML::N
   return false;
 }
 
+std::size_t YamlReader::ParseListIndex(const YAML::Node& key, const std::string& key_path,
+                                       std::size_t size) const {
+  const std::string last = size == 0 ? "" : " (0 to " + std::to_string(size - 1) + ")";
+  std::size_t index = 0;
+  const std::string text = key.IsScalar() ? key.Scalar() : "";
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), index);
+  if (text.empty() || result.ec != std::errc() || result.ptr != text.data() + text.size()) {
+    Fail(key.Mark(), key_path,
+         "a map in place of a list changes entries by their 0-based index: expected an index" +
+             last + " as key (got " + Describe(key) + ")");
+  }
+  if (index >= size) {
+    Fail(key.Mark(), key_path + "[" + text + "]",
+         "no entry " + text + " to change: the list has " + std::to_string(size) +
+             (size == 1 ? " entry" : " entries") + last);
+  }
+  return index;
+}
+
+bool YamlReader::FindListEntry(const YAML::Node& node, std::size_t index, YAML::Node* value,
+                               YAML::Mark* mark) {
+  if (node.IsSequence()) {
+    if (index >= node.size()) return false;
+    value->reset(node[index]);
+    *mark = value->Mark();
+    return true;
+  }
+  if (!node.IsMap()) return false;
+  for (const auto& entry : node) {
+    std::size_t key = 0;
+    const std::string& text = entry.first.Scalar();
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), key);
+    if (result.ec == std::errc() && result.ptr == text.data() + text.size() && key == index) {
+      value->reset(entry.second);
+      *mark = entry.first.Mark();
+      return true;
+    }
+  }
+  return false;
+}
+
 void YamlReader::RejectUnknownKeys(
     const YAML::Node& node, const std::string& key_path, const std::vector<std::string>& known,
     const std::vector<std::pair<std::string, std::string>>& renamed) const {
@@ -199,9 +240,9 @@ void YamlReader::FailInvalidField(const YAML::Node& node, const YAML::Mark& mark
       const std::size_t close = field.find(']', pos);
       if (close == std::string::npos) break;
       const std::size_t index = std::strtoul(field.c_str() + pos + 1, nullptr, 10);
-      if (!current.IsSequence() || index >= current.size()) break;
-      current.reset(current[index]);
-      where = current.Mark();
+      YAML::Node value;
+      if (!FindListEntry(current, index, &value, &where)) break;
+      current.reset(value);
       pos = close + 1;
       continue;
     }

@@ -151,6 +151,14 @@ class YamlReader {
   /// Throws ConfigError unless `node` is a sequence ("expected <what>").
   void RequireSequence(const YAML::Node& node, const YAML::Mark& mark, const std::string& key_path,
                        const std::string& what) const;
+  /// The 0-based index in key `key` of a map that changes entries of a list of `size` entries
+  /// ({3: {...}}), or throws ConfigError at the key (not an index, or no such entry).
+  std::size_t ParseListIndex(const YAML::Node& key, const std::string& key_path,
+                             std::size_t size) const;
+  /// Entry `index` of a list node, or of a map that changes a list's entries by index ({3: ...}),
+  /// with its position (the element, or the index key); false when absent.
+  static bool FindListEntry(const YAML::Node& node, std::size_t index, YAML::Node* value,
+                            YAML::Mark* mark);
   /// Throws ConfigError for an enum spelling that is not one of `choices` (with a suggestion).
   [[noreturn]] void FailEnum(const YAML::Mark& mark, const std::string& key_path,
                              const std::string& text,
@@ -262,6 +270,16 @@ void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark,
           ParseDouble(item, item.Mark(), key_path + "[" + std::to_string(i) + "]"));
     }
   } else if constexpr (IsStdVector<T>::value) {
+    if (node.IsMap()) {
+      // {index: value, ...} changes entries of the list already there (a preset's), each read
+      // over its entry: only the keys given change.
+      for (const auto& entry : node) {
+        const std::size_t index = ParseListIndex(entry.first, key_path, out.size());
+        ReadValue(entry.second, entry.first.Mark(), key_path + "[" + std::to_string(index) + "]",
+                  out[index]);
+      }
+      return;
+    }
     RequireSequence(node, mark, key_path, "a list");
     out.clear();
     out.resize(node.size());

@@ -9,6 +9,13 @@ namespace airis::sensors {
 
 namespace {
 const std::string kColumns[] = {"pressure_pa", "temperature_k", "altitude_m"};
+const std::string_view kColumnDocs[] = {
+    "measured static pressure",
+    "measured air temperature: the standard atmosphere's at the sensor, with the sensor's offset "
+    "and noise",
+    "pressure altitude: the standard atmosphere inverted at the measured pressure",
+};
+static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void BarometerConfig::Validate() const {
@@ -40,6 +47,8 @@ Barometer::Barometer(std::string name, const BarometerConfig& config, engine::Ra
 }
 
 std::span<const std::string> Barometer::columns() const { return kColumns; }
+
+std::string_view Barometer::column_doc(std::size_t column) const { return kColumnDocs[column]; }
 
 void Barometer::CopyLatestRow(std::span<double> out) const {
   AIRIS_DEMAND(out.size() == std::size(kColumns));

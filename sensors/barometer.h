@@ -69,6 +69,7 @@ class Barometer final : public engine::Sensor {
   double temperature_offset_k() const { return temperature_offset_k_; }
 
   std::span<const std::string> columns() const override;
+  std::string_view column_doc(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;
 
  protected:

@@ -18,6 +18,20 @@ namespace {
 const std::string kColumns[] = {
     "fix_type",           "latitude_deg", "longitude_deg", "altitude_m",      "velocity_ned_x_m_s",
     "velocity_ned_y_m_s", "eph_m",        "epv_m",         "position_time_s", "velocity_ned_z_m_s"};
+const std::string_view kColumnDocs[] = {
+    "1 no fix, 2 2D fix, 3 3D fix (MAVLink GPS_FIX_TYPE); a row without a fix (before the first) "
+    "has NaN position, velocity and position_time_s",
+    "measured position, WGS84",
+    "",
+    "height above the WGS84 ellipsoid",
+    "measured velocity, world NED",
+    "",
+    "1-sigma horizontal accuracy estimate",
+    "1-sigma vertical accuracy estimate",
+    "simulated time the fix describes: the row time minus the receiver latency",
+    "measured velocity, world NED (down)",
+};
+static_assert(std::size(kColumnDocs) == std::size(kColumns));
 
 // First-order decay from `initial` to `final` with time constant `tau_s`, started at `start_ns`.
 double Decay(double initial, double final_value, double tau_s, TimeNs start_ns, TimeNs t_ns) {
@@ -90,6 +104,8 @@ engine::GnssFixType Gps::CalcFixType(TimeNs t_ns, double eph_m) const {
 }
 
 std::span<const std::string> Gps::columns() const { return kColumns; }
+
+std::string_view Gps::column_doc(std::size_t column) const { return kColumnDocs[column]; }
 
 engine::LogType Gps::column_type(std::size_t column) const {
   if (column == 0) return engine::LogType::kInt64;

@@ -101,6 +101,7 @@ class Gps final : public engine::Sensor {
   engine::GnssFixType CalcFixType(engine::TimeNs t_ns, double eph_m) const;
 
   std::span<const std::string> columns() const override;
+  std::string_view column_doc(std::size_t column) const override;
   /// Latitude, longitude, altitude and the fix's position time are float64 (a float32 latitude
   /// would be off by up to 0.2 m); the fix type is a whole number. Without a fix the position,
   /// velocity and position time columns are NaN.

@@ -19,6 +19,16 @@ const std::string kColumns[] = {
     "angular_velocity_sensor_x_rad_s", "angular_velocity_sensor_y_rad_s",
     "angular_velocity_sensor_z_rad_s", "specific_force_sensor_x_m_s2",
     "specific_force_sensor_y_m_s2",    "specific_force_sensor_z_m_s2"};
+const std::string_view kColumnDocs[] = {
+    "angular velocity measured by the gyroscope, sensor axes (noise, bias and scale error "
+    "included)",
+    "",
+    "",
+    "specific force measured by the accelerometer, sensor axes: (0, 0, -g) level at rest",
+    "",
+    "",
+};
+static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void ImuConfig::Validate() const {
@@ -75,6 +85,8 @@ Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
 }
 
 std::span<const std::string> Imu::columns() const { return kColumns; }
+
+std::string_view Imu::column_doc(std::size_t column) const { return kColumnDocs[column]; }
 
 void Imu::CopyLatestRow(std::span<double> out) const {
   AIRIS_DEMAND(out.size() == std::size(kColumns));

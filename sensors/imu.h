@@ -99,6 +99,7 @@ class Imu final : public engine::Sensor {
   const engine::Vec3& accel_bias_m_s2() const { return accel_bias_; }
 
   std::span<const std::string> columns() const override;
+  std::string_view column_doc(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;
 
  protected:

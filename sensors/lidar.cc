@@ -11,6 +11,12 @@ namespace airis::sensors {
 
 namespace {
 const std::string kColumns[] = {"point_count", "hit_count", "nearest_m"};
+const std::string_view kColumnDocs[] = {
+    "beams per scan: channels x columns",
+    "beams that returned (the points of the scan file)",
+    "range of the nearest return, 0 without one",
+};
+static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void LidarConfig::Validate() const {
@@ -84,6 +90,15 @@ Lidar::Lidar(std::string name, const LidarConfig& config, engine::RandomStream s
   scan_.channels = channels;
   scan_.columns = columns;
   scan_.points.resize(n);
+  engine::ScanPattern& pattern = cloud_.pattern;
+  pattern.mount = config.mount;
+  pattern.ring_elevations_deg = elevations_deg;
+  pattern.columns = columns;
+  pattern.horizontal_fov_deg = config.horizontal_fov_deg;
+  pattern.min_range_m = config.min_range_m;
+  pattern.max_range_m = config.max_range_m;
+  pattern.motion_distortion = config.motion_distortion;
+  cloud_.points.reserve(n);
 }
 
 double Lidar::points_per_second() const {
@@ -91,6 +106,8 @@ double Lidar::points_per_second() const {
 }
 
 std::span<const std::string> Lidar::columns() const { return kColumns; }
+
+std::string_view Lidar::column_doc(std::size_t column) const { return kColumnDocs[column]; }
 
 engine::LogType Lidar::column_type(std::size_t column) const {
   return column != 2 ? engine::LogType::kInt64 : engine::LogType::kFloat32;
@@ -154,6 +171,7 @@ void Lidar::Sample(const engine::SensorContext& context) {
 
   // One draw per point whether or not it returns, so the stream does not depend on the scene.
   std::size_t hit_count = 0;
+  cloud_.points.clear();  // keeps its capacity: no allocation
   for (std::size_t i = 0; i < hits_.size(); ++i) {
     const engine::RayHit& hit = hits_[i];
     LidarPoint& point = scan_.points[i];
@@ -161,15 +179,31 @@ void Lidar::Sample(const engine::SensorContext& context) {
     point.hit = hit.hit();
     point.class_id = hit.class_id;
     point.instance_id = hit.instance_id;
-    if (point.hit) {
-      point.range_m =
-          std::clamp(static_cast<float>(hit.distance_m + noise_m), min_range, max_range);
-      ++hit_count;
-    } else {
+    if (!point.hit) {
       point.range_m = 0.0f;
+      continue;
     }
+    point.range_m = std::clamp(static_cast<float>(hit.distance_m + noise_m), min_range, max_range);
+    ++hit_count;
+    const auto column = static_cast<int>(i / channels);
+    engine::PointReturn& r = cloud_.points.emplace_back();
+    r.p_S_m = CalcPoint_S(i);
+    r.range_m = point.range_m;
+    // Lambertian: the normal faces the ray origin, so -n . d is the cosine of the incidence.
+    const float cos_incidence = -hit.normal_W.dot(rays_[i].direction_W.cast<float>());
+    r.intensity = hit.reflectivity * std::clamp(cos_incidence, 0.0f, 1.0f);
+    r.time_offset_s = static_cast<float>(-column_time_offset_s(column));
+    r.instance_id = hit.instance_id;
+    r.ring = static_cast<std::uint16_t>(i % channels);
+    r.column = static_cast<std::uint32_t>(column);
+    r.class_id = hit.class_id;
   }
   scan_.hit_count = hit_count;
+  cloud_.time_ns = scan_.time_ns;
+  cloud_.p_WS = scan_.p_WS;
+  cloud_.q_WS = scan_.q_WS;
+  cloud_.v_WS_m_s = v_WS;
+  cloud_.w_S_rad_s = q_BS.conjugate() * s.w_B;
 }
 
 }  // namespace airis::sensors

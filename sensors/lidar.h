@@ -92,14 +92,19 @@ struct LidarScan {
 /// and angular velocity (exact for steady motion; the truth between ticks is not stored), so a
 /// moving lidar's scan is skewed as a real one's is. Listeners read the scan through latest() by
 /// const reference: nothing large is copied, and the buffers are reused, so Sample does not
-/// allocate after construction.
+/// allocate after construction. The same scan is also given as engine::PointCloudSample
+/// (point_cloud(): the returns only, with their positions, intensity stand-in, ring, column and
+/// firing time, and the sensor's pose and motion), which is what datasets record.
 class Lidar final : public engine::Sensor {
  public:
   /// @param config validated here (throws InvalidField). @param stream this sensor's own random
   /// stream.
   Lidar(std::string name, const LidarConfig& config, engine::RandomStream stream);
 
+  /// Every beam of the last scan, hit or not.
   const LidarScan& latest() const { return scan_; }
+  /// The returns of the last scan (engine::Sensor's view of a scanner).
+  const engine::PointCloudSample* point_cloud() const override { return &cloud_; }
   const LidarConfig& config() const { return config_; }
 
   /// Unit beam direction of point i in sensor axes (x azimuth 0, azimuth toward +y, elevation
@@ -118,6 +123,7 @@ class Lidar final : public engine::Sensor {
   double points_per_second() const;
 
   std::span<const std::string> columns() const override;
+  std::string_view column_doc(std::size_t column) const override;
   /// The point and hit counts are whole numbers.
   engine::LogType column_type(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;
@@ -132,6 +138,7 @@ class Lidar final : public engine::Sensor {
   std::vector<engine::Ray> rays_;     // reused every scan
   std::vector<engine::RayHit> hits_;  // reused every scan
   LidarScan scan_;
+  engine::PointCloudSample cloud_;
 };
 
 }  // namespace airis::sensors

@@ -10,6 +10,12 @@ namespace {
 constexpr double kGaussPerNanotesla = 1e-5;  // 1 G = 1e-4 T = 1e5 nT
 const std::string kColumns[] = {"magnetic_field_sensor_x_gauss", "magnetic_field_sensor_y_gauss",
                                 "magnetic_field_sensor_z_gauss"};
+const std::string_view kColumnDocs[] = {
+    "measured magnetic field, sensor axes (1 G = 1e5 nT)",
+    "",
+    "",
+};
+static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void MagnetometerConfig::Validate() const {
@@ -49,6 +55,8 @@ Magnetometer::Magnetometer(std::string name, const MagnetometerConfig& config,
 }
 
 std::span<const std::string> Magnetometer::columns() const { return kColumns; }
+
+std::string_view Magnetometer::column_doc(std::size_t column) const { return kColumnDocs[column]; }
 
 void Magnetometer::CopyLatestRow(std::span<double> out) const {
   AIRIS_DEMAND(out.size() == std::size(kColumns));

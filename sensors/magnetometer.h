@@ -66,6 +66,7 @@ class Magnetometer final : public engine::Sensor {
   const MagnetometerConfig& config() const { return config_; }
 
   std::span<const std::string> columns() const override;
+  std::string_view column_doc(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;
 
  protected:

@@ -10,6 +10,13 @@ namespace airis::sensors {
 
 namespace {
 const std::string kColumns[] = {"hit", "distance_m", "class_id", "instance_id"};
+const std::string_view kColumnDocs[] = {
+    "1 when a surface was within the range limits, else 0",
+    "measured distance along the beam; no_return_distance_m without a return",
+    "semantic class of the surface hit, 0 for none",
+    "instance of the surface hit, 0 for none",
+};
+static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void RangefinderConfig::Validate() const {
@@ -37,6 +44,8 @@ Rangefinder::Rangefinder(std::string name, const RangefinderConfig& config,
       beam_B_(config.mount.q_BS() * engine::Vec3::UnitX()) {}
 
 std::span<const std::string> Rangefinder::columns() const { return kColumns; }
+
+std::string_view Rangefinder::column_doc(std::size_t column) const { return kColumnDocs[column]; }
 
 engine::LogType Rangefinder::column_type(std::size_t column) const {
   return column != 1 ? engine::LogType::kInt64 : engine::LogType::kFloat32;

@@ -57,6 +57,7 @@ class Rangefinder final : public engine::Sensor {
   const RangefinderConfig& config() const { return config_; }
 
   std::span<const std::string> columns() const override;
+  std::string_view column_doc(std::size_t column) const override;
   /// The hit (0 or 1), class and instance ids are whole numbers.
   engine::LogType column_type(std::size_t column) const override;
   void CopyLatestRow(std::span<double> out) const override;

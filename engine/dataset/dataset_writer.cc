@@ -9,6 +9,7 @@
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "engine/dataset/pcd_file.h"
 #include "engine/dataset/sha256.h"
 
 namespace airis::engine {
@@ -86,6 +87,17 @@ int DatasetWriter::AddCamera(const std::string& name, const DatasetOutputs& outp
   return static_cast<int>(cameras_.size()) - 1;
 }
 
+int DatasetWriter::AddScanner(const std::string& folder) {
+  (void)PathUnder(root_, folder);  // its folder is made when its first scan is written
+  scanners_.push_back({folder, {}});
+  return static_cast<int>(scanners_.size()) - 1;
+}
+
+std::filesystem::path DatasetWriter::ScanFile(int scanner, std::int64_t index) const {
+  return std::filesystem::path(scanners_[static_cast<std::size_t>(scanner)].folder) /
+         (FrameName(index) + ".pcd");
+}
+
 std::filesystem::path DatasetWriter::FramePath(int camera, const char* kind, std::int64_t index,
                                                const char* ext) const {
   return root_ / cameras_[static_cast<std::size_t>(camera)].name / kind / (FrameName(index) + ext);
@@ -128,8 +140,9 @@ void DatasetWriter::LoadRecordedChecksums() {
   }
 }
 
-bool DatasetWriter::VerifyFrame(int camera, std::int64_t index, std::string* why) const {
-  for (const std::filesystem::path& rel : FrameFiles(camera, index)) {
+bool DatasetWriter::VerifyFiles(const std::vector<std::filesystem::path>& files,
+                                std::string* why) const {
+  for (const std::filesystem::path& rel : files) {
     const auto fail = [&](const std::string& what) {
       if (why) *why = rel.string() + ": " + what;
       return false;
@@ -151,15 +164,23 @@ bool DatasetWriter::VerifyFrame(int camera, std::int64_t index, std::string* why
   return true;
 }
 
+void DatasetWriter::AdoptFiles(const std::vector<std::filesystem::path>& files) {
+  std::vector<std::pair<std::filesystem::path, FileChecksum>> recorded;
+  for (const std::filesystem::path& rel : files) {
+    const auto it = recorded_.find(rel.string());
+    AIRIS_DEMAND(it != recorded_.end());  // VerifyFiles first
+    recorded.emplace_back(rel, it->second);
+  }
+  Record(recorded);
+}
+
+bool DatasetWriter::VerifyFrame(int camera, std::int64_t index, std::string* why) const {
+  return VerifyFiles(FrameFiles(camera, index), why);
+}
+
 void DatasetWriter::Adopt(int camera, std::int64_t index) {
   Camera& cam = cameras_[static_cast<std::size_t>(camera)];
-  std::vector<std::pair<std::filesystem::path, FileChecksum>> files;
-  for (const std::filesystem::path& rel : FrameFiles(camera, index)) {
-    const auto it = recorded_.find(rel.string());
-    AIRIS_DEMAND(it != recorded_.end());  // VerifyFrame first
-    files.emplace_back(rel, it->second);
-  }
-  Record(files);
+  AdoptFiles(FrameFiles(camera, index));
   std::vector<InstanceAnnotation> anns;
   if (cam.outputs.segmentation) {
     const auto ids = DecodePng16(ReadFileBytes(FramePath(camera, "seg_instance", index, ".png")));
@@ -170,8 +191,35 @@ void DatasetWriter::Adopt(int camera, std::int64_t index) {
   cam.annotations[index] = std::move(anns);
 }
 
+bool DatasetWriter::VerifyScan(int scanner, std::int64_t index, std::string* why) const {
+  return VerifyFiles({ScanFile(scanner, index)}, why);
+}
+
+void DatasetWriter::AdoptScan(int scanner, std::int64_t index) {
+  AdoptFiles({ScanFile(scanner, index)});
+  std::lock_guard lock(mutex_);
+  scanners_[static_cast<std::size_t>(scanner)].written.insert(index);
+}
+
 void DatasetWriter::Submit(int camera, std::int64_t index,
                            std::shared_ptr<const CameraFrame> frame) {
+  Job job;
+  job.camera = camera;
+  job.index = index;
+  job.frame = std::move(frame);
+  Enqueue(std::move(job));
+}
+
+void DatasetWriter::SubmitScan(int scanner, std::int64_t index,
+                               std::shared_ptr<const PointCloudSample> scan) {
+  Job job;
+  job.scanner = scanner;
+  job.index = index;
+  job.scan = std::move(scan);
+  Enqueue(std::move(job));
+}
+
+void DatasetWriter::Enqueue(Job job) {
   std::unique_lock lock(mutex_);
   space_ready_.wait(lock, [&] {
     return error_ || static_cast<int>(queue_.size()) < options_.max_pending_frames;
@@ -180,7 +228,7 @@ void DatasetWriter::Submit(int camera, std::int64_t index,
     lock.unlock();
     RethrowWorkerError();
   }
-  queue_.push_back({camera, index, std::move(frame)});
+  queue_.push_back(std::move(job));
   work_ready_.notify_one();
 }
 
@@ -253,7 +301,8 @@ void DatasetWriter::WorkerLoop() {
     }
     space_ready_.notify_one();
     try {
-      if (!failed_before) WriteFrame(job);
+      if (!failed_before && job.scan) WriteScan(job);
+      if (!failed_before && job.frame) WriteFrame(job);
     } catch (...) {
       std::lock_guard lock(mutex_);
       if (!error_) error_ = std::current_exception();
@@ -265,6 +314,16 @@ void DatasetWriter::WorkerLoop() {
     idle_.notify_all();
     space_ready_.notify_all();
   }
+}
+
+void DatasetWriter::WriteScan(const Job& job) {
+  const std::filesystem::path rel = ScanFile(job.scanner, job.index);
+  const std::vector<std::uint8_t> bytes = EncodeScanPcd(*job.scan);
+  CreateFolder((root_ / rel).parent_path());
+  WriteFileAtomically(root_ / rel, bytes);
+  Record({{rel, ChecksumOf(bytes)}});
+  std::lock_guard lock(mutex_);
+  scanners_[static_cast<std::size_t>(job.scanner)].written.insert(job.index);
 }
 
 void DatasetWriter::WriteFrame(const Job& job) {

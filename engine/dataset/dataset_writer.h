@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "engine/core/camera_frame.h"
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/tartanair.h"
+#include "engine/world/sensor_samples.h"
 
 namespace airis::engine {
 
@@ -40,12 +42,12 @@ struct FileChecksum {
   bool operator==(const FileChecksum&) const = default;
 };
 
-/// Writes camera frames of a dataset on worker threads while the simulation goes on. A bounded
-/// queue keeps memory bounded however long the run: Submit blocks while `max_pending_frames` frames
-/// wait. Each file is written to a temporary name and renamed, so an interrupted run leaves only
-/// whole files; its size and SHA-256 are appended to checksums.journal as soon as the frame is
-/// written, so a resumed run can verify what it keeps. Output bytes depend only on the frames,
-/// never on thread timing.
+/// Writes camera frames and lidar scans of a dataset on worker threads while the simulation goes
+/// on. A bounded queue keeps memory bounded however long the run: Submit blocks while
+/// `max_pending_frames` frames or scans wait. Each file is written to a temporary name and renamed,
+/// so an interrupted run leaves only whole files; its size and SHA-256 are appended to
+/// checksums.journal as soon as the frame is written, so a resumed run can verify what it keeps.
+/// Output bytes depend only on the frames, never on thread timing.
 class DatasetWriter {
  public:
   struct Options {
@@ -67,6 +69,10 @@ class DatasetWriter {
   int AddCamera(const std::string& name, const DatasetOutputs& outputs,
                 const TartanAirSlot& tartanair = {}, double depth_unit_m = 0.001);
 
+  /// Adds a lidar whose scans go to `folder`/NNNNNN.pcd (a validated name); returns its index for
+  /// the scan calls below.
+  int AddScanner(const std::string& folder);
+
   /// Reads the checksums an earlier run recorded in this folder (checksums.csv of a finished run,
   /// checksums.journal of an interrupted one; a torn last journal line is ignored), for
   /// VerifyFrame. Throws DatasetIoError naming the file for any other malformed line.
@@ -78,6 +84,12 @@ class DatasetWriter {
   /// Takes a verified frame into this run: its annotations are rebuilt from its files and its
   /// checksums carried over.
   void Adopt(int camera, std::int64_t index);
+  /// As VerifyFrame and Adopt, for scan `index` of scanner `scanner`.
+  bool VerifyScan(int scanner, std::int64_t index, std::string* why) const;
+  void AdoptScan(int scanner, std::int64_t index);
+  /// Queues a scan for writing as a binary PCD file (EncodeScanPcd). Rethrows the error of a
+  /// failed worker (DatasetIoError).
+  void SubmitScan(int scanner, std::int64_t index, std::shared_ptr<const PointCloudSample> scan);
   /// Queues a frame for writing. The frame must have the images its camera's outputs need. Rethrows
   /// the error of a failed worker (DatasetIoError).
   void Submit(int camera, std::int64_t index, std::shared_ptr<const CameraFrame> frame);
@@ -97,6 +109,12 @@ class DatasetWriter {
   const std::string& camera_name(int camera) const {
     return cameras_[static_cast<std::size_t>(camera)].name;
   }
+  /// Scans of `scanner` written or adopted (call after Flush).
+  const std::set<std::int64_t>& scans(int scanner) const {
+    return scanners_[static_cast<std::size_t>(scanner)].written;
+  }
+  /// Path of a scan file relative to the root, e.g. drone1.lidar/000042.pcd.
+  std::filesystem::path ScanFile(int scanner, std::int64_t index) const;
   std::int64_t frames_written() const { return frames_written_; }
   /// Rendered depths of `camera` beyond its depth PNG's 65535 units (written as 0; call after
   /// Flush). 0 when the unit was chosen from the far plane.
@@ -113,13 +131,26 @@ class DatasetWriter {
     std::map<std::int64_t, std::vector<InstanceAnnotation>> annotations;
     std::int64_t clipped_depth_pixels = 0;
   };
+  struct Scanner {
+    std::string folder;
+    std::set<std::int64_t> written;
+  };
+  // A frame of a camera, or a scan of a scanner.
   struct Job {
-    int camera;
-    std::int64_t index;
+    int camera = -1;
+    int scanner = -1;
+    std::int64_t index = 0;
     std::shared_ptr<const CameraFrame> frame;
+    std::shared_ptr<const PointCloudSample> scan;
   };
   void WorkerLoop();
   void WriteFrame(const Job& job);
+  void WriteScan(const Job& job);
+  void Enqueue(Job job);
+  /// True when every file of `files` (relative to the root) is as recorded; else `why` says which.
+  bool VerifyFiles(const std::vector<std::filesystem::path>& files, std::string* why) const;
+  /// Records files an earlier run wrote and VerifyFiles accepted, with their recorded checksums.
+  void AdoptFiles(const std::vector<std::filesystem::path>& files);
   void RethrowWorkerError();
   /// The files of frame `index` of `camera`, relative to the root, with the kind each holds.
   std::vector<std::filesystem::path> FrameFiles(int camera, std::int64_t index) const;
@@ -129,6 +160,7 @@ class DatasetWriter {
   std::filesystem::path root_;
   Options options_;
   std::vector<Camera> cameras_;
+  std::vector<Scanner> scanners_;
   std::int64_t frames_written_ = 0;
   std::map<std::string, FileChecksum> checksums_;  // of this run's frame files, by relative path
   std::map<std::string, FileChecksum> recorded_;   // what an earlier run recorded (resume)

@@ -7,20 +7,27 @@
 namespace airis::engine {
 namespace {
 
-std::vector<std::string> TimeColumns(std::vector<std::string> rest) {
-  rest.insert(rest.begin(), {"time_ns", "time_s"});
-  return rest;
+// The names of `columns` after time_ns and time_s (a CSV's header).
+std::vector<std::string> TimeColumns(const std::vector<LogColumn>& columns) {
+  std::vector<std::string> names = {"time_ns", "time_s"};
+  for (const LogColumn& c : columns) names.push_back(c.name);
+  return names;
 }
 
+// x, y, z columns of a vector; `doc` describes the three (on the first).
 void AddVec3(std::vector<LogColumn>& out, const std::string& prefix, const std::string& unit,
-             LogType type) {
-  for (const char* axis : {"x", "y", "z"}) {
-    out.push_back({prefix + "_" + axis + (unit.empty() ? "" : "_" + unit), type, {}});
+             LogType type, const std::string& doc) {
+  const char* axes[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    out.push_back(
+        {prefix + "_" + axes[i] + (unit.empty() ? "" : "_" + unit), type, {}, i == 0 ? doc : ""});
   }
 }
 
-void AddQuat(std::vector<LogColumn>& out, const std::string& prefix, LogType type) {
-  for (const char* part : {"w", "x", "y", "z"}) out.push_back({prefix + "_" + part, type, {}});
+void AddQuat(std::vector<LogColumn>& out, const std::string& prefix, LogType type,
+             const std::string& doc) {
+  const char* parts[] = {"w", "x", "y", "z"};
+  for (int i = 0; i < 4; ++i) out.push_back({prefix + "_" + parts[i], type, {}, i == 0 ? doc : ""});
 }
 
 std::size_t ModeIndex(CommandMode mode) {
@@ -36,35 +43,73 @@ std::size_t ModeIndex(CommandMode mode) {
 std::vector<LogColumn> TelemetryRecorder::TruthColumns() {
   using enum LogType;
   std::vector<LogColumn> c;
-  AddVec3(c, "position_ned", "m", kFloat64);
-  AddVec3(c, "velocity_ned", "m_s", kFloat32);
-  AddQuat(c, "attitude_frd_to_ned", kFloat32);  // resolves 1e-7 rad
-  for (const char* angle : {"roll_deg", "pitch_deg", "yaw_deg"}) c.push_back({angle, kFloat32, {}});
-  AddVec3(c, "angular_velocity_frd", "rad_s", kFloat32);
-  AddVec3(c, "acceleration_ned", "m_s2", kFloat32);
-  for (const char* g : {"latitude_deg", "longitude_deg", "altitude_m"}) {
-    c.push_back({g, kFloat64, {}});
-  }
+  AddVec3(c, "position_ned", "m", kFloat64, "body origin (centre of mass), world NED");
+  AddVec3(c, "velocity_ned", "m_s", kFloat32, "velocity, world NED");
+  AddQuat(c, "attitude_frd_to_ned", kFloat32,
+          "rotation body FRD -> world NED (q_WB)");  // resolves 1e-7 rad
+  c.push_back({"roll_deg", kFloat32, {}, "ZYX Euler angles of the same rotation"});
+  c.push_back({"pitch_deg", kFloat32, {}, ""});
+  c.push_back({"yaw_deg", kFloat32, {}, ""});
+  AddVec3(c, "angular_velocity_frd", "rad_s", kFloat32, "body rates in body FRD axes");
+  AddVec3(c, "acceleration_ned", "m_s2", kFloat32,
+          "acceleration of the body, world NED, gravity not included (what it does, not what an "
+          "accelerometer reads)");
+  c.push_back({"latitude_deg", kFloat64, {}, "body origin, WGS84"});
+  c.push_back({"longitude_deg", kFloat64, {}, ""});
+  c.push_back({"altitude_m", kFloat64, {}, "above the WGS84 ellipsoid"});
   return c;
 }
 
 std::vector<LogColumn> TelemetryRecorder::CommandColumns(int actuator_count) {
   using enum LogType;
   std::vector<LogColumn> c;
-  LogColumn mode{"mode", kLabel, {}};
+  LogColumn mode{
+      "mode", kLabel, {}, "command mode (.npy: an index into the manifest's command_modes)"};
   for (const auto& n : EnumNames(CommandMode{})) mode.labels.emplace_back(n.name);
   c.push_back(std::move(mode));
-  AddVec3(c, "position_setpoint_ned", "m", kFloat64);
-  AddVec3(c, "velocity_setpoint_ned", "m_s", kFloat32);
-  AddVec3(c, "acceleration_setpoint_ned", "m_s2", kFloat32);
-  c.push_back({"speed_limit_m_s", kFloat32, {}});
-  c.push_back({"yaw_setpoint_deg", kFloat32, {}});
-  AddQuat(c, "attitude_setpoint_frd_to_ned", kFloat32);
-  AddVec3(c, "rates_setpoint_frd", "rad_s", kFloat32);
-  c.push_back({"thrust_fraction", kFloat32, {}});
-  for (int a = 0; a < actuator_count; ++a)
-    c.push_back({"actuator_" + std::to_string(a), kFloat32, {}});
+  AddVec3(c, "position_setpoint_ned", "m", kFloat64, "position setpoint, world NED");
+  AddVec3(c, "velocity_setpoint_ned", "m_s", kFloat32, "velocity setpoint or feed-forward");
+  AddVec3(c, "acceleration_setpoint_ned", "m_s2", kFloat32, "acceleration feed-forward");
+  c.push_back({"speed_limit_m_s", kFloat32, {}, "speed limit of position mode, 0 = none"});
+  c.push_back({"yaw_setpoint_deg", kFloat32, {}, "heading setpoint, clockwise from north"});
+  AddQuat(c, "attitude_setpoint_frd_to_ned", kFloat32, "attitude setpoint (attitude mode)");
+  AddVec3(c, "rates_setpoint_frd", "rad_s", kFloat32, "body-rate setpoint (rates mode)");
+  c.push_back(
+      {"thrust_fraction", kFloat32, {}, "collective thrust of attitude and rates modes, 0 to 1"});
+  for (int a = 0; a < actuator_count; ++a) {
+    c.push_back({"actuator_" + std::to_string(a),
+                 kFloat32,
+                 {},
+                 a == 0 ? "normalised actuator commands, 0 to 1: the rotors in airframe order, "
+                          "then tilt actuators (docs/vehicles.md)"
+                        : ""});
+  }
   return c;
+}
+
+std::vector<LogColumn> TelemetryRecorder::CollisionColumns() {
+  using enum LogType;
+  std::vector<LogColumn> c = {
+      {"vehicle", kLabel, {}, "the vehicle that touched something"},
+      {"object", kLabel, {}, "what it hit: a static object's name or another vehicle's"},
+      {"class_id", kInt64, {}, "class of what it hit, 0 for a vehicle"},
+      {"instance_id", kInt64, {}, "instance of what it hit, 0 for a vehicle"}};
+  AddVec3(c, "point_ned", "m", kFloat64, "contact point, world NED");
+  AddVec3(c, "normal_ned", "", kFloat64,
+          "contact normal, world NED (unit), from the object toward the vehicle");
+  c.push_back({"impulse_n_s", kFloat64, {}, "impulse of the contact"});
+  return c;
+}
+
+std::vector<LogColumn> TelemetryRecorder::MissionEventColumns() {
+  using enum LogType;
+  return {{"vehicle", kLabel, {}, "the vehicle whose track the step is in"},
+          {"step", kInt64, {}, "step number, from 1 in the track's order"},
+          {"kind", kLabel, {}, "step kind (goto, survey, ...)"},
+          {"event",
+           kLabel,
+           {},
+           "started, done, failed: ..., contact: ground 'ground' or collision: building 'x'"}};
 }
 
 std::vector<std::string> TelemetryRecorder::FileNames(const World& world, StreamFormat format) {
@@ -100,7 +145,8 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
       if (sensor->image()) continue;
       std::vector<LogColumn> columns;
       for (std::size_t c = 0; c < sensor->columns().size(); ++c) {
-        columns.push_back({sensor->columns()[c], sensor->column_type(c), {}});
+        columns.push_back(
+            {sensor->columns()[c], sensor->column_type(c), {}, std::string(sensor->column_doc(c))});
       }
       sensors_.push_back(std::make_unique<StreamWriter>(
           dir, world.vehicle(v).name() + "." + sensor->name(), std::move(columns), options.format));
@@ -113,11 +159,8 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
       });
     }
   }
-  collisions_ = std::make_unique<CsvWriter>(
-      dir / "collisions.csv",
-      TimeColumns({"vehicle", "object", "class_id", "instance_id", "point_ned_x_m", "point_ned_y_m",
-                   "point_ned_z_m", "normal_ned_x", "normal_ned_y", "normal_ned_z",
-                   "impulse_n_s"}));
+  collisions_ =
+      std::make_unique<CsvWriter>(dir / "collisions.csv", TimeColumns(CollisionColumns()));
   world.AddCollisionListener([this](const CollisionEvent& e) {
     collisions_->Add(static_cast<std::int64_t>(e.time_ns)).Add(ToSeconds(e.time_ns));
     collisions_->Add(e.vehicle_name).Add(e.object_name);
@@ -128,8 +171,8 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
     collisions_->Add(e.impulse_Ns);
     collisions_->EndRow();
   });
-  events_ = std::make_unique<CsvWriter>(dir / "mission_events.csv",
-                                        TimeColumns({"vehicle", "step", "kind", "event"}));
+  events_ =
+      std::make_unique<CsvWriter>(dir / "mission_events.csv", TimeColumns(MissionEventColumns()));
 }
 
 void TelemetryRecorder::OnTick(TimeNs now_ns) {

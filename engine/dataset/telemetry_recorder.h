@@ -58,6 +58,10 @@ class TelemetryRecorder {
   /// The columns of <vehicle>.truth and of <vehicle>.commands (after time).
   static std::vector<LogColumn> TruthColumns();
   static std::vector<LogColumn> CommandColumns(int actuator_count);
+  /// The columns of collisions.csv and mission_events.csv (after time_ns, time_s; text columns
+  /// are kLabel).
+  static std::vector<LogColumn> CollisionColumns();
+  static std::vector<LogColumn> MissionEventColumns();
   /// The values of vehicle `vehicle`'s truth row now, in the order of TruthColumns() (what the
   /// truth stream holds before its types are applied); `out` is overwritten.
   static void CopyTruthRow(const World& world, std::size_t vehicle, std::vector<double>& out);

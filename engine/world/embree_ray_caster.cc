@@ -126,9 +126,18 @@ EmbreeRayCaster::EmbreeRayCaster(const StaticScene& scene) {
         rtcReleaseGeometry(instance);
         Check(device_, geometry_id == instances_.size(), "instance ids are not consecutive");
 
+        const std::size_t material = object.material_override >= 0
+                                         ? static_cast<std::size_t>(object.material_override)
+                                         : part.material;
+        if (material >= scene.materials.size()) {
+          throw std::invalid_argument("EmbreeRayCaster: object '" + object.name +
+                                      "' names material " + std::to_string(material) + " of " +
+                                      std::to_string(scene.materials.size()));
+        }
         InstanceInfo info;
         info.class_id = object.class_id;
         info.instance_id = object.instance_id;
+        info.reflectivity = scene.materials[material].base_color_rgb.mean();
         // Embree reports an instance hit's normal in the instanced scene's space (RTCHit: "geometry
         // normal in object space"); normals map to the world by the inverse transpose of the linear
         // part.
@@ -199,6 +208,7 @@ void EmbreeRayCaster::Cast(std::span<const Ray> rays, std::span<RayHit> hits) co
       out.distance_m = rh.ray.tfar;
       out.class_id = info.class_id;
       out.instance_id = info.instance_id;
+      out.reflectivity = info.reflectivity;
       Eigen::Vector3f n = info.normal_to_W * Eigen::Vector3f(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
       const Eigen::Vector3f d(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
       if (n.dot(d) > 0.0f) n = -n;  // face the ray origin whatever the triangle's winding

@@ -20,8 +20,9 @@ namespace airis::engine {
 /// Every mesh becomes one Embree scene (a triangle BVH built once); every part of every object
 /// whose collision shape is not kNone becomes an instance of that scene with the transform T_WO *
 /// T_MP, so 10,000 objects that share a box mesh share one BVH (RTC_GEOMETRY_TYPE_INSTANCE). A
-/// hit's instance id maps back to the object and so to its class and instance labels. Rays are
-/// traced in batches with rtcIntersect1M (the stream API).
+/// hit's instance id maps back to the object and so to its class and instance labels and to the
+/// reflectivity of the part's material (or the object's material override). Rays are traced in
+/// batches with rtcIntersect1M (the stream API).
 ///
 /// Precision: Embree works in single precision, so ray origins are rounded to float (about 0.06 mm
 /// at 1 km from the world origin) and distances are float metres. Intersection is watertight
@@ -33,8 +34,8 @@ class EmbreeRayCaster final : public RayCaster {
  public:
   /// Builds the acceleration structures. Throws std::runtime_error if Embree cannot create a device
   /// or a scene (with Embree's error text), std::invalid_argument if a mesh has an index outside
-  /// its positions or an index count that is not a multiple of 3, or if an object names a model or
-  /// mesh that does not exist.
+  /// its positions or an index count that is not a multiple of 3, or if an object names a model,
+  /// mesh or material that does not exist.
   explicit EmbreeRayCaster(const StaticScene& scene);
   ~EmbreeRayCaster() override;
   EmbreeRayCaster(const EmbreeRayCaster&) = delete;
@@ -54,6 +55,7 @@ class EmbreeRayCaster final : public RayCaster {
   struct InstanceInfo {
     std::uint8_t class_id = kNoClass;
     std::uint32_t instance_id = kNoInstance;
+    float reflectivity = 0.0f;  // mean linear base colour of the part's material
     Eigen::Matrix3f
         normal_to_W;  // inverse transpose of the linear part of T_WP: object-space normal -> world
   };

@@ -21,6 +21,7 @@ struct LogColumn {
   std::string name;
   LogType type = LogType::kFloat32;
   std::vector<std::string> labels;  ///< kLabel only
+  std::string doc;                  ///< what it holds, for docs/dataset-format.md's column tables
 };
 
 }  // namespace airis::engine

@@ -25,6 +25,9 @@ struct RayHit {
   std::uint32_t instance_id = kNoInstance;
   Eigen::Vector3f normal_W =
       Eigen::Vector3f::Zero();  ///< unit surface normal facing the ray origin
+  /// Diffuse reflectance of the surface hit, [0, 1]: the mean of its material's linear base colour
+  /// (textures are not sampled); 0 when nothing was hit.
+  float reflectivity = 0.0f;
 
   bool hit() const { return distance_m != std::numeric_limits<float>::infinity(); }
 };

@@ -3,6 +3,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/core/clock.h"
@@ -61,6 +62,13 @@ class Sensor {
   virtual std::span<const std::string> columns() const = 0;
   /// The last sample as numbers in the order of columns(); requires out.size() == columns().size().
   virtual void CopyLatestRow(std::span<double> out) const = 0;
+  /// What column `column` holds beyond the unit and frame its name gives (docs/dataset-format.md's
+  /// column tables are made from it); empty for a column described with the one before it (the y
+  /// and z of a vector after its x).
+  virtual std::string_view column_doc(std::size_t column) const {
+    (void)column;
+    return {};
+  }
   /// How logs store a column: float32 unless the sensor says otherwise (a GPS latitude needs
   /// float64, its fix type is a whole number).
   virtual LogType column_type(std::size_t column) const {
@@ -75,6 +83,9 @@ class Sensor {
   virtual const MagneticSample* magnetic() const { return nullptr; }
   virtual const GnssSample* gnss() const { return nullptr; }
   virtual const RangeSample* range() const { return nullptr; }
+  /// The last scan of a scanning range sensor (a lidar), or null when the sensor is not one. Its
+  /// pattern is set from construction on, its points from the first scan.
+  virtual const PointCloudSample* point_cloud() const { return nullptr; }
   /// Rotation of the sensor frame into the body frame (its mount); identity when it has none.
   virtual Quat q_BS() const { return Quat::Identity(); }
   /// Age of the state a sample describes when it is delivered (s): an estimator's delay setting.

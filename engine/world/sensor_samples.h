@@ -1,10 +1,12 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "engine/core/clock.h"
 #include "engine/core/frames.h"
 #include "engine/scene/static_scene.h"
+#include "engine/world/mount.h"
 
 namespace airis::engine {
 
@@ -65,6 +67,49 @@ struct RangeSample {
   std::uint32_t instance_id = kNoInstance;  ///< instance of what the beam hit
   float min_range_m = 0.0f;                 ///< the sensor's range limits
   float max_range_m = 0.0f;
+};
+
+/// How a scanning range sensor (a lidar) samples: fixed over the run.
+struct ScanPattern {
+  MountConfig mount;                        ///< the sensor frame S on the body
+  std::vector<double> ring_elevations_deg;  ///< elevation of each ring (laser) above S's x-y plane
+  int columns = 0;                          ///< azimuth steps per scan
+  double horizontal_fov_deg = 360.0;        ///< azimuth swept; less than 360 is centred on S's x
+  double min_range_m = 0.0;                 ///< nearer surfaces give no return
+  double max_range_m = 0.0;                 ///< farther surfaces give no return
+  /// Each column was cast from the pose the sensor had when it fired (true), or the whole scan
+  /// from the pose at the scan time (false).
+  bool motion_distortion = false;
+};
+
+/// One return of a scanning range sensor: where its beam hit, in the sensor frame S as it was when
+/// the beam fired (docs/dataset-format.md, "Lidar scans").
+struct PointReturn {
+  Eigen::Vector3f p_S_m = Eigen::Vector3f::Zero();  ///< range times the beam's unit direction (m)
+  float range_m = 0.0f;                             ///< measured range, noise included
+  /// Stand-in for the return's strength: a Lambertian surface, reflectivity of the material hit
+  /// (RayHit::reflectivity) times the cosine of the angle between the beam and the surface normal,
+  /// in [0, 1]; no range falloff.
+  float intensity = 0.0f;
+  /// Firing time minus the scan's time (s): <= 0, the last column fires at the scan time; 0 for
+  /// every point without motion distortion.
+  float time_offset_s = 0.0f;
+  std::uint32_t instance_id = kNoInstance;  ///< instance of the surface hit
+  std::uint16_t ring = 0;                   ///< laser, an index into ring_elevations_deg
+  std::uint32_t column = 0;                 ///< azimuth step, in firing order
+  std::uint8_t class_id = kNoClass;         ///< semantic class of the surface hit
+};
+
+/// The last full scan of a scanning range sensor: its returns, and the sensor's pose and motion
+/// at the scan time, from which each point's firing pose follows (docs/dataset-format.md).
+struct PointCloudSample {
+  ScanPattern pattern;              ///< set at construction, before the first scan
+  TimeNs time_ns = -1;              ///< scan time: when its last column fired
+  Vec3 p_WS = Vec3::Zero();         ///< sensor origin at time_ns, world NED (m)
+  Quat q_WS = Quat::Identity();     ///< rotation sensor -> world NED at time_ns
+  Vec3 v_WS_m_s = Vec3::Zero();     ///< velocity of the sensor origin, world NED (m/s)
+  Vec3 w_S_rad_s = Vec3::Zero();    ///< angular velocity in sensor axes (rad/s)
+  std::vector<PointReturn> points;  ///< beams that hit a surface in range, in firing order
 };
 
 }  // namespace airis::engine

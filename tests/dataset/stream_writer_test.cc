@@ -20,10 +20,10 @@ namespace fs = std::filesystem;
 
 // One column of every type, and rows whose values show what each type keeps.
 std::vector<LogColumn> Columns() {
-  return {{"reading_m_s2", LogType::kFloat32, {}},
-          {"latitude_deg", LogType::kFloat64, {}},
-          {"fix_type", LogType::kInt64, {}},
-          {"mode", LogType::kLabel, {"idle", "hover", "land"}}};
+  return {{"reading_m_s2", LogType::kFloat32, {}, ""},
+          {"latitude_deg", LogType::kFloat64, {}, ""},
+          {"fix_type", LogType::kInt64, {}, ""},
+          {"mode", LogType::kLabel, {"idle", "hover", "land"}, ""}};
 }
 const std::vector<std::vector<double>> kRows = {{0.1, 47.397742123456789, 3, 0},
                                                 {-9.80665, -122.0840575, 0, 2}};

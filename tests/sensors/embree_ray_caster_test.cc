@@ -58,6 +58,26 @@ TEST(EmbreeRayCasterTest, WallAtKnownDistance) {
   }
 }
 
+TEST(EmbreeRayCasterTest, HitsReportTheReflectivityOfTheirMaterial) {
+  // GIVEN two walls, one of the fixture's material and one overriding it with a coloured one
+  BoxSpec near_wall;
+  near_wall.center_W = Vec3(10.5, 0, 0);
+  near_wall.size_m = Vec3(1, 10, 10);
+  BoxSpec far_wall = near_wall;
+  far_wall.center_W = Vec3(-10.5, 0, 0);
+  far_wall.instance_id = 2;
+  engine::StaticScene scene = MakeBoxScene({near_wall, far_wall});
+  engine::Material red;
+  red.base_color_rgb = Eigen::Vector3f(0.9f, 0.2f, 0.1f);
+  scene.materials.push_back(red);
+  scene.objects[1].material_override = static_cast<std::int32_t>(scene.materials.size() - 1);
+  const EmbreeRayCaster caster(scene);
+  // THEN each hit reports the mean of its material's linear colour: 0.7 and 0.4
+  EXPECT_FLOAT_EQ(CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitX())).reflectivity, 0.7f);
+  EXPECT_FLOAT_EQ(CastOne(caster, MakeRay(Vec3::Zero(), -Vec3::UnitX())).reflectivity, 0.4f);
+  EXPECT_EQ(CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitZ())).reflectivity, 0.0f);  // none
+}
+
 TEST(EmbreeRayCasterTest, GroundPlaneAtHeightAndTilt) {
   // GIVEN a 1 km ground slab whose top face is z = 0, pitched by 20 degrees about y through the
   // origin (box centre moved half its thickness along the tilted normal), and a point 30 m above

@@ -166,6 +166,47 @@ TEST(LidarTest, MovingLidarCastsEachColumnFromItsFiringPose) {
   EXPECT_NEAR(still.latest().points[0].range_m, 20.0 / lidar.direction_S(0).x(), 1e-3);
 }
 
+TEST(LidarTest, PointCloudHoldsEveryReturnWithItsBeamTimeAndLambertianIntensity) {
+  // GIVEN a wall whose near face is x = 20 m, of the fixture's grey (linear 0.7: reflectivity
+  // 0.7), and a level lidar at the origin moving toward it at 10 m/s
+  BoxSpec wall;
+  wall.center_W = Vec3(21.0, 0, 0);
+  wall.size_m = Vec3(2.0, 400, 400);
+  wall.class_id = 4;
+  wall.instance_id = 9;
+  const engine::EmbreeRayCaster caster(testing::MakeBoxScene({wall}));
+  const engine::Environment env = testing::MakeEnvironment();
+  Lidar lidar("lidar", NoiselessConfig(), engine::RandomStream(1));
+  Truth truth;
+  truth.state.v_W = Vec3(10.0, 0, 0);
+  lidar.Update(truth.At(0, env, &caster));
+  const LidarScan& scan = lidar.latest();
+  const engine::PointCloudSample& cloud = *lidar.point_cloud();
+  // THEN the cloud holds exactly the beams that returned, in firing order, each with its range,
+  // position (range x direction), ring, column, firing time and labels
+  ASSERT_EQ(cloud.points.size(), scan.hit_count);
+  EXPECT_EQ(cloud.pattern.ring_elevations_deg.size(), 16u);
+  EXPECT_EQ(cloud.pattern.columns, 625);
+  EXPECT_EQ(cloud.time_ns, scan.time_ns);
+  EXPECT_EQ(cloud.v_WS_m_s, Vec3(10.0, 0, 0));
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < scan.points.size(); ++i) {
+    if (!scan.points[i].hit) continue;
+    const engine::PointReturn& p = cloud.points[k++];
+    const auto column = static_cast<int>(i / 16);
+    EXPECT_EQ(p.ring, i % 16);
+    EXPECT_EQ(p.column, static_cast<std::uint32_t>(column));
+    EXPECT_EQ(p.range_m, scan.points[i].range_m);
+    EXPECT_EQ(p.p_S_m, lidar.CalcPoint_S(i));
+    EXPECT_EQ(p.time_offset_s, static_cast<float>(-lidar.column_time_offset_s(column)));
+    EXPECT_EQ(p.class_id, 4);
+    EXPECT_EQ(p.instance_id, 9u);
+    // Lambertian: 0.7 x cos(incidence); the wall's normal is -x, so cos = the beam's x.
+    EXPECT_NEAR(p.intensity, 0.7 * lidar.direction_S(i).x(), 1e-5) << i;
+  }
+  EXPECT_EQ(k, cloud.points.size());
+}
+
 TEST(LidarTest, ScanIsDeliveredByReferenceAndBuffersAreReused) {
   BoxSpec ground;
   ground.center_W = Vec3(0, 0, 1.0);
@@ -182,11 +223,13 @@ TEST(LidarTest, ScanIsDeliveredByReferenceAndBuffersAreReused) {
   Truth truth;
   truth.state.p_W = Vec3(0, 0, -5);
   const LidarPoint* data = lidar.latest().points.data();
+  const engine::PointReturn* returns = lidar.point_cloud()->points.data();
   // 10 Hz on a 1 kHz tick for 1 s: 10 scans (0.1 s to 1 s), the points buffer never reallocated.
   for (std::int64_t k = 0; k <= 1000; ++k) lidar.Update(truth.At(k * 1'000'000, env, &caster));
   EXPECT_EQ(calls, 10);
   EXPECT_EQ(seen, &lidar.latest());
   EXPECT_EQ(lidar.latest().points.data(), data);
+  EXPECT_EQ(lidar.point_cloud()->points.data(), returns);  // reserved for every beam
   EXPECT_EQ(lidar.latest().time_ns, 1'000'000'000);
 }
 

@@ -23,6 +23,7 @@
 #include "tools/cli/dataset_cli.h"
 #include "tools/cli/slurm_cli.h"
 #include "tools/cli/stop_signals.h"
+#include "tools/jobs/dataset_columns.h"
 #include "tools/jobs/dataset_job.h"
 #include "tools/jobs/dataset_merge.h"
 #include "tools/jobs/dataset_status.h"
@@ -128,6 +129,10 @@ int Run(const DatasetArgs& a) {
               what.c_str(), r.succeeded ? "written" : "INCOMPLETE",
               static_cast<long long>(r.frames), r.cameras, r.wall_s,
               static_cast<double>(r.frames) / std::max(r.wall_s, 1e-9), r.simulated_s);
+  if (r.lidars > 0) {
+    std::printf("  lidar scans    %lld from %zu lidar(s)\n", static_cast<long long>(r.scans),
+                r.lidars);
+  }
   std::printf("  folder         %s\n", o.out.c_str());
   if (fs::exists(fs::path(o.out) / "preview.png")) {
     std::printf("  contact sheet  %s\n", (fs::path(o.out) / "preview.png").c_str());
@@ -232,9 +237,16 @@ int Status(const std::string& out, bool as_json) {
 int Merge(const std::vector<std::string>& shards, const std::string& out) {
   const MergeSummary m =
       MergeDatasetShards(std::vector<fs::path>(shards.begin(), shards.end()), out);
-  std::printf("dataset merged: %d shards, %lld frames in %.1f s\n", m.shards,
-              static_cast<long long>(m.frames), m.wall_s);
+  std::printf("dataset merged: %d shards, %lld frames, %lld lidar scans in %.1f s\n", m.shards,
+              static_cast<long long>(m.frames), static_cast<long long>(m.scans), m.wall_s);
   std::printf("  folder         %s\n", out.c_str());
+  return 0;
+}
+
+int PrintColumns() {
+  for (const ColumnTable& table : DatasetColumnTables()) {
+    std::printf("### `%s`\n\n%s\n", table.title.c_str(), table.markdown.c_str());
+  }
   return 0;
 }
 
@@ -263,6 +275,9 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   status->callback([status_dir, status_json, &exit_code] {
     exit_code = RunReportingErrors([&] { return Status(*status_dir, *status_json); });
   });
+  CLI::App* schema = cmd->add_subcommand(
+      "schema", "print the columns of every stream and table a dataset holds, as Markdown tables");
+  schema->callback([&exit_code] { exit_code = RunReportingErrors([] { return PrintColumns(); }); });
   cmd->add_option("scene", a->scene, "scene file (YAML)");
   cmd->add_option("--mission", a->mission, "mission file (YAML)");
   cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume");
@@ -281,8 +296,8 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--only-shards", a->only_shards,
                   "with --slurm: run only these shards again (comma-separated), e.g. failed ones");
   AddSlurmOptions(cmd, a->slurm_args);
-  cmd->callback([a, cmd, merge, status, &exit_code] {
-    if (merge->parsed() || status->parsed()) return;
+  cmd->callback([a, cmd, merge, status, schema, &exit_code] {
+    if (merge->parsed() || status->parsed() || schema->parsed()) return;
     exit_code = RunReportingErrors([&] {
       if (a->slurm != 0) return SubmitToSlurm(*a);
       for (const char* option : {"--only-shards", "--dry-run", "--partition", "--time",

@@ -53,6 +53,8 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   r.simulated_s = outcome.simulated_s;
   r.frames = dataset.frames();
   r.cameras = dataset.recorder().cameras().size();
+  for (const auto& l : dataset.recorder().lidars()) r.scans += l.scans;
+  r.lidars = dataset.recorder().lidars().size();
   r.redone = dataset.recorder().redone();
   r.wall_s = job.wall_s();
   return r;

@@ -31,18 +31,20 @@ struct DatasetJobResult {
   int interrupted_by = 0;   ///< the signal that stopped it early, 0 if none
   std::int64_t frames = 0;  ///< frames written, all cameras
   std::size_t cameras = 0;  ///< dataset cameras (a stereo camera counts two)
-  double wall_s = 0;        ///< wall time of the whole job: loading, flying, writing, finishing
+  std::int64_t scans = 0;   ///< lidar scans written, all lidars
+  std::size_t lidars = 0;
+  double wall_s = 0;  ///< wall time of the whole job: loading, flying, writing, finishing
   double simulated_s = 0;
   /// With resume: frames the interrupted run left short or changed, written again (one line each).
   std::vector<std::string> redone;
 };
 
 /// Flies the mission through the scene and writes the dataset into options.out
-/// (docs/dataset-format.md): frames, poses, COCO files, labels, streams, the contact sheet, and
-/// manifest.json (written first marked incomplete, replaced at the end). Calls `progress` about
-/// every 100 simulated ms (with the frames written and an ETA). Throws ConfigError for bad options
-/// or input files (naming file, line and key), DatasetIoError when the folder cannot be written,
-/// SimulationError when the simulation diverges.
+/// (docs/dataset-format.md): frames, lidar scans, poses, COCO files, labels, streams, the contact
+/// sheet, and manifest.json (written first marked incomplete, replaced at the end). Calls
+/// `progress` about every 100 simulated ms (with the frames written and an ETA). Throws ConfigError
+/// for bad options or input files (naming file, line and key), DatasetIoError when the folder
+/// cannot be written, SimulationError when the simulation diverges.
 DatasetJobResult RunDatasetJob(const DatasetJobOptions& options,
                                const std::function<void(const JobProgress&)>& progress = {});
 

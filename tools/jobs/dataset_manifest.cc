@@ -33,14 +33,35 @@ nlohmann::json RendererJson(const engine::World& world) {
   return {{"gl_vendor", ""}, {"gl_renderer", ""}, {"gl_version", ""}};
 }
 
+nlohmann::json MountJson(const engine::MountConfig& m) {
+  return {{"position_frd_m", {m.position_m.x(), m.position_m.y(), m.position_m.z()}},
+          {"roll_deg", m.roll_deg},
+          {"pitch_deg", m.pitch_deg},
+          {"yaw_deg", m.yaw_deg}};
+}
+
 nlohmann::json MountJson(const engine::ImageStream& s) {
-  const engine::MountConfig& m = s.mount;
-  nlohmann::json out = {{"position_frd_m", {m.position_m.x(), m.position_m.y(), m.position_m.z()}},
-                        {"roll_deg", m.roll_deg},
-                        {"pitch_deg", m.pitch_deg},
-                        {"yaw_deg", m.yaw_deg}};
+  nlohmann::json out = MountJson(s.mount);
   if (s.rig != s.name) out["baseline_m"] = s.baseline_m;  // an eye of a stereo pair
   return out;
+}
+
+nlohmann::json LidarJson(const ScanRecorder::LidarInfo& l) {
+  const engine::ScanPattern& p = l.pattern;
+  return {{"name", l.name},
+          {"vehicle", l.vehicle},
+          {"sensor", l.sensor},
+          {"rate_hz", l.rate_hz},
+          {"rings", p.ring_elevations_deg.size()},
+          {"columns", p.columns},
+          {"horizontal_fov_deg", p.horizontal_fov_deg},
+          {"ring_elevations_deg", p.ring_elevations_deg},
+          {"min_range_m", p.min_range_m},
+          {"max_range_m", p.max_range_m},
+          {"motion_distortion", p.motion_distortion},
+          {"mount", MountJson(p.mount)},
+          {"format", "pcd"},
+          {"scans", l.scans}};
 }
 
 // The names of the outputs that are on, in DatasetOutputs order (rgb, depth_png, depth_npy,
@@ -135,12 +156,19 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
     cams.push_back(CameraJson(c));
     frames += c.frames;
   }
+  nlohmann::json& lidars = m["lidars"] = nlohmann::json::array();
+  std::int64_t scans = 0;
+  for (const auto& l : recorder.lidars()) {
+    lidars.push_back(LidarJson(l));
+    scans += l.scans;
+  }
   m["streams"] = engine::TelemetryRecorder::FileNames(world, o.stream_format);
   nlohmann::json& modes = m["command_modes"] = nlohmann::json::array();
   for (const auto& n : EnumNames(engine::CommandMode{})) modes.push_back(n.name);
   m["streams_span"] = o.full_streams ? "flight" : "capture";
-  m["counts"] = {{"frames", frames}, {"simulated_time_s", sim_s}};
+  m["counts"] = {{"frames", frames}, {"scans", scans}, {"simulated_time_s", sim_s}};
   m["formats"] = FormatsJson(o.outputs);
+  if (!lidars.empty()) m["formats"].push_back("lidar_pcd");
   m["annotations"] = {{"min_object_area_px", o.min_object_area_px}};
   if (o.shard.count > 1) m["shard"] = {{"index", o.shard.index}, {"count", o.shard.count}};
   nlohmann::json classes = nlohmann::json::array();
@@ -211,6 +239,12 @@ std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::j
     }
     if (!keys.empty()) return keys;
   }
+  nlohmann::json la = existing.value("lidars", nlohmann::json::array());
+  nlohmann::json lb = now.value("lidars", nlohmann::json::array());
+  for (auto* list : {&la, &lb}) {
+    for (auto& l : *list) l.erase("scans");
+  }
+  if (la != lb) return "lidars (was " + la.dump() + ", now " + lb.dump() + ")";
   static constexpr const char* kInputs[] = {"/scene/seed",     "/scene/sha256", "/scene/overrides",
                                             "/mission/sha256", "/formats",      "/annotations",
                                             "/streams",        "/streams_span"};

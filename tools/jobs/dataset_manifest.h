@@ -29,8 +29,8 @@ struct ManifestSource {
 /// The manifest of a dataset being written (`complete` false) or finished: format and airis
 /// version, who flew (`flown_by`: the mission, or PX4 from outside when `mission` is null, with
 /// source.px4), the scene and mission files with their SHA-256, the seed and the scene's
-/// overrides (`--set`), the renderer's strings, every
-/// camera (intrinsics, mount, outputs, frames), the streams, counts, formats, shard and classes.
+/// overrides (`--set`), the renderer's strings, every camera (intrinsics, mount, outputs, frames),
+/// every lidar (scan pattern, mount, scans), the streams, counts, formats, shard and classes.
 /// Throws DatasetIoError when a file cannot be read for its hash.
 nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::Scene& scene,
                                    const engine::Mission* mission, const engine::World& world,
@@ -43,8 +43,8 @@ nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& op
 
 /// Where `now` (the manifest a run would write) differs from `existing` (an interrupted run's) in
 /// what a resume must keep: format, airis version, scene and mission content, seed, overrides,
-/// shard,
-/// formats, annotation rule and every camera (frame counts aside). Empty when a resume may go on,
+/// shard, formats, annotation rule, every camera (frame counts aside) and every lidar (scan counts
+/// aside). Empty when a resume may go on,
 /// else the first difference as "scene/sha256 (was ..., now ...)".
 std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now);
 

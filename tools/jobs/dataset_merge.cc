@@ -36,19 +36,20 @@ json ReadJson(const fs::path& path) {
   }
 }
 
-// The manifest without what differs between the shards of one dataset.
 // The manifest without what differs between the shards of one dataset: the shard entry, frame
-// counts, depth pixels clipped, and the paths the scene and mission were given by (their content
-// hashes must agree; shards made on machines with different checkouts merge).
+// and scan counts, depth pixels clipped, and the paths the scene and mission were given by (their
+// content hashes must agree; shards made on machines with different checkouts merge).
 json Common(json m) {
   m.erase("shard");
   m["counts"].erase("frames");
+  m["counts"].erase("scans");
   m["scene"].erase("file");
   if (m["mission"].is_object()) m["mission"].erase("file");  // null: PX4 flown from outside
   for (json& c : m["cameras"]) {
     c.erase("frames");
     if (c.contains("depth_png")) c["depth_png"].erase("clipped_pixels");
   }
+  for (json& l : m["lidars"]) l.erase("scans");
   return m;
 }
 
@@ -181,9 +182,10 @@ void JoinCsv(const std::vector<Shard>& shards, const fs::path& rel, const fs::pa
   engine::WriteFileAtomically(out / rel, engine::JoinCsvText(parts.front().header, joined));
 }
 
-// A camera's poses.csv from every shard, in frame order; returns the frame indices.
+// A camera's or lidar's poses.csv from every shard, in the order of its `index_column` (frame,
+// scan); returns those indices.
 std::vector<std::int64_t> JoinPoses(const std::vector<Shard>& shards, const fs::path& rel,
-                                    const fs::path& out) {
+                                    const fs::path& out, const std::string& index_column) {
   std::vector<engine::CsvText> parts;
   std::vector<std::pair<std::int64_t, const std::string*>> rows;
   parts.reserve(shards.size());
@@ -191,7 +193,7 @@ std::vector<std::int64_t> JoinPoses(const std::vector<Shard>& shards, const fs::
   for (const auto& p : parts) {
     if (p.header != parts.front().header)
       throw DatasetIoError(p.path.string() + ": header differs");
-    const std::size_t frame = p.Column("frame");
+    const std::size_t frame = p.Column(index_column);
     for (std::size_t r = 0; r < p.rows.size(); ++r)
       rows.emplace_back(p.Integer(r, frame), &p.rows[r]);
   }
@@ -201,8 +203,8 @@ std::vector<std::int64_t> JoinPoses(const std::vector<Shard>& shards, const fs::
   std::vector<std::int64_t> frames;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (i > 0 && rows[i].first == rows[i - 1].first) {
-      throw DatasetIoError(rel.string() + ": frame " + std::to_string(rows[i].first) +
-                           " is in two shards");
+      throw DatasetIoError(rel.string() + ": " + index_column + " " +
+                           std::to_string(rows[i].first) + " is in two shards");
     }
     joined.push_back(*rows[i].second);
     frames.push_back(rows[i].first);
@@ -334,7 +336,8 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
     const json& camera = first["cameras"][c];
     const std::string name = camera["name"].get<std::string>();
     CopyTree(shards, name, out, {"poses.csv", "coco_instances.json"});
-    const std::vector<std::int64_t> frames = JoinPoses(shards, fs::path(name) / "poses.csv", out);
+    const std::vector<std::int64_t> frames =
+        JoinPoses(shards, fs::path(name) / "poses.csv", out, "frame");
     if (fs::exists(shards.front().dir / name / "coco_instances.json")) {
       JoinCoco(shards, fs::path(name) / "coco_instances.json", out);
     }
@@ -360,6 +363,17 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
       preview = true;
     }
   }
+  // Lidars: scan files copied, poses joined in scan order.
+  std::int64_t scans = 0;
+  for (std::size_t l = 0; l < first.value("lidars", json::array()).size(); ++l) {
+    const std::string name = first["lidars"][l]["name"].get<std::string>();
+    CopyTree(shards, name, out, {"poses.csv"});
+    const auto indices = JoinPoses(shards, fs::path(name) / "poses.csv", out, "scan");
+    manifest["lidars"][l]["scans"] = static_cast<std::int64_t>(indices.size());
+    scans += static_cast<std::int64_t>(indices.size());
+  }
+  if (manifest["counts"].contains("scans")) manifest["counts"]["scans"] = scans;
+  summary.scans = scans;
   manifest["counts"]["frames"] = summary.frames;
   engine::WriteFileAtomically(out / "manifest.json", manifest.dump(1));
   summary.wall_s = WallSecondsSince(wall_start);

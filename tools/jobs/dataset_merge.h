@@ -10,14 +10,16 @@ namespace airis::tools {
 struct MergeSummary {
   int shards = 0;
   std::int64_t frames = 0;
-  double wall_s = 0.0;  ///< reading, copying and writing
+  std::int64_t scans = 0;  ///< lidar scans
+  double wall_s = 0.0;     ///< reading, copying and writing
 };
 
 /// Joins the folders of `airis dataset --shard K/N` runs (all N of one dataset, complete) into
 /// `out` (created; it must be empty or absent: nothing is overwritten), so that it holds what the
 /// unsharded run writes (docs/dataset-format.md, "Shards"): frame files copied; poses.csv and
 /// camera streams joined in time order; each camera's COCO file joined with annotation ids
-/// renumbered in frame order; TartanAir pose files and preview.png made again; the manifest
+/// renumbered in frame order; lidar scans copied and their poses.csv joined in scan order;
+/// TartanAir pose files and preview.png made again; the manifest
 /// (written last) without the shard entry and with the summed frame counts. Throws DatasetIoError
 /// naming the shard folder and the problem when a shard is missing, repeated, incomplete, or made
 /// from a different scene, mission, seed or version, and ConfigError("--out") when `out` is not an

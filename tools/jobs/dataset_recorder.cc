@@ -92,7 +92,11 @@ struct DatasetRecorder::Recording {
 };
 
 DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
-    : world_(world), options_(options), writer_(options.root, options.writer) {
+    : world_(world),
+      options_(options),
+      writer_(options.root, options.writer),
+      scans_(world, writer_, options.root,
+             {options.resume, options.shard_index, options.shard_count}) {
   AIRIS_DEMAND(options_.shard_count >= 1 && options_.shard_index >= 0 &&
                options_.shard_index < options_.shard_count);
   auto wanted = [&](const std::string& name) {
@@ -175,9 +179,10 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
           "no camera '" + name + "' in the scene (it has " + (all.empty() ? "none" : all) + ")");
     }
   }
-  if (recordings_.empty()) {
-    throw engine::ConfigError(
-        {}, "scene", "the scene has no camera to record (add a 'camera' sensor to a vehicle)");
+  if (recordings_.empty() && scans_.lidars().empty()) {
+    throw engine::ConfigError({}, "scene",
+                              "the scene has no camera or lidar to record (add a 'camera' or "
+                              "'lidar' sensor to a vehicle)");
   }
   if (options_.resume) writer_.LoadRecordedChecksums();
 }
@@ -199,11 +204,11 @@ void DatasetRecorder::PlanCaptures(const engine::Mission& mission,
       if (where.file.empty()) where.file = mission.file;
       const std::string path = (track.key_path.empty() ? "" : track.key_path + ".") + "steps[" +
                                std::to_string(i) + "].capture";
-      if (own.names.empty()) {
+      if (own.names.empty() && !scans_.has_lidar(vehicles[t])) {
         throw engine::ConfigError(where, path,
                                   "vehicle '" + vehicle +
-                                      "' has no camera to record (a capture step records the "
-                                      "cameras of its track's vehicle)");
+                                      "' has no camera or lidar to record (a capture step records "
+                                      "the cameras and lidars of its track's vehicle)");
       }
       for (std::size_t j = 0; j < capture->cameras.size(); ++j) {
         const std::string& name = capture->cameras[j];
@@ -214,7 +219,7 @@ void DatasetRecorder::PlanCaptures(const engine::Mission& mission,
         } else {
           std::string all;
           for (const auto& n : own.names) all += (all.empty() ? "" : ", ") + n;
-          problem += " (it has " + all + ")";
+          problem += " (it has " + (all.empty() ? std::string("none") : all) + ")";
         }
         throw engine::ConfigError(where, path + ".cameras[" + std::to_string(j) + "]", problem);
       }
@@ -249,6 +254,7 @@ void DatasetRecorder::SetCapture(std::size_t vehicle, const engine::CaptureStep&
   VehicleCameras& own = vehicles_.at(vehicle);
   own.on = capture.enabled;
   own.only = capture.cameras;
+  scans_.SetRecording(vehicle, capture.enabled);  // every scan: the camera filter does not apply
   // Cameras render only while recording.
   for (engine::Sensor* sensor : own.sensors) sensor->set_enabled(capture.enabled);
   for (std::size_t c = 0; c < recordings_.size(); ++c) {
@@ -260,8 +266,8 @@ void DatasetRecorder::SetCapture(std::size_t vehicle, const engine::CaptureStep&
 }
 
 bool DatasetRecorder::recording() const {
-  return std::any_of(vehicles_.begin(), vehicles_.end(),
-                     [](const VehicleCameras& v) { return v.on; });
+  return scans_.recording() || std::any_of(vehicles_.begin(), vehicles_.end(),
+                                           [](const VehicleCameras& v) { return v.on; });
 }
 
 bool DatasetRecorder::TakeFrame(std::size_t camera, engine::TimeNs) {
@@ -301,6 +307,12 @@ void DatasetRecorder::OnFrame(std::size_t camera, const engine::CameraFrame& fra
 
 std::int64_t DatasetRecorder::frames_written() const { return writer_.frames_written(); }
 
+std::vector<std::string> DatasetRecorder::redone() const {
+  std::vector<std::string> all = redone_;
+  all.insert(all.end(), scans_.redone().begin(), scans_.redone().end());
+  return all;
+}
+
 void DatasetRecorder::Finish() {
   writer_.Flush();
   for (std::size_t i = 0; i < recordings_.size(); ++i) {
@@ -331,26 +343,34 @@ void DatasetRecorder::Finish() {
                                   engine::TartanAirPosePath(options_.root, info.tartanair));
     }
   }
+  scans_.Finish();
   writer_.WriteChecksums();
   WriteLabels();
   WritePreview();
 }
 
+const std::vector<engine::LogColumn>& DatasetRecorder::PoseColumns() {
+  using enum engine::LogType;
+  static const std::vector<engine::LogColumn> kColumns = {
+      {"frame", kInt64, {}, "frame index: the files NNNNNN.*"},
+      {"position_ned_x_m", kFloat64, {}, "camera centre, world NED (m)"},
+      {"position_ned_y_m", kFloat64, {}, ""},
+      {"position_ned_z_m", kFloat64, {}, ""},
+      {"attitude_cam_to_ned_w", kFloat64, {}, "rotation camera optical frame -> world NED (q_WC)"},
+      {"attitude_cam_to_ned_x", kFloat64, {}, ""},
+      {"attitude_cam_to_ned_y", kFloat64, {}, ""},
+      {"attitude_cam_to_ned_z", kFloat64, {}, ""},
+      {"latitude_deg", kFloat64, {}, "camera centre, WGS84"},
+      {"longitude_deg", kFloat64, {}, ""},
+      {"altitude_m", kFloat64, {}, "above the WGS84 ellipsoid"},
+  };
+  return kColumns;
+}
+
 void DatasetRecorder::WritePoses(const Recording& rec, const std::filesystem::path& path) const {
-  static const std::vector<std::string> kColumns = {"time_ns",
-                                                    "time_s",
-                                                    "frame",
-                                                    "position_ned_x_m",
-                                                    "position_ned_y_m",
-                                                    "position_ned_z_m",
-                                                    "attitude_cam_to_ned_w",
-                                                    "attitude_cam_to_ned_x",
-                                                    "attitude_cam_to_ned_y",
-                                                    "attitude_cam_to_ned_z",
-                                                    "latitude_deg",
-                                                    "longitude_deg",
-                                                    "altitude_m"};
-  engine::CsvWriter out(path, kColumns);
+  std::vector<std::string> names = {"time_ns", "time_s"};
+  for (const engine::LogColumn& c : PoseColumns()) names.push_back(c.name);
+  engine::CsvWriter out(path, names);
   for (const Recording::Pose& pose : rec.poses) {
     const Eigen::Vector3d p = pose.T_WC.translation();
     const engine::Quat q(pose.T_WC.rotation());

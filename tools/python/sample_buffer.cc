@@ -77,7 +77,8 @@ void RecordLayout::Pack(engine::TimeNs time_ns, const std::vector<double>& value
 std::vector<engine::LogColumn> SensorColumns(const engine::Sensor& sensor) {
   std::vector<engine::LogColumn> out;
   for (std::size_t c = 0; c < sensor.columns().size(); ++c) {
-    out.push_back({sensor.columns()[c], sensor.column_type(c), {}});
+    out.push_back(
+        {sensor.columns()[c], sensor.column_type(c), {}, std::string(sensor.column_doc(c))});
   }
   return out;
 }

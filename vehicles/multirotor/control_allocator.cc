@@ -46,6 +46,14 @@ bool ControlAllocator::CanControl(std::span<const ActuatorEffect> effects) {
   return ev[0] > 1e-18 * ev[3];
 }
 
+int ControlAllocator::CalcUncontrolledAxis(std::span<const ActuatorEffect> effects) {
+  const auto B = BuildEffectiveness(effects);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(B * B.transpose());
+  int axis = 0;
+  eig.eigenvectors().col(0).cwiseAbs().maxCoeff(&axis);  // eigenvalues ascending
+  return axis;
+}
+
 ControlAllocator::ControlAllocator(std::span<const ActuatorEffect> effects) {
   AIRIS_DEMAND(CanControl(effects));
   count_ = static_cast<int>(effects.size());

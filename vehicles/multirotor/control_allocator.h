@@ -47,6 +47,10 @@ class ControlAllocator {
 
   /// True when `effects` can produce independent thrust, roll, pitch and yaw (rank 4).
   static bool CanControl(std::span<const ActuatorEffect> effects);
+  /// Of thrust (0), roll (1), pitch (2) and yaw (3), the one that `effects` cannot set
+  /// independently: the largest component of the combination no command produces (the weakest
+  /// eigenvector of B B^T). Meaningful when CanControl is false and there are 4 or more effects.
+  static int CalcUncontrolledAxis(std::span<const ActuatorEffect> effects);
 
   /// Commands u (size K) for `setpoint`, each in [0, 1].
   void Allocate(const WrenchSetpoint& setpoint, std::span<double> u) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "engine/core/error.h"
 
@@ -122,11 +123,28 @@ Vec3 FlightController::CalcAccelerationSetpoint(double dt_s, const Vec3& v_sp,
 
 Vec3 FlightController::CalcRateSetpoint(const Quat& q_sp,
                                         const engine::RigidBodyState& state) const {
-  Quat q_err = state.q_WB.conjugate() * q_sp;  // rotation from current to desired, body axes
-  if (q_err.w() < 0.0) q_err.coeffs() = -q_err.coeffs();
-  const Vec3 e = engine::QuatLog(q_err);
-  Vec3 w_sp(config_.attitude_gain_1_s * e.x(), config_.attitude_gain_1_s * e.y(),
-            config_.yaw_gain_1_s * e.z());
+  // Tilt first, heading second (the reduced-attitude split of Brescianini, Hehn and D'Andrea,
+  // "Nonlinear quadrocopter attitude control", ETH Zurich technical report, 2013). The
+  // tilt error turns the body z axis along the great circle to the desired one, about an axis in
+  // the body x-y plane; the heading error turns about body z, which moves no thrust direction. So
+  // however large the yaw change, the thrust axis sweeps only between the current and the desired
+  // tilt, both within max_tilt_deg. (The rotation vector of the whole error q^-1 q_sp mixes the
+  // two: a reversal at 12 m/s, turning the heading with the thrust, leaned the body to 60 deg.)
+  const Vec3 z_sp_B = state.q_WB.conjugate() * (q_sp * Vec3::UnitZ());  // desired z, body axes
+  const Vec3 axis_B = Vec3::UnitZ().cross(z_sp_B);                      // in the body x-y plane
+  const double sin_tilt = axis_B.norm();
+  const double tilt_error_rad = std::atan2(sin_tilt, z_sp_B.z());
+  // Aligned: a zero turn about any axis; upside down relative to the setpoint: any level axis.
+  const Vec3 tilt_axis_B = sin_tilt > 1e-9 ? Vec3(axis_B / sin_tilt) : Vec3::UnitX();
+  // What is left once the tilt is corrected is a turn about the (then shared) z axis.
+  const Quat q_tilt(Eigen::AngleAxisd(tilt_error_rad, tilt_axis_B));
+  const Quat q_heading = (state.q_WB * q_tilt).conjugate() * q_sp;
+  double yaw_error_rad = 2.0 * std::atan2(q_heading.z(), q_heading.w());
+  if (yaw_error_rad > std::numbers::pi) yaw_error_rad -= 2.0 * std::numbers::pi;
+  if (yaw_error_rad < -std::numbers::pi) yaw_error_rad += 2.0 * std::numbers::pi;
+
+  Vec3 w_sp = config_.attitude_gain_1_s * tilt_error_rad * tilt_axis_B;
+  w_sp.z() = config_.yaw_gain_1_s * yaw_error_rad;
   const double rp = w_sp.head<2>().norm();
   if (rp > max_roll_pitch_rate_rad_s_) w_sp.head<2>() *= max_roll_pitch_rate_rad_s_ / rp;
   w_sp.z() = std::clamp(w_sp.z(), -max_yaw_rate_rad_s_, max_yaw_rate_rad_s_);

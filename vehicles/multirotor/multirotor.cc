@@ -23,7 +23,7 @@ Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
     r.pivot_B = rc.tilt_pivot_m.value_or(rc.position_m);
     r.tilt_axis_B = rc.tilt_axis.normalized();
     r.thrust_per_density = rc.CalcThrustPerDensity();
-    r.torque_per_density_signed = (rc.spin == Spin::kCcw ? -1.0 : 1.0) * rc.CalcTorquePerDensity();
+    r.torque_per_density_signed = rc.CalcSignedTorquePerDensity();
     r.time_constant_s = rc.time_constant_s;
     if (rc.tiltable) {
       r.tilt_channel = tilt_channels++;
@@ -36,17 +36,10 @@ Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
   for (Rotor& r : rotors_) {
     if (r.tilt_channel >= 0) r.tilt_channel += static_cast<int>(rotors_.size());
   }
+  // The config's Validate (through CalcRigidBodyConfig) refused layouts the controller cannot fly.
   commands_.assign(rotors_.size() + static_cast<std::size_t>(tilt_channels), 0.0);
-  if (commands_.size() > static_cast<std::size_t>(engine::kMaxActuators) ||
-      !ControlAllocator::CanControl(CalcActuatorEffects(kReferenceDensity_kg_m3))) {
-    throw engine::InvalidField("rotors",
-                               "the rotors cannot control thrust, roll, pitch and yaw "
-                               "independently (or there are more than " +
-                                   std::to_string(engine::kMaxActuators) + " actuators)");
-  }
-  const auto effects = CalcActuatorEffects(kReferenceDensity_kg_m3);
   controller_.emplace(config_.controller, VehicleParameters{body().mass_kg(), body().inertia_B()},
-                      effects);
+                      CalcActuatorEffects(kReferenceDensity_kg_m3));
   allocated_tilt_rad_.assign(rotors_.size(), 0.0);
 }
 
@@ -54,10 +47,8 @@ std::vector<ActuatorEffect> Multirotor::CalcActuatorEffects(double air_density_k
   std::vector<ActuatorEffect> effects;
   effects.reserve(rotors_.size());
   for (const Rotor& r : rotors_) {
-    const Vec3 force = (r.thrust_per_density * air_density_kg_m3) * r.direction_B;
     effects.push_back(
-        {force, r.position_B.cross(force) +
-                    (r.torque_per_density_signed * air_density_kg_m3) * r.direction_B});
+        {air_density_kg_m3 * r.force_per_density_B, air_density_kg_m3 * r.torque_per_density_B});
   }
   return effects;
 }
@@ -132,9 +123,10 @@ void Multirotor::ApplyTilt(Rotor& r, double tilt_rad) {
 }
 
 void Multirotor::UpdateUnitWrench(Rotor& r) {
-  r.force_per_density_B = r.thrust_per_density * r.direction_B;
-  r.torque_per_density_B =
-      r.position_B.cross(r.force_per_density_B) + r.torque_per_density_signed * r.direction_B;
+  const ActuatorEffect e = CalcRotorEffectPerDensity(
+      r.position_B, r.direction_B, r.thrust_per_density, r.torque_per_density_signed);
+  r.force_per_density_B = e.force_B;
+  r.torque_per_density_B = e.torque_B;
 }
 
 engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& context) {

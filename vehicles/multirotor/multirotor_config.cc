@@ -1,5 +1,6 @@
 #include "vehicles/multirotor/multirotor_config.h"
 
+#include <algorithm>
 #include <string>
 
 namespace airis::vehicles {
@@ -18,11 +19,62 @@ std::vector<RotorConfig> ReferenceQuadXRotors() {
   return rotors;
 }
 
+namespace {
+
+// Refuses rotors the built-in controller cannot fly (Validate has checked each rotor).
+void RequireControllableRotors(const MultirotorConfig& config) {
+  const std::size_t n = config.rotors.size();
+  engine::Require(n >= 4, "rotors",
+                  "the flight controller needs at least 4 rotors to set thrust, roll, pitch and "
+                  "yaw independently (got " +
+                      std::to_string(n) + ")");
+  engine::Require(config.CalcActuatorCount() <= engine::kMaxActuators, "rotors",
+                  "at most " + std::to_string(engine::kMaxActuators) +
+                      " actuators (rotors plus tilt actuators; got " +
+                      std::to_string(config.CalcActuatorCount()) + ")");
+  const std::vector<ActuatorEffect> effects = config.CalcRotorEffectsPerDensity();
+  if (ControlAllocator::CanControl(effects)) return;
+  static constexpr const char* kAxes[] = {"thrust", "roll moment", "pitch moment", "yaw moment"};
+  const int axis = ControlAllocator::CalcUncontrolledAxis(effects);
+  const bool one_spin =
+      std::all_of(config.rotors.begin(), config.rotors.end(),
+                  [&](const RotorConfig& r) { return r.spin == config.rotors.front().spin; });
+  if (one_spin && axis == 3) {
+    const std::string spin = config.rotors.front().spin == Spin::kCcw ? "ccw" : "cw";
+    throw engine::InvalidField(
+        "rotors", "all " + std::to_string(n) + " rotors spin " + spin +
+                      ": their reaction torques add up, so no command sets the yaw moment on its "
+                      "own (half of them must spin the other way; got spin: " +
+                      spin + " on every rotor)");
+  }
+  throw engine::InvalidField("rotors", std::string("the rotors cannot set the ") + kAxes[axis] +
+                                           " independently of the rest (check position_frd_m, "
+                                           "thrust_direction_frd and spin)");
+}
+
+}  // namespace
+
+std::vector<ActuatorEffect> MultirotorConfig::CalcRotorEffectsPerDensity() const {
+  std::vector<ActuatorEffect> effects;
+  effects.reserve(rotors.size());
+  for (const RotorConfig& r : rotors) {
+    effects.push_back(CalcRotorEffectPerDensity(r.position_m, r.thrust_direction.normalized(),
+                                                r.CalcThrustPerDensity(),
+                                                r.CalcSignedTorquePerDensity()));
+  }
+  return effects;
+}
+
+int MultirotorConfig::CalcActuatorCount() const {
+  return static_cast<int>(
+      rotors.size() +
+      std::count_if(rotors.begin(), rotors.end(), [](const RotorConfig& r) { return r.tiltable; }));
+}
+
 void MultirotorConfig::Validate() const {
   engine::RequirePositive("mass_kg", mass_kg);
   engine::RequireNonNegative("motor_mass_kg", motor_mass_kg);
   for (int i = 0; i < 3; ++i) engine::RequirePositive("box_size_m", box_size_m[i]);
-  engine::Require(!rotors.empty(), "rotors", "needs at least one rotor");
   for (std::size_t i = 0; i < rotors.size(); ++i) {
     try {
       rotors[i].Validate();
@@ -30,6 +82,7 @@ void MultirotorConfig::Validate() const {
       throw engine::InvalidField("rotors[" + std::to_string(i) + "]." + e.field(), e.problem());
     }
   }
+  RequireControllableRotors(*this);
   if (!inertia_kg_m2) {
     engine::Require(motor_mass_kg * static_cast<double>(rotors.size()) < mass_kg, "motor_mass_kg",
                     "motors weigh as much as the whole vehicle (got " +

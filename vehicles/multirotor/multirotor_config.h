@@ -47,12 +47,20 @@ struct MultirotorConfig {
     v.Field("angular_drag_coefficient", angular_drag_coefficient, "drag coefficient for rotation");
     v.Field("restitution", restitution, "contact restitution [0, 1]");
     v.Field("friction", friction, "Coulomb friction coefficient");
-    v.Field("rotors", rotors, "the rotors (vertices)");
+    v.Field("rotors", rotors,
+            "the rotors (vertices), in actuator order; {INDEX: keys} changes one of the preset's");
     v.Field("controller", controller, "built-in flight controller gains and limits");
   }
-  /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, no rotors, or motors heavier
-  /// than the vehicle.
+  /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, motors heavier than the
+  /// vehicle, more actuators than engine::kMaxActuators, or rotors the built-in controller cannot
+  /// fly: fewer than 4, or (untilted) unable to set thrust, roll, pitch and yaw independently, such
+  /// as all spinning the same way (docs/vehicles.md).
   void Validate() const;
+
+  /// What each rotor does at command 1 per unit air density, untilted (CalcRotorEffectPerDensity).
+  std::vector<ActuatorEffect> CalcRotorEffectsPerDensity() const;
+  /// Actuators: one motor per rotor, plus one tilt actuator per tiltable rotor.
+  int CalcActuatorCount() const;
 
   /// The rigid body: mass, inertia (given or computed), box, drag and material. Validates first.
   engine::RigidBodyConfig CalcRigidBodyConfig() const;

@@ -43,4 +43,15 @@ double RotorConfig::CalcTorquePerDensity() const {
   return power_coefficient * n * n * std::pow(diameter_m, 5) / (2.0 * std::numbers::pi);
 }
 
+double RotorConfig::CalcSignedTorquePerDensity() const {
+  return (spin == Spin::kCcw ? -1.0 : 1.0) * CalcTorquePerDensity();
+}
+
+ActuatorEffect CalcRotorEffectPerDensity(const Vec3& position_B, const Vec3& direction_B,
+                                         double thrust_per_density,
+                                         double signed_torque_per_density) {
+  const Vec3 force_B = thrust_per_density * direction_B;
+  return {force_B, position_B.cross(force_B) + signed_torque_per_density * direction_B};
+}
+
 }  // namespace airis::vehicles

@@ -5,6 +5,7 @@
 
 #include "engine/core/config.h"
 #include "engine/core/frames.h"
+#include "vehicles/multirotor/control_allocator.h"
 
 namespace airis::vehicles {
 
@@ -71,6 +72,17 @@ struct RotorConfig {
   double CalcThrustPerDensity() const;
   /// tau_max / rho = C_pow n_max^2 D^5 / (2 pi) (N m per kg/m^3): reaction torque at command 1.
   double CalcTorquePerDensity() const;
+  /// The reaction torque about the thrust direction per unit air density at command 1 (N m per
+  /// kg/m^3), signed: it opposes the spin, so a CCW rotor's is negative.
+  double CalcSignedTorquePerDensity() const;
 };
+
+/// What a rotor at `position_B` (from the centre of mass, body FRD, m) thrusting along the unit
+/// vector `direction_B` does to the body at command 1 per unit air density: force F = k_T d and
+/// moment p x F + k_Q d about the centre of mass (k_T = CalcThrustPerDensity, k_Q =
+/// CalcSignedTorquePerDensity; paper 3.1). Multiply by the air density for newtons.
+ActuatorEffect CalcRotorEffectPerDensity(const Vec3& position_B, const Vec3& direction_B,
+                                         double thrust_per_density,
+                                         double signed_torque_per_density);
 
 }  // namespace airis::vehicles

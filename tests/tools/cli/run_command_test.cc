@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "engine/dataset/csv_reader.h"
 #include "tests/fixtures/temp_dir.h"
@@ -178,6 +179,29 @@ TEST(RunCommandTest, BadInputIsAClearErrorAndExitCodeTwo) {
   r = RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --realtime -2");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--realtime: must be > 0"), std::string::npos) << r.err;
+}
+
+TEST(RunCommandTest, AnAirframeTheControllerCannotFlyIsRefusedByRunAndBySceneCheck) {
+  // docs/vehicles.md, "What the flight controller can fly": one rotor, and rotors all spinning one
+  // way, are refused when the scene loads, so `scene check` says what `run` would.
+  const std::pair<const char*, const char*> refused[] = {
+      {"      rotors:\n        - {position_frd_m: [0, 0, 0], spin: ccw}\n",
+       ":5:7: vehicles[0].overrides.rotors: the flight controller needs at least 4 rotors"},
+      {"      rotors: {1: {spin: ccw}, 3: {spin: ccw}, 5: {spin: ccw}}\n",
+       ":5:7: vehicles[0].overrides.rotors: all 6 rotors spin ccw"},
+  };
+  for (const auto& [rotors, error] : refused) {
+    const std::string scene = WriteFile(
+        "airis_airframe.yaml",
+        std::string("vehicles:\n  - name: d\n    preset: hexa_x\n    overrides:\n") + rotors);
+    SCOPED_TRACE(rotors);
+    Result r = RunAiris("run " + scene + " --mission scenes/missions/city_orbit.yaml");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find(scene + error), std::string::npos) << r.err;
+    r = testing::RunAiris(&AddSceneCommand, "scene check " + scene);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find(scene + error), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

@@ -184,11 +184,13 @@ TEST(DatasetCaptureTest, ACaptureStepNamingACameraItsVehicleLacksIsRefused) {
       << other;
 }
 
-TEST(DatasetCaptureTest, ACaptureStepInTheTrackOfAVehicleWithoutCamerasIsRefused) {
+TEST(DatasetCaptureTest, ACaptureStepInTheTrackOfAVehicleWithoutCamerasOrLidarIsRefused) {
+  // (A vehicle with a lidar and no camera records its scans: lidar_dataset_test.cc.)
   const DatasetJobOptions o = Job("none", "vehicles:\n  c: {steps: [{capture: {}}]}\n");
   EXPECT_EQ(ErrorOf(o), o.mission +
-                            ":2:16: vehicles.c.steps[0].capture: vehicle 'c' has no camera to "
-                            "record (a capture step records the cameras of its track's vehicle)");
+                            ":2:16: vehicles.c.steps[0].capture: vehicle 'c' has no camera or "
+                            "lidar to record (a capture step records the cameras and lidars of its "
+                            "track's vehicle)");
 }
 
 }  // namespace

@@ -12,10 +12,10 @@ using engine::LogType;
 
 TEST(RecordLayoutTest, PacksTimeThenEachColumnInItsTypeWithoutPadding) {
   // GIVEN float64, float32, int64 and label columns
-  const RecordLayout layout({{"a_m", LogType::kFloat64, {}},
-                             {"b", LogType::kFloat32, {}},
-                             {"n", LogType::kInt64, {}},
-                             {"mode", LogType::kLabel, {}}});
+  const RecordLayout layout({{"a_m", LogType::kFloat64, {}, ""},
+                             {"b", LogType::kFloat32, {}, ""},
+                             {"n", LogType::kInt64, {}, ""},
+                             {"mode", LogType::kLabel, {}, ""}});
   ASSERT_EQ(layout.fields().size(), 5u);
   EXPECT_EQ(layout.fields()[0].name, "time_ns");
   EXPECT_EQ(layout.fields()[1].format, "<f8");

@@ -5,6 +5,8 @@
     frame = cam[0]            # dict: rgb (H, W, 3) uint8, depth_m (H, W) float32, class_id, ...
     imu = ds.stream("drone1.imu")   # structured array, columns as in the file
     torch_ds = cam.torch()    # a torch.utils.data.Dataset (needs PyTorch)
+    scan = ds.lidars["drone1.lidar"][0]   # dict: points (structured array), T_WS, time_ns, ...
+    xyz_W = ds.lidars["drone1.lidar"].world_points(0)   # (N, 3) world NED, motion distortion undone
 """
 
 import csv
@@ -13,7 +15,7 @@ import os
 
 import numpy as np
 
-__all__ = ["Dataset", "CameraFrames"]
+__all__ = ["Dataset", "CameraFrames", "LidarScans", "read_pcd"]
 
 
 def _read_png(path):
@@ -47,6 +49,97 @@ def _read_csv(path):
     for h, a in zip(header, arrays):
         out[h] = a
     return out
+
+
+_PCD_TYPES = {"F": "<f", "U": "<u", "I": "<i"}
+
+
+def read_pcd(path):
+    """A binary PCD file (airis's lidar scans) as a NumPy structured array, one field per PCD field."""
+    with open(path, "rb") as f:
+        data = f.read()
+    marker = b"DATA binary\n"
+    start = data.find(marker)
+    if start < 0:
+        raise ValueError(f"{path}: not a binary PCD file")
+    header = {}
+    for line in data[:start].decode("ascii").splitlines():
+        if line and not line.startswith("#"):
+            key, *values = line.split()
+            header[key] = values
+    dtype = np.dtype([(name, _PCD_TYPES[t] + size) for name, t, size in
+                      zip(header["FIELDS"], header["TYPE"], header["SIZE"])])
+    return np.frombuffer(data, dtype=dtype, count=int(header["POINTS"][0]),
+                         offset=start + len(marker))
+
+
+def _rotation(w, x, y, z):
+    """The rotation matrix of a unit quaternion."""
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def _exp_so3(r):
+    """Rotation matrices exp([r]x) of rotation vectors r (N, 3) (Rodrigues)."""
+    angle = np.linalg.norm(r, axis=1)
+    safe = np.where(angle > 1e-12, angle, 1.0)
+    k = r / safe[:, None]
+    K = np.zeros((len(r), 3, 3))
+    K[:, 0, 1], K[:, 0, 2], K[:, 1, 2] = -k[:, 2], k[:, 1], -k[:, 0]
+    K[:, 1, 0], K[:, 2, 0], K[:, 2, 1] = k[:, 2], -k[:, 1], k[:, 0]
+    s, c = np.sin(angle)[:, None, None], np.cos(angle)[:, None, None]
+    return np.eye(3)[None] + s * K + (1 - c) * (K @ K)
+
+
+class LidarScans:
+    """The written scans of one lidar: len(), [i] -> dict, world_points(i), poses, pattern.
+
+    Scan dict keys: index, time_ns, points (structured array of the PCD fields: x, y, z in the
+    sensor frame at each point's firing time, range_m, intensity, time_offset_s, ring, column,
+    instance_id, class_id), T_WS (4, 4) float64 sensor -> world NED at the scan time.
+    """
+
+    def __init__(self, root, manifest_entry):
+        self.name = manifest_entry["name"]
+        self.info = manifest_entry
+        self.dir = os.path.join(root, self.name)
+        self.poses = _read_csv(os.path.join(self.dir, "poses.csv"))
+
+    def __len__(self):
+        return len(self.poses)
+
+    def pose(self, i):
+        p = self.poses[i]
+        T = np.eye(4)
+        T[:3, :3] = _rotation(*(float(p[f"attitude_sensor_to_ned_{c}"]) for c in "wxyz"))
+        T[:3, 3] = [p["position_ned_x_m"], p["position_ned_y_m"], p["position_ned_z_m"]]
+        return T
+
+    def __getitem__(self, i):
+        if not -len(self) <= i < len(self):
+            raise IndexError(f"lidar '{self.name}' has {len(self)} scans (asked for {i})")
+        i = i % len(self)
+        index = int(self.poses[i]["scan"])
+        return {"index": index, "time_ns": int(self.poses[i]["time_ns"]), "T_WS": self.pose(i),
+                "points": read_pcd(os.path.join(self.dir, f"{index:06d}.pcd"))}
+
+    def world_points(self, i):
+        """Scan i's points in world NED (N, 3), each from the sensor pose at its firing time
+        (docs/dataset-format.md, "Lidar scans": constant velocity and angular velocity over the
+        sweep)."""
+        scan = self[i]
+        p = self.poses[i % len(self)]
+        pts = scan["points"]
+        xyz = np.stack([pts["x"], pts["y"], pts["z"]], axis=1).astype(np.float64)
+        dt = -pts["time_offset_s"].astype(np.float64)
+        v = np.array([p[f"velocity_ned_{a}_m_s"] for a in "xyz"], dtype=np.float64)
+        w = np.array([p[f"angular_velocity_sensor_{a}_rad_s"] for a in "xyz"], dtype=np.float64)
+        R_WS = scan["T_WS"][:3, :3]
+        R = R_WS[None] @ _exp_so3(-dt[:, None] * w[None])
+        origin = scan["T_WS"][:3, 3][None] - dt[:, None] * v[None]
+        return origin + np.einsum("nij,nj->ni", R, xyz)
 
 
 class CameraFrames:
@@ -154,7 +247,8 @@ def _torch_dataset(frames, keys):
 
 
 class Dataset:
-    """A dataset folder: manifest, labels, cameras (CameraFrames by name) and streams."""
+    """A dataset folder: manifest, labels, cameras (CameraFrames by name), lidars (LidarScans by
+    folder name, e.g. 'drone1.lidar') and streams."""
 
     def __init__(self, root):
         manifest = os.path.join(root, "manifest.json")
@@ -171,6 +265,7 @@ class Dataset:
         self.labels = json.load(open(labels)) if os.path.exists(labels) else {}
         self.classes = {c["id"]: c["name"] for c in self.labels.get("classes", [])}
         self.cameras = {c["name"]: CameraFrames(root, c) for c in self.manifest.get("cameras", [])}
+        self.lidars = {l["name"]: LidarScans(root, l) for l in self.manifest.get("lidars", [])}
 
     @property
     def streams(self):
@@ -193,4 +288,6 @@ class Dataset:
         return _read_csv(path)
 
     def __repr__(self):
-        return (f"<airis.Dataset {self.root!r}: {', '.join(f'{k} {len(v)} frames' for k, v in self.cameras.items())}>")
+        parts = [f"{k} {len(v)} frames" for k, v in self.cameras.items()]
+        parts += [f"{k} {len(v)} scans" for k, v in self.lidars.items()]
+        return f"<airis.Dataset {self.root!r}: {', '.join(parts)}>"
