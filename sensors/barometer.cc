@@ -12,7 +12,7 @@ const std::string kColumns[] = {"pressure_pa", "temperature_k", "altitude_m"};
 }  // namespace
 
 void BarometerConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("pressure_noise_pa", pressure_noise_pa);
   engine::RequireInRange("drift_sigma", drift_sigma, 0.0, 0.5);

@@ -13,7 +13,7 @@ const std::string kColumns[] = {"magnetic_field_sensor_x_gauss", "magnetic_field
 }  // namespace
 
 void MagnetometerConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("noise_gauss", noise_gauss);
   engine::RequireNonNegative("field_update_distance_m", field_update_distance_m);

@@ -13,7 +13,7 @@ const std::string kColumns[] = {"hit", "distance_m", "class_id", "instance_id"};
 }  // namespace
 
 void RangefinderConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("min_range_m", min_range_m);
   engine::RequirePositive("max_range_m", max_range_m);
