@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct Mission {
   bool abort_on_collision = true;  ///< a collision fails the mission
   std::vector<MissionStep> steps;
   std::string file;  ///< the mission file, for messages
+  /// Where a key of the file is (`vehicle`, `steps[2].goto.speed_m_s`): the deepest part present,
+  /// for mistakes found after reading (checks against the scene). Empty for missions made in code.
+  std::function<SourceLocation(const std::string& key)> locate;
 };
 
 }  // namespace airis::engine

@@ -44,7 +44,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   }
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
-  const std::size_t vehicle = job.MissionVehicle(mission);
+  const std::size_t vehicle = job.CheckMission(mission);
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
   const fs::path manifest_path = fs::path(o.out) / "manifest.json";
   nlohmann::json existing;

@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "engine/core/random.h"
 #include "engine/world/image_sensor.h"
+#include "scenes/mission_limits.h"
 #include "scenes/world_builder.h"
 
 namespace airis::tools {
@@ -14,10 +15,17 @@ scenes::Scene LoadSceneSource(const SceneSource& source) {
                              : scenes::LoadSceneFromString(source.text, source.path, options);
 }
 
-SimulationJob::SimulationJob(const SceneSource& source)
+SimulationJob::SimulationJob(const SceneSource& source) : SimulationJob(source, true) {}
+
+SimulationJob SimulationJob::WithoutCameras(const SceneSource& source) {
+  return SimulationJob(source, false);
+}
+
+SimulationJob::SimulationJob(const SceneSource& source, bool cameras)
     : wall_start_(std::chrono::steady_clock::now()), scene_(LoadSceneSource(source)) {
   simulation_ = std::make_unique<engine::Simulation>(
-      scenes::BuildWorld(scene_), engine::SimulationConfig{scene_.physics.rate_hz});
+      cameras ? scenes::BuildWorld(scene_) : scenes::BuildWorldWithoutCameras(scene_),
+      engine::SimulationConfig{scene_.physics.rate_hz});
 }
 
 double SimulationJob::wall_s() const {
@@ -31,18 +39,26 @@ std::size_t SimulationJob::MissionVehicle(const engine::Mission& mission) const 
   for (std::size_t i = 0; i < w.vehicle_count(); ++i) {
     names += (names.empty() ? "" : ", ") + w.vehicle(i).name();
   }
+  const engine::SourceLocation where =
+      mission.locate ? mission.locate("vehicle") : engine::SourceLocation{mission.file, 0, 0};
   if (w.vehicle_count() == 0) {
-    throw engine::ConfigError({mission.file, 0, 0}, "vehicle",
-                              "the scene has no vehicle to fly the mission");
+    throw engine::ConfigError(where, "vehicle",
+                              "the scene " + scene_.path + " has no vehicle to fly the mission");
   }
   if (mission.vehicle.empty()) return 0;
   const int index = w.FindVehicle(mission.vehicle);
   if (index < 0) {
     throw engine::ConfigError(
-        {mission.file, 0, 0}, "vehicle",
+        where, "vehicle",
         "no vehicle '" + mission.vehicle + "' in the scene (it has " + names + ")");
   }
   return static_cast<std::size_t>(index);
+}
+
+std::size_t SimulationJob::CheckMission(const engine::Mission& mission) const {
+  const std::size_t vehicle = MissionVehicle(mission);
+  scenes::CheckMissionInScene(mission, scene_, vehicle);
+  return vehicle;
 }
 
 void SimulationJob::DisableImageSensors() {
@@ -56,7 +72,7 @@ void SimulationJob::DisableImageSensors() {
 
 std::unique_ptr<engine::MissionSession> SimulationJob::StartMission(
     const engine::Mission& mission, engine::MissionSession::Callbacks callbacks) {
-  const std::size_t vehicle = MissionVehicle(mission);
+  const std::size_t vehicle = CheckMission(mission);
   return std::make_unique<engine::MissionSession>(
       simulation(), mission, vehicle, engine::RandomStreams(scene_.seed).Stream("mission"),
       std::move(callbacks));

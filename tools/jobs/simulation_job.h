@@ -76,6 +76,10 @@ class SimulationJob {
  public:
   /// Loads and builds. Throws ConfigError naming file, line and key for bad input.
   explicit SimulationJob(const SceneSource& source);
+  /// Loads and builds without a GL context: cameras are checked, not made (`airis scene check`:
+  /// what a run would refuse, this refuses). The simulation must not be stepped with cameras
+  /// expected.
+  static SimulationJob WithoutCameras(const SceneSource& source);
 
   const scenes::Scene& scene() const { return scene_; }
   engine::Simulation& simulation() { return *simulation_; }
@@ -86,13 +90,18 @@ class SimulationJob {
   /// Index of the vehicle that flies `mission`: the one it names, or the scene's first. Throws
   /// ConfigError naming the mission file when there is none (listing the scene's vehicles).
   std::size_t MissionVehicle(const engine::Mission& mission) const;
+  /// Checks `mission` against this job's scene before the flight (scenes::CheckMissionInScene:
+  /// targets within the scene, speeds within the vehicle's, cameras that exist, durations within
+  /// the limits) and returns its vehicle (MissionVehicle). Throws ConfigError at each offending
+  /// key of the mission file.
+  std::size_t CheckMission(const engine::Mission& mission) const;
 
   /// Switches off every image sensor (a job that records no images does not render).
   void DisableImageSensors();
 
   /// A session that flies `mission` with its vehicle in this job's simulation when run
   /// (MissionSession::Run), drawing from the scene seed's "mission" stream; FlyMission runs one.
-  /// For front ends that step the flight themselves (the Python API). Throws as MissionVehicle.
+  /// For front ends that step the flight themselves (the Python API). Throws as CheckMission.
   std::unique_ptr<engine::MissionSession> StartMission(
       const engine::Mission& mission, engine::MissionSession::Callbacks callbacks = {});
 
@@ -105,6 +114,8 @@ class SimulationJob {
   double wall_s() const;
 
  private:
+  SimulationJob(const SceneSource& source, bool cameras);
+
   std::chrono::steady_clock::time_point wall_start_;
   scenes::Scene scene_;
   std::unique_ptr<engine::Simulation> simulation_;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/mission/steps/step_checks.h"
+
 namespace airis::engine {
 namespace {
 
@@ -41,8 +43,14 @@ std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_
 }  // namespace
 
 void TakeoffStep::Validate() const {
+  RequireInRange("height_above_start_m", altitude_m, 0.0, kMaxFlightHeight_m);
   RequirePositive("height_above_start_m", altitude_m);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void TakeoffStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
+  RequireInRegion("height_above_start_m", limits,
+                  Vec3(plan.position_W.x(), plan.position_W.y(), plan.home_W.z() - altitude_m));
 }
 
 double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
@@ -67,7 +75,7 @@ std::unique_ptr<ActiveStep> TakeoffStep::Start(const StepContext& c, const Vehic
 void GotoStep::Validate() const {
   Require(position_ned_m.has_value() != geodetic.has_value(), "position_ned_m",
           "give exactly one of position_ned_m and geodetic");
-  if (position_ned_m) RequireFinite("position_ned_m", *position_ned_m);
+  if (position_ned_m) RequireWithinWorld("position_ned_m", *position_ned_m);
   if (geodetic) {
     RequireInRange("geodetic[0]", (*geodetic)[0], -90.0, 90.0);
     RequireInRange("geodetic[1]", (*geodetic)[1], -180.0, 180.0);
@@ -76,7 +84,13 @@ void GotoStep::Validate() const {
   RequirePositive("speed_m_s", speed_m_s);
   if (yaw_deg) RequireInRange("yaw_deg", *yaw_deg, -360.0, 360.0);
   RequirePositive("acceptance_radius_m", acceptance_radius_m);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void GotoStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
+  RequireInRegion(position_ned_m ? "position_ned_m" : "geodetic", limits,
+                  CalcTarget_W(*plan.frame));
+  RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 
 Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame) const {
@@ -110,8 +124,8 @@ std::unique_ptr<ActiveStep> GotoStep::Start(const StepContext& c, const VehicleC
 }
 
 void HoverStep::Validate() const {
-  RequireNonNegative("duration_s", duration_s);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("duration_s", duration_s);
+  RequireDuration("timeout_s", timeout_s);
 }
 
 double HoverStep::EstimateDuration_s(StepPlan&) const { return duration_s; }
@@ -126,7 +140,7 @@ std::unique_ptr<ActiveStep> HoverStep::Start(const StepContext& c, const Vehicle
 
 void YawStep::Validate() const {
   RequireInRange("yaw_deg", yaw_deg, -360.0, 360.0);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
 }
 
 double YawStep::EstimateDuration_s(StepPlan&) const {
@@ -143,7 +157,7 @@ std::unique_ptr<ActiveStep> YawStep::Start(const StepContext&, const VehicleComm
   });
 }
 
-void LandStep::Validate() const { RequireNonNegative("timeout_s", timeout_s); }
+void LandStep::Validate() const { RequireDuration("timeout_s", timeout_s); }
 
 double LandStep::EstimateDuration_s(StepPlan& plan) const {
   const double s = std::abs(plan.home_W.z() - plan.position_W.z());  // at 1 m/s

@@ -24,6 +24,8 @@ struct TakeoffStep {
             "fail the mission if not done after this long (s); 0 = automatic");
   }
   void Validate() const;
+  /// The height above the start stays within the flight region.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };
@@ -48,6 +50,8 @@ struct GotoStep {
     v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
   }
   void Validate() const;
+  /// The target lies in the flight region, above the ground; the speed is the vehicle's.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   /// The target in world NED (m).
   Vec3 CalcTarget_W(const LocalNedFrame& frame) const;
   double EstimateDuration_s(StepPlan& plan) const;
