@@ -115,7 +115,10 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
   cmd->callback([a, cmd, airframe, &exit_code] {
     if (airframe->parsed()) return;
     a->realtime_given = cmd->count("--realtime") > 0;
-    exit_code = RunReportingErrors([&] { return Serve(*a); });
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*cmd);
+      return Serve(*a);
+    });
   });
 }
 

@@ -11,18 +11,21 @@
 #include <string>
 #include <vector>
 
+#include "scenes/mission_file.h"
 #include "scenes/scene.h"
 #include "scenes/scene_schema.h"
 #include "scenes/scene_stats.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/jobs/preview_render.h"
+#include "tools/jobs/simulation_job.h"
 
 namespace airis::tools {
 namespace {
 
 struct SceneOptions {
   std::string file;
+  std::string mission;  // check: a mission to check against the scene
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -52,8 +55,7 @@ std::string ClassList(const scenes::SceneStats& stats) {
   return out;
 }
 
-void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
-  const scenes::Scene& s = loaded.scene;
+void PrintSummary(const scenes::Scene& s, double load_ms, const scenes::SceneStats& stats) {
   std::printf("scene       %s (%s, %zu file%s)\n", s.name.c_str(), s.path.c_str(), s.files.size(),
               s.files.size() == 1 ? "" : "s");
   std::printf("seed        %llu\n", static_cast<unsigned long long>(s.seed));
@@ -88,13 +90,23 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
   }
   std::printf("memory      %.2f MiB (static scene)\n",
               static_cast<double>(stats.memory_bytes) / (1024.0 * 1024.0));
-  std::printf("load time   %.1f ms\n", loaded.load_ms);
+  std::printf("load time   %.1f ms\n", load_ms);
 }
 
 int RunCheck(const SceneOptions& options) {
-  const Loaded loaded = Load(options.file);
-  const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
-  PrintSummary(loaded, stats);
+  // Everything a run builds (world, vehicles, sensors; cameras short of a GL context) and the
+  // mission's checks against it, so that what passes here is what a run accepts.
+  const auto start = std::chrono::steady_clock::now();
+  SceneSource source;
+  source.path = options.file;
+  const SimulationJob job = SimulationJob::WithoutCameras(source);
+  if (!options.mission.empty()) job.CheckMission(scenes::LoadMissionFile(options.mission));
+  const double load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  PrintSummary(job.scene(), load_ms, scenes::CalcSceneStats(job.scene()));
+  if (!options.mission.empty()) {
+    std::printf("ok          %s flies in it\n", options.mission.c_str());
+  }
   std::printf("ok          %s is valid\n", options.file.c_str());
   return 0;
 }
@@ -103,7 +115,7 @@ int RunStats(const SceneOptions& options) {
   const Loaded loaded = Load(options.file);
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   if (!options.json) {
-    PrintSummary(loaded, stats);
+    PrintSummary(loaded.scene, loaded.load_ms, stats);
     return 0;
   }
   nlohmann::json out;
@@ -179,19 +191,29 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   cmd->require_subcommand(1);
   auto options = std::make_shared<SceneOptions>();
 
-  CLI::App* check =
-      cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
+  CLI::App* check = cmd->add_subcommand(
+      "check",
+      "Validate a scene as a run would (and a mission in it); print a summary, or the errors and "
+      "exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
-  check->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunCheck(*options); });
+  check->add_option("--mission", options->mission, "mission file (YAML) to check in the scene")
+      ->type_name("FILE");
+  check->callback([options, check, &exit_code] {
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*check);
+      return RunCheck(*options);
+    });
   });
 
   CLI::App* stats = cmd->add_subcommand(
       "stats", "Objects per class, triangles, meshes, instances, bounds, memory and load time");
   stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
   stats->add_flag("--json", options->json, "print one JSON object instead of text");
-  stats->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunStats(*options); });
+  stats->callback([options, stats, &exit_code] {
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*stats);
+      return RunStats(*options);
+    });
   });
 
   CLI::App* schema =
@@ -206,8 +228,11 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   preview->add_option("--pose", options->pose,
                       "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
   preview->add_option("--out", options->out, "PNG to write (default preview.png)");
-  preview->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunPreview(*options); });
+  preview->callback([options, preview, &exit_code] {
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*preview);
+      return RunPreview(*options);
+    });
   });
 }
 

@@ -11,8 +11,8 @@ namespace airis::tools {
 
 Px4JobResult RunPx4Job(const Px4JobOptions& o,
                        const std::function<void(const JobProgress&)>& progress) {
-  CheckPacingOptions(o.realtime, o.truth_rate_hz);
   SimulationJob job(o.scene);
+  CheckPacingOptions(o.realtime, o.truth_rate_hz, job.scene().physics.rate_hz, o.until_ns);
   job.DisableImageSensors();
   const std::vector<AttachedAutopilot> px4 = AttachAutopilots(job, o.log);
   if (px4.empty()) {
