@@ -1,6 +1,8 @@
 #include "scenes/mission_limits.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <vector>
 
 #include "engine/core/limits.h"
 #include "engine/mission/mission_check.h"
@@ -62,12 +64,14 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
   limits.has_ground = scene.has_ground;
   limits.max_speed_m_s = scene.vehicles.at(vehicle).spec->CalcMaxSpeed_m_s();
   limits.physics_rate_hz = scene.physics.rate_hz;
-  for (const VehicleDescription& v : scene.vehicles) {
-    for (const SensorDescription& s : v.sensors) {
-      for (std::string& name : s.spec->ImageStreamNames(s.name)) {
-        limits.cameras.push_back(std::move(name));
-      }
+  // A capture step names cameras of its own vehicle: a camera (rig) or one of its image streams.
+  for (const SensorDescription& s : scene.vehicles.at(vehicle).sensors) {
+    std::vector<std::string> streams = s.spec->ImageStreamNames(s.name);
+    if (streams.empty()) continue;
+    if (std::find(streams.begin(), streams.end(), s.name) == streams.end()) {
+      limits.cameras.push_back(s.name);
     }
+    for (std::string& name : streams) limits.cameras.push_back(std::move(name));
   }
   const engine::StaticScene* statics = &scene.static_scene;
   limits.inside_object = [statics](const Eigen::AlignedBox3d& box) {
@@ -79,10 +83,13 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
   return limits;
 }
 
-void CheckMissionInScene(const engine::Mission& mission, const Scene& scene, std::size_t vehicle) {
-  const engine::LocalNedFrame frame(scene.origin);
-  engine::CheckMission(mission, CalcMissionLimits(scene, vehicle),
-                       scene.vehicles.at(vehicle).start.p_W, frame);
+void CheckMissionInScene(const engine::Mission& mission, const Scene& scene,
+                         std::span<const std::size_t> vehicles) {
+  std::vector<engine::TrackLimits> tracks;
+  for (const std::size_t v : vehicles) {
+    tracks.push_back({CalcMissionLimits(scene, v), scene.vehicles.at(v).start.p_W});
+  }
+  engine::CheckMission(mission, tracks, engine::LocalNedFrame(scene.origin));
 }
 
 }  // namespace airis::scenes

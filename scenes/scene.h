@@ -18,6 +18,7 @@
 #include "engine/physics/rigid_body_state.h"
 #include "engine/scene/static_scene.h"
 #include "engine/world/world.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/sensor_spec.h"
 #include "scenes/vehicle_spec.h"
 
@@ -77,6 +78,8 @@ struct Scene {
   bool has_ground = false;  ///< a ground plane at z = 0 (`ground.enabled`)
   std::vector<VehicleDescription> vehicles;
   std::vector<GeneratedSummary> generated;
+  /// The overrides it was loaded with (SceneLoadOptions): with `files`, what made this scene.
+  std::vector<SceneOverride> overrides;
 };
 
 /// What a loader applies over the file's own settings.
@@ -84,6 +87,9 @@ struct SceneLoadOptions {
   /// Replaces `scene.seed` before the generators draw from it, so the scene built is the one of
   /// this seed (a dataset's manifest then reproduces it).
   std::optional<std::uint64_t> seed;
+  /// Keys of the scene document replaced before it is validated and built (`--set`;
+  /// ApplySceneOverrides). Errors their values cause name them.
+  std::vector<SceneOverride> overrides = {};
 };
 
 /// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and

@@ -11,11 +11,13 @@
 #include "engine/core/random.h"
 #include "engine/render/texture_file.h"
 #include "engine/scene/static_scene_builder.h"
+#include "engine/world/image_sensor.h"
 #include "scenes/builtin_classes.h"
 #include "scenes/generators.h"
 #include "scenes/mesh_loader.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/vehicle_kinds.h"
 
 namespace airis::scenes {
@@ -81,6 +83,7 @@ class SceneAssembler {
       errors.Try([&] { s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled)); });
     }
     errors.ThrowIfAny();
+    CheckDatasetCameraNames(s.vehicles);
     s.static_scene = builder_.Finish();
     s.files.insert(s.files.end(), inputs_.begin(), inputs_.end());
     return s;
@@ -325,6 +328,48 @@ class SceneAssembler {
     return summary;
   }
 
+  /// The names datasets give image streams (engine::CalcDatasetNamePrefixes: a name another
+  /// vehicle also uses is prefixed with the vehicle's) are unique in the scene.
+  void CheckDatasetCameraNames(const std::vector<VehicleDescription>& vehicles) const {
+    struct Owner {
+      std::size_t vehicle = 0;
+      std::size_t sensor = 0;
+    };
+    std::vector<engine::ImageSensorNames> sensors;
+    std::vector<Owner> owners;
+    for (std::size_t v = 0; v < vehicles.size(); ++v) {
+      for (std::size_t i = 0; i < vehicles[v].sensors.size(); ++i) {
+        const SensorDescription& s = vehicles[v].sensors[i];
+        std::vector<std::string> streams = s.spec->ImageStreamNames(s.name);
+        if (streams.empty()) continue;
+        sensors.push_back({vehicles[v].name, s.name, std::move(streams)});
+        owners.push_back({v, i});
+      }
+    }
+    const std::vector<std::string> prefixes = engine::CalcDatasetNamePrefixes(sensors);
+    struct Taken {
+      std::string name;    // in datasets
+      std::string stream;  // on its vehicle
+      std::size_t sensor;  // index in `sensors`
+    };
+    std::vector<Taken> taken;
+    for (std::size_t k = 0; k < sensors.size(); ++k) {
+      for (const std::string& stream : sensors[k].streams) {
+        const std::string name = prefixes[k] + stream;
+        for (const Taken& t : taken) {
+          if (t.name != name) continue;
+          doc_.vehicles[owners[k].vehicle].Fail(
+              "sensors[" + std::to_string(owners[k].sensor) + "].name",
+              "camera '" + stream + "' and camera '" + t.stream + "' of vehicle '" +
+                  sensors[t.sensor].vehicle + "' would share the dataset name '" + name +
+                  "' (a camera name that several vehicles use becomes <vehicle>_<camera>); "
+                  "rename one");
+        }
+        taken.push_back({name, stream, k});
+      }
+    }
+  }
+
   VehicleDescription AddVehicle(const Sourced<VehicleEntryConfig>& entry,
                                 const std::vector<VehicleDescription>& earlier,
                                 bool has_ground) const {
@@ -362,24 +407,14 @@ class SceneAssembler {
         }
       }
       v.sensors.push_back({e.name, e.spec});
-      // Image streams become dataset folders: their names are unique in the scene and are none
-      // of the dataset's own folders.
+      // Image streams become dataset folders: their names are unique on the vehicle and are none
+      // of the dataset's own folders (CheckDatasetCameraNames: and unique in the scene).
       for (const std::string& stream : e.spec->ImageStreamNames(e.name)) {
         const std::string key = "sensors[" + std::to_string(i) + "].name";
         for (const char* reserved : kReservedStreamNames) {
           if (stream == reserved) {
             entry.Fail(key, "camera '" + stream + "' would share its folder with the dataset's '" +
                                 reserved + "/' (name it otherwise)");
-          }
-        }
-        for (const auto& other : earlier) {
-          for (const auto& s : other.sensors) {
-            for (const std::string& taken : s.spec->ImageStreamNames(s.name)) {
-              if (taken == stream) {
-                entry.Fail(key, "camera '" + stream + "' is also a camera of vehicle '" +
-                                    other.name + "': dataset cameras need unique names");
-              }
-            }
           }
         }
         for (const auto& s : v.sensors) {
@@ -537,13 +572,30 @@ void SolarAngles(double latitude_rad, double decimal_year, double hours, double*
   *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
 }
 
+namespace {
+
+// The document with the options' overrides applied, assembled; an error that an override's value
+// causes while assembling (a vehicle moved into a building) names the override.
+Scene Load(SceneDocument doc, const SceneLoadOptions& options) {
+  const AppliedSceneOverrides applied = ApplySceneOverrides(&doc, options.overrides);
+  try {
+    Scene s = SceneAssembler(std::move(doc), options).Assemble();
+    s.overrides = options.overrides;
+    return s;
+  } catch (const engine::ConfigError& e) {
+    applied.Rethrow(e);
+  }
+}
+
+}  // namespace
+
 Scene LoadScene(const std::string& path, const SceneLoadOptions& options) {
-  return SceneAssembler(ReadSceneDocument(path), options).Assemble();
+  return Load(ReadSceneDocument(path), options);
 }
 
 Scene LoadSceneFromString(const std::string& text, const std::string& path,
                           const SceneLoadOptions& options) {
-  return SceneAssembler(ReadSceneDocumentFromString(text, path), options).Assemble();
+  return Load(ReadSceneDocumentFromString(text, path), options);
 }
 
 }  // namespace airis::scenes

@@ -169,6 +169,10 @@ class YamlReader {
     }
   }
 
+  /// Finds `key` in map `node`: sets its value and its key's mark; false when absent.
+  static bool FindKey(const YAML::Node& node, std::string_view key, YAML::Node* value,
+                      YAML::Mark* mark);
+
   /// Short description of a node's kind for "got ..." ("a list", "a map", "nothing", "'text'"
   /// cut to engine::kMaxQuotedChars).
   static std::string Describe(const YAML::Node& node);
@@ -206,9 +210,6 @@ class YamlReader {
   void RejectUnknownKeys(
       const YAML::Node& node, const std::string& key_path, const std::vector<std::string>& known,
       const std::vector<std::pair<std::string, std::string>>& renamed = {}) const;
-  /// Index of `key` in map `node` and its key mark, or false.
-  static bool FindKey(const YAML::Node& node, std::string_view key, YAML::Node* value,
-                      YAML::Mark* mark);
   /// Throws ConfigError unless a list of `size` entries is within kMaxListEntries.
   void RequireListSize(std::size_t size, const YAML::Mark& mark, const std::string& key_path) const;
   /// Throws ConfigError unless `text` is UTF-8.

@@ -19,12 +19,13 @@ namespace airis::engine {
 
 struct CaptureStep;
 
-/// What steps act on outside the vehicle's controller: recording, wind, teleporting. Implemented by
-/// the program running the mission (a job's MissionSession).
+/// What steps act on outside the vehicle's controller: recording, wind, teleporting, the other
+/// tracks of the mission. Implemented by the program running the mission (a MissionSession gives
+/// each track its own).
 class MissionHost {
  public:
   virtual ~MissionHost() = default;
-  /// Starts or stops recording (capture step).
+  /// Starts or stops recording of this track's vehicle's cameras (capture step).
   virtual void SetCapture(const CaptureStep& capture) = 0;
   /// Replaces the mean wind (set_wind step).
   virtual void SetWind(const Vec3& velocity_ned_m_s) = 0;
@@ -34,6 +35,10 @@ class MissionHost {
   virtual void HoldVehicleAt(const RigidBodyState& pose, int frame_index) = 0;
   /// Ends HoldVehicleAt: the vehicle is simulated again.
   virtual void ReleaseVehicle() = 0;
+  /// This track waits at barrier `label` (barrier step): true once every track the barrier names
+  /// has reached it (they are released on the same tick); until then `waiting_for` is set to the
+  /// vehicles not there yet ("drone2, drone3").
+  virtual bool ArriveAtBarrier(const std::string& label, std::string* waiting_for) = 0;
 };
 
 /// Where a step begins, for planning before the flight (duration estimates). A step moves
@@ -50,10 +55,11 @@ struct MissionLimits {
   /// Where the vehicle may be sent, world NED (m): the scene's objects, ground and vehicle starts
   /// with a margin around them, from kMaxFlightHeight_m above the origin down to the ground.
   Eigen::AlignedBox3d region_W;
-  bool has_ground = false;           ///< a ground plane at z = 0 (nothing below it can be reached)
-  double max_speed_m_s = 0.0;        ///< the vehicle's top speed (its controller's limit)
-  double physics_rate_hz = 0.0;      ///< the highest rate a capture may ask for
-  std::vector<std::string> cameras;  ///< image streams of the scene (capture's names)
+  bool has_ground = false;       ///< a ground plane at z = 0 (nothing below it can be reached)
+  double max_speed_m_s = 0.0;    ///< the vehicle's top speed (its controller's limit)
+  double physics_rate_hz = 0.0;  ///< the highest rate a capture may ask for
+  /// The names a capture step may give: the track's vehicle's cameras and their image streams.
+  std::vector<std::string> cameras;
   /// True when the box (world NED) lies entirely inside one solid object of the scene.
   std::function<bool(const Eigen::AlignedBox3d&)> inside_object;
 };
@@ -80,6 +86,9 @@ class ActiveStep {
   /// Distance between the vehicle and a moving reference (path, survey, orbit), once it moved; 0
   /// for steps without one. The runner reports the largest as the mission's tracking error.
   virtual double tracking_error_m() const { return 0.0; }
+  /// What is left undone, for the message when the step times out with the vehicle at `state`
+  /// (default: "12.31 m from its target", the distance to target_W).
+  virtual std::string DescribeUnfinished(const RigidBodyState& state) const;
 
   /// Nominal duration from where the step began (distance / speed, ...), for the automatic timeout.
   double nominal_s = 0.0;
@@ -106,7 +115,7 @@ class MissionStepSpec {
   virtual double EstimateDuration_s(StepPlan& plan) const = 0;
   /// Throws InvalidField (a field of the step) when the step cannot be flown within `limits`
   /// starting at `plan` (targets outside the region or under the ground, speeds beyond the
-  /// vehicle's, names of cameras the scene lacks). Kinds without scene-dependent settings accept
+  /// vehicle's, names of cameras the vehicle lacks). Kinds without scene-dependent settings accept
   /// everything.
   virtual void Check(const MissionLimits& limits, const StepPlan& plan) const = 0;
   /// Starts the step. `hold` holds the previous step's target (or where the vehicle is, when the

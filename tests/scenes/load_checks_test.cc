@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "scenes/limits_doc.h"
 #include "scenes/mission_file.h"
@@ -99,7 +100,8 @@ class ExampleMissionTest : public ::testing::TestWithParam<ExampleFlight> {};
 TEST_P(ExampleMissionTest, PassesTheChecksBeforeTheFlight) {
   const Scene scene = LoadScene(GetParam().scene);
   const engine::Mission mission = LoadMissionFile(GetParam().mission);
-  EXPECT_NO_THROW(CheckMissionInScene(mission, scene, 0));
+  const std::vector<std::size_t> first_vehicle(mission.tracks.size(), 0);
+  EXPECT_NO_THROW(CheckMissionInScene(mission, scene, first_vehicle));
 }
 
 INSTANTIATE_TEST_SUITE_P(

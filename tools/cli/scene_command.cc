@@ -13,6 +13,7 @@
 
 #include "scenes/mission_file.h"
 #include "scenes/scene.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/scene_schema.h"
 #include "scenes/scene_stats.h"
 #include "tools/cli/cli_util.h"
@@ -25,7 +26,8 @@ namespace {
 
 struct SceneOptions {
   std::string file;
-  std::string mission;  // check: a mission to check against the scene
+  std::string mission;                 // check: a mission to check against the scene
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -37,10 +39,17 @@ struct Loaded {
   double load_ms = 0.0;
 };
 
-Loaded Load(const std::string& file) {
+// The scene file with the options' overrides.
+scenes::Scene LoadWithOverrides(const SceneOptions& o) {
+  scenes::SceneLoadOptions load;
+  load.overrides = scenes::ParseSceneOverrides(o.overrides);
+  return scenes::LoadScene(o.file, load);
+}
+
+Loaded Load(const SceneOptions& o) {
   // Wall time here is a report to the user, never an input to the simulation.
   const auto start = std::chrono::steady_clock::now();
-  Loaded out{scenes::LoadScene(file), 0.0};
+  Loaded out{LoadWithOverrides(o), 0.0};
   out.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return out;
@@ -59,6 +68,7 @@ void PrintSummary(const scenes::Scene& s, double load_ms, const scenes::SceneSta
   std::printf("scene       %s (%s, %zu file%s)\n", s.name.c_str(), s.path.c_str(), s.files.size(),
               s.files.size() == 1 ? "" : "s");
   std::printf("seed        %llu\n", static_cast<unsigned long long>(s.seed));
+  for (const auto& o : s.overrides) std::printf("set         %s\n", o.text().c_str());
   std::printf("origin      %.6f N, %.6f E, %.1f m\n", engine::RadToDeg(s.origin.latitude_rad),
               engine::RadToDeg(s.origin.longitude_rad), s.origin.altitude_m);
   std::printf("objects     %zu (%s)\n", stats.objects, ClassList(stats).c_str());
@@ -99,6 +109,7 @@ int RunCheck(const SceneOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SceneSource source;
   source.path = options.file;
+  source.overrides = scenes::ParseSceneOverrides(options.overrides);
   const SimulationJob job = SimulationJob::WithoutCameras(source);
   if (!options.mission.empty()) job.CheckMission(scenes::LoadMissionFile(options.mission));
   const double load_ms =
@@ -112,7 +123,7 @@ int RunCheck(const SceneOptions& options) {
 }
 
 int RunStats(const SceneOptions& options) {
-  const Loaded loaded = Load(options.file);
+  const Loaded loaded = Load(options);
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   if (!options.json) {
     PrintSummary(loaded.scene, loaded.load_ms, stats);
@@ -123,6 +134,7 @@ int RunStats(const SceneOptions& options) {
   out["file"] = loaded.scene.path;
   out["files"] = loaded.scene.files;
   out["seed"] = loaded.scene.seed;
+  out["overrides"] = scenes::SceneOverrideTexts(loaded.scene.overrides);
   out["objects"] = stats.objects;
   out["instances"] = stats.objects;
   out["models"] = stats.models;
@@ -174,10 +186,11 @@ int RunPreview(const SceneOptions& o) {
     // The camera as mounted on its vehicle at the vehicle's start pose, with its own intrinsics.
     SceneSource source;
     source.path = o.file;
+    source.overrides = scenes::ParseSceneOverrides(o.overrides);
     const SimulationJob job(source);
     r = RenderPreviewPng(job.world().scene(), PreviewOfImageStream(job, o.camera), o.out);
   } else {
-    r = RenderPreviewPng(scenes::LoadScene(o.file).static_scene, preview, o.out);
+    r = RenderPreviewPng(LoadWithOverrides(o).static_scene, preview, o.out);
   }
   std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
               o.out.c_str(), r.triangles, r.gl_renderer.c_str());
@@ -198,6 +211,7 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
   check->add_option("--mission", options->mission, "mission file (YAML) to check in the scene")
       ->type_name("FILE");
+  AddSceneOverrideOption(check, options->overrides);
   check->callback([options, check, &exit_code] {
     exit_code = RunReportingErrors([&] {
       RefuseEmptyValues(*check);
@@ -209,6 +223,7 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
       "stats", "Objects per class, triangles, meshes, instances, bounds, memory and load time");
   stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
   stats->add_flag("--json", options->json, "print one JSON object instead of text");
+  AddSceneOverrideOption(stats, options->overrides);
   stats->callback([options, stats, &exit_code] {
     exit_code = RunReportingErrors([&] {
       RefuseEmptyValues(*stats);
@@ -228,6 +243,7 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   preview->add_option("--pose", options->pose,
                       "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
   preview->add_option("--out", options->out, "PNG to write (default preview.png)");
+  AddSceneOverrideOption(preview, options->overrides);
   preview->callback([options, preview, &exit_code] {
     exit_code = RunReportingErrors([&] {
       RefuseEmptyValues(*preview);

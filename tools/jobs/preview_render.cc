@@ -98,14 +98,28 @@ PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOp
 
 PreviewOptions PreviewOfImageStream(const SimulationJob& job, const std::string& name) {
   const engine::World& world = job.world();
-  std::string names;
+  // Cameras go by their dataset names: a name two vehicles use is prefixed with the vehicle's.
+  std::vector<engine::ImageSensorNames> sensors;
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& sensor : world.sensors(v)) {
       const engine::ImageSensor* image = sensor->image();
       if (!image) continue;
+      sensors.push_back({world.vehicle(v).name(), image->name(), {}});
+      for (const engine::ImageStream& s : image->streams())
+        sensors.back().streams.push_back(s.name);
+    }
+  }
+  const std::vector<std::string> prefixes = engine::CalcDatasetNamePrefixes(sensors);
+  std::string names;
+  std::size_t k = 0;
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    for (const auto& sensor : world.sensors(v)) {
+      const engine::ImageSensor* image = sensor->image();
+      if (!image) continue;
+      const std::string& prefix = prefixes[k++];
       for (const engine::ImageStream& stream : image->streams()) {
-        names += (names.empty() ? "" : ", ") + stream.name;
-        if (stream.name != name) continue;
+        names += (names.empty() ? "" : ", ") + prefix + stream.name;
+        if (prefix + stream.name != name) continue;
         PreviewOptions preview;
         preview.T_WC = engine::CalcImageStreamPose(stream, &world.vehicle(v).state());
         preview.intrinsics = stream.intrinsics;

@@ -45,7 +45,9 @@ Eigen::Isometry3d CalcBirdsEyePose(const engine::StaticScene& scene, double hfov
                                    double aspect);
 
 /// The preview of image stream `name` (a camera's name, or a stereo eye's `<name>_left` /
-/// `<name>_right`, as datasets name them) from its vehicle's start pose, with its own intrinsics.
+/// `<name>_right`, as datasets name them: prefixed with its vehicle's name when another vehicle
+/// has a camera of the same name, engine::CalcDatasetNamePrefixes) from its vehicle's start pose,
+/// with its own intrinsics.
 /// Throws ConfigError("--camera") naming the streams the scene has when there is no such stream.
 PreviewOptions PreviewOfImageStream(const SimulationJob& job, const std::string& name);
 

@@ -31,14 +31,13 @@ RunJobResult RunMissionJob(const RunJobOptions& o,
     if (o.realtime) pacer.WaitFor(now_ns);
   };
   flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
-    if (telemetry) telemetry->RecordMissionEvent(e.time_ns, e.step_index, e.step_kind, e.what);
+    if (telemetry) {
+      telemetry->RecordMissionEvent(e.time_ns, e.vehicle, e.step_index, e.step_kind, e.what);
+    }
   };
   RunJobResult r;
   r.mission = job.FlyMission(mission, flight);
-  if (telemetry) {
-    telemetry->Close();
-    r.collisions = telemetry->collision_count();
-  }
+  if (telemetry) telemetry->Close();
   r.wall_s = job.wall_s();
   return r;
 }

@@ -192,8 +192,8 @@ void SurveyStep::Validate() const {
   // A survey of nothing would "succeed" without flying.
   Require(CalcPolygonArea_m2(polygon_ne_m) > 0.0, "polygon_ne_m",
           "the corners enclose no area (equal, or on one line): nothing to survey");
-  RequireInRange("height_above_start_m", altitude_m, 0.0, kMaxFlightHeight_m);
-  RequirePositive("height_above_start_m", altitude_m);
+  RequireInRange("height_above_start_m", height_above_start_m, 0.0, kMaxFlightHeight_m);
+  RequirePositive("height_above_start_m", height_above_start_m);
   RequirePositive("spacing_m", spacing_m);
   RequireInRange("heading_deg", heading_deg, -360.0, 360.0);
   const double lines = CalcPolygonWidth_m(polygon_ne_m, DegToRad(heading_deg)) / spacing_m;
@@ -208,8 +208,9 @@ void SurveyStep::Validate() const {
 
 void SurveyStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
   for (std::size_t i = 0; i < polygon_ne_m.size(); ++i) {
-    RequireInRegion("polygon_ne_m[" + std::to_string(i) + "]", limits,
-                    Vec3(polygon_ne_m[i].x(), polygon_ne_m[i].y(), plan.home_W.z() - altitude_m));
+    RequireInRegion(
+        "polygon_ne_m[" + std::to_string(i) + "]", limits,
+        Vec3(polygon_ne_m[i].x(), polygon_ne_m[i].y(), plan.home_W.z() - height_above_start_m));
   }
   RequireSpeed("speed_m_s", limits, speed_m_s);
 }
@@ -217,7 +218,8 @@ void SurveyStep::Check(const MissionLimits& limits, const StepPlan& plan) const 
 std::vector<Vec3> SurveyStep::CalcWaypoints_W(const Vec3& home_W) const {
   std::vector<Vec3> corners;
   for (const Eigen::Vector2d& c : polygon_ne_m) corners.emplace_back(c.x(), c.y(), 0.0);
-  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg), home_W.z() - altitude_m);
+  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg),
+                                home_W.z() - height_above_start_m);
 }
 
 double SurveyStep::EstimateDuration_s(StepPlan& plan) const {

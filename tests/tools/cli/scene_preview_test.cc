@@ -42,5 +42,21 @@ TEST(ScenePreviewTest, BadRequestsNameTheOption) {
   EXPECT_NE(r.err.find("--pose: expected n,e,d,yaw_deg,pitch_deg"), std::string::npos) << r.err;
 }
 
+TEST(ScenePreviewTest, CamerasOfSeveralVehiclesGoByTheirDatasetNames) {
+  // Both drones of the chase scene carry a `front`: drone1_front and drone2_front, as in datasets.
+  auto r = testing::RunAiris(&AddSceneCommand, "scene preview scenes/chase.yaml --camera front");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--camera: no camera 'front' in scenes/chase.yaml (it has drone1_front, "
+                       "drone2_front)"),
+            std::string::npos)
+      << r.err;
+  const fs::path out = airis::testing::TestTempDir() / "airis_chase_preview.png";
+  r = testing::RunAiris(
+      &AddSceneCommand,
+      "scene preview scenes/chase.yaml --camera drone2_front --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(engine::DecodeRgbPng(engine::ReadFileBytes(out)).width, 3 * 320);  // drone2's camera
+}
+
 }  // namespace
 }  // namespace airis::tools
