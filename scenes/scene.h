@@ -58,6 +58,15 @@ struct GeneratedSummary {
   std::size_t bushes = 0;
 };
 
+/// Where a scene's sun is, and what placed it.
+struct SunPosition {
+  double azimuth_rad = 0.0;    ///< direction toward the sun, clockwise from north
+  double elevation_rad = 0.0;  ///< above the horizon; negative when the sun is below it
+  /// The local solar time it was placed for (`lighting.time_of_day_h`), or unset when the scene
+  /// gave the angles.
+  std::optional<double> time_of_day_h;
+};
+
 /// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and
 /// the vehicles to create. A scene that loads has poses within kMaxCoordinate_m of the origin,
 /// positive scales, unique instance ids in 1..65535, each class, object name and generator name
@@ -74,6 +83,7 @@ struct Scene {
   engine::GeodeticPosition origin;  ///< of the world NED frame
   engine::EnvironmentConfig environment;
   engine::PhysicsConfig physics;  ///< tick rate and contact solver (the `physics:` block)
+  SunPosition sun;                ///< as lighting.sun_direction_W of the static scene
   engine::StaticScene static_scene;
   bool has_ground = false;  ///< a ground plane at z = 0 (`ground.enabled`)
   std::vector<VehicleDescription> vehicles;

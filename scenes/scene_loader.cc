@@ -70,6 +70,7 @@ class SceneAssembler {
     for (const auto& c : doc_.classes) errors.Try([&] { DefineClass(c); });
     errors.ThrowIfAny();
     builder_.scene().lighting = MakeLighting(settings, s.origin.latitude_rad);
+    s.sun = sun_;
     GroundConfig ground;
     if (doc_.ground) ground = doc_.ground->config;
     s.has_ground = ground.enabled;
@@ -84,6 +85,9 @@ class SceneAssembler {
     }
     errors.ThrowIfAny();
     CheckDatasetCameraNames(s.vehicles);
+    // The vehicles' looks take the instance ids after every object's, in vehicle order.
+    for (std::size_t i = 0; i < s.vehicles.size(); ++i)
+      AddVehicleBody(doc_.vehicles[i], s.vehicles[i]);
     s.static_scene = builder_.Finish();
     s.files.insert(s.files.end(), inputs_.begin(), inputs_.end());
     return s;
@@ -111,17 +115,18 @@ class SceneAssembler {
     c.Fail("name", "no free class id left (255 classes at most)");
   }
 
-  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings,
-                                     double latitude_rad) const {
+  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings, double latitude_rad) {
     const LightingConfig& c = settings.lighting;
     engine::SceneLighting out;
-    double azimuth = DegToRad(c.sun_azimuth_deg);
-    double elevation = DegToRad(c.sun_elevation_deg);
+    sun_.time_of_day_h = c.time_of_day_h;
+    sun_.azimuth_rad = DegToRad(c.sun_azimuth_deg.value_or(LightingConfig::kDefaultSunAzimuth_deg));
+    sun_.elevation_rad =
+        DegToRad(c.sun_elevation_deg.value_or(LightingConfig::kDefaultSunElevation_deg));
     if (c.time_of_day_h) {
-      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h, &azimuth,
-                  &elevation);
+      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h,
+                  &sun_.azimuth_rad, &sun_.elevation_rad);
     }
-    out.sun_direction_W = SunDirectionFromAngles(azimuth, elevation);
+    out.sun_direction_W = SunDirectionFromAngles(sun_.azimuth_rad, sun_.elevation_rad);
     out.sun_color_rgb = c.sun_color.cast<float>();
     out.sky_zenith_rgb = c.sky_zenith_color.cast<float>();
     out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
@@ -451,6 +456,36 @@ class SceneAssembler {
     return v;
   }
 
+  /// The look of vehicle `v` (its `body` block): its mesh file, or a body generated from its
+  /// airframe.
+  void AddVehicleBody(const Sourced<VehicleEntryConfig>& entry, const VehicleDescription& v) {
+    const BodyConfig& c = entry.config.body;
+    const std::uint8_t cls = ClassOf(entry, "body.class", c.class_name);
+    std::int32_t material = -1;
+    std::uint32_t model = 0;
+    if (!c.mesh.empty()) {
+      model = MeshModel(entry, "body.mesh", c.mesh, c.mesh_axes);
+      if (c.color) {
+        engine::Material m;
+        m.base_color_rgb = c.color->cast<float>();
+        material = static_cast<std::int32_t>(builder_.Material(m));
+      }
+    } else {
+      std::unique_ptr<engine::Vehicle> vehicle;
+      try {
+        vehicle = v.spec->Build(v.name);
+      } catch (const engine::InvalidField& e) {
+        entry.Fail(e.field(), e.problem());
+      }
+      model = GenerateBodyModel(*vehicle, c.color.value_or(kDefaultBodyColor),
+                                c.rotor_color.value_or(kDefaultRotorColor), builder_);
+    }
+    if (!builder_.AddVehicleBody(model, c.CalcModelPose(), cls, v.name, material)) {
+      entry.Fail("body", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
+                             " objects and vehicles (instance ids are 16-bit)");
+    }
+  }
+
   /// An `autopilot:` block that fits its vehicle (a channel per actuator) and uses its own PX4
   /// instance (ports).
   void CheckAutopilot(const Sourced<VehicleEntryConfig>& entry, const VehicleSpec& spec,
@@ -546,6 +581,7 @@ class SceneAssembler {
   std::size_t stored_triangles_ = 0;
   engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
+  SunPosition sun_;  // set by MakeLighting
 };
 
 }  // namespace

@@ -15,10 +15,7 @@ Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBody
   Eigen::Isometry3d T_WC = T_XS * T_SC;
   if (!stream.world_fixed) {
     AIRIS_DEMAND(state != nullptr);
-    Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
-    T_WB.linear() = state->q_WB.normalized().toRotationMatrix();
-    T_WB.translation() = state->p_W;
-    T_WC = T_WB * T_XS * T_SC;
+    T_WC = state->CalcPose() * T_XS * T_SC;
   }
   if (stream.offset_x_m != 0.0) T_WC = T_WC * Eigen::Translation3d(stream.offset_x_m, 0.0, 0.0);
   return T_WC;
@@ -43,6 +40,10 @@ std::vector<std::string> CalcDatasetNamePrefixes(std::span<const ImageSensorName
     prefixes.push_back(shared ? s.vehicle + "_" : "");
   }
   return prefixes;
+}
+
+int CalcHiddenVehicle(const ImageStream& stream, std::size_t vehicle) {
+  return stream.world_fixed || stream.sees_own_body ? -1 : static_cast<int>(vehicle);
 }
 
 }  // namespace airis::engine

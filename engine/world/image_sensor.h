@@ -23,6 +23,9 @@ struct ImageStream {
   RenderOutputs outputs;        ///< the image planes its frames carry
   MountConfig mount;            ///< the sensor's mount on its vehicle (or in the world)
   bool world_fixed = false;     ///< the mount is in the world frame, not on the vehicle's body
+  /// Its images show its own vehicle's body (a camera on a vehicle leaves it out unless its mount
+  /// is set to see it; a world-fixed camera sees every vehicle).
+  bool sees_own_body = false;
   /// Offset of this eye from the mount along the left eye's image x axis (m): 0 for a mono camera
   /// and the left eye, the baseline for the right eye.
   double offset_x_m = 0.0;
@@ -49,6 +52,10 @@ struct ImageSensorNames {
 /// "". Two drones with a camera 'front' record 'drone1_front' and 'drone2_front'; a camera whose
 /// name no other vehicle uses keeps it.
 std::vector<std::string> CalcDatasetNamePrefixes(std::span<const ImageSensorNames> sensors);
+
+/// The vehicle whose body stream `stream` of vehicle `vehicle` leaves out of its images: its own,
+/// unless the stream is world-fixed or sees its own body; -1 for none.
+int CalcHiddenVehicle(const ImageStream& stream, std::size_t vehicle);
 
 /// The GL implementation an image sensor renders with (for manifests and reports).
 struct RendererInfo {

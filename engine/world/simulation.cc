@@ -23,8 +23,13 @@ void Simulation::Step() {
   for (std::size_t i = 0; i < world_->vehicle_count(); ++i) {
     const auto sensors = world_->sensors(i);
     if (sensors.empty()) continue;
-    const SensorContext context{now_ns, &world_->vehicle(i).state(), &world_->accelerations(i),
-                                &environment, world_->ray_caster()};
+    const SensorContext context{now_ns,
+                                &world_->vehicle(i).state(),
+                                &world_->accelerations(i),
+                                &environment,
+                                world_->ray_caster(),
+                                world_.get(),
+                                i};
     for (const auto& sensor : sensors) sensor->Update(context);
   }
   const auto control_context = [&](std::size_t i) {

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/jobs/preview_render.h"
+#include "tools/jobs/scene_report.h"
 #include "tools/jobs/simulation_job.h"
 
 namespace airis::tools {
@@ -26,8 +28,8 @@ namespace {
 
 struct SceneOptions {
   std::string file;
-  std::string mission;                 // check: a mission to check against the scene
   std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string mission;  // check: the mission to check in the scene and report the captures of
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -111,13 +113,26 @@ int RunCheck(const SceneOptions& options) {
   source.path = options.file;
   source.overrides = scenes::ParseSceneOverrides(options.overrides);
   const SimulationJob job = SimulationJob::WithoutCameras(source);
-  if (!options.mission.empty()) job.CheckMission(scenes::LoadMissionFile(options.mission));
+  std::optional<engine::Mission> mission;
+  if (!options.mission.empty()) {
+    mission = scenes::LoadMissionFile(options.mission);
+    job.CheckMission(*mission);
+  }
   const double load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  PrintSummary(job.scene(), load_ms, scenes::CalcSceneStats(job.scene()));
-  if (!options.mission.empty()) {
-    std::printf("ok          %s flies in it\n", options.mission.c_str());
+  const scenes::Scene& scene = job.scene();
+  const SceneReport report = BuildSceneReport(scene, mission ? &*mission : nullptr);
+  if (options.json) {
+    nlohmann::json out = SceneReportJson(report);
+    out["scene"] = scene.name;
+    out["file"] = scene.path;
+    out["valid"] = true;
+    std::cout << out.dump(2) << "\n";
+    return 0;
   }
+  PrintSummary(scene, load_ms, scenes::CalcSceneStats(scene));
+  std::printf("%s", FormatSceneReport(report).c_str());
+  if (mission) std::printf("ok          %s flies in it\n", options.mission.c_str());
   std::printf("ok          %s is valid\n", options.file.c_str());
   return 0;
 }
@@ -136,7 +151,7 @@ int RunStats(const SceneOptions& options) {
   out["seed"] = loaded.scene.seed;
   out["overrides"] = scenes::SceneOverrideTexts(loaded.scene.overrides);
   out["objects"] = stats.objects;
-  out["instances"] = stats.objects;
+  out["instances"] = stats.objects + loaded.scene.static_scene.vehicle_bodies.size();
   out["models"] = stats.models;
   out["meshes"] = stats.meshes;
   out["materials"] = stats.materials;
@@ -181,17 +196,14 @@ int RunPreview(const SceneOptions& o) {
     preview.yaw_deg = v[3];
     preview.pitch_deg = v[4];
   }
-  PreviewResult r;
-  if (!o.camera.empty()) {
-    // The camera as mounted on its vehicle at the vehicle's start pose, with its own intrinsics.
-    SceneSource source;
-    source.path = o.file;
-    source.overrides = scenes::ParseSceneOverrides(o.overrides);
-    const SimulationJob job(source);
-    r = RenderPreviewPng(job.world().scene(), PreviewOfImageStream(job, o.camera), o.out);
-  } else {
-    r = RenderPreviewPng(LoadWithOverrides(o).static_scene, preview, o.out);
-  }
+  // The vehicles at their start poses; a camera as mounted on its vehicle, with its own
+  // intrinsics.
+  SceneSource source;
+  source.path = o.file;
+  source.overrides = scenes::ParseSceneOverrides(o.overrides);
+  const SimulationJob job(source);
+  if (!o.camera.empty()) preview = PreviewOfImageStream(job, o.camera);
+  const PreviewResult r = RenderPreviewPng(job, preview, o.out);
   std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
               o.out.c_str(), r.triangles, r.gl_renderer.c_str());
   return 0;
@@ -209,8 +221,12 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
       "Validate a scene as a run would (and a mission in it); print a summary, or the errors and "
       "exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
-  check->add_option("--mission", options->mission, "mission file (YAML) to check in the scene")
+  check
+      ->add_option("--mission", options->mission,
+                   "a mission file: check it in the scene as a run would, and list the cameras "
+                   "its capture steps record")
       ->type_name("FILE");
+  check->add_flag("--json", options->json, "print one JSON object instead of text");
   AddSceneOverrideOption(check, options->overrides);
   check->callback([options, check, &exit_code] {
     exit_code = RunReportingErrors([&] {

@@ -381,6 +381,11 @@ void DatasetRecorder::WriteLabels() const {
   for (const auto& o : scene.objects) {
     instances.push_back({{"id", o.instance_id}, {"class_id", o.class_id}, {"name", o.name}});
   }
+  // The vehicles, named as in the scene; "vehicle" tells them from static objects.
+  for (const auto& b : scene.vehicle_bodies) {
+    instances.push_back(
+        {{"id", b.instance_id}, {"class_id", b.class_id}, {"name", b.name}, {"vehicle", true}});
+  }
   engine::WriteFileAtomically(options_.root / "labels.json", labels.dump(1));
 }
 

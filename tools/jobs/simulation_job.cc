@@ -68,12 +68,6 @@ std::vector<std::size_t> SimulationJob::CheckMission(const engine::Mission& miss
   return vehicles;
 }
 
-std::size_t SimulationJob::CheckMission(const engine::Mission& mission) const {
-  const std::size_t vehicle = MissionVehicle(mission);
-  scenes::CheckMissionInScene(mission, scene_, vehicle);
-  return vehicle;
-}
-
 void SimulationJob::DisableImageSensors() {
   engine::World& w = world();
   for (std::size_t v = 0; v < w.vehicle_count(); ++v) {
