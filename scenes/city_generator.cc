@@ -49,9 +49,10 @@ class CityBuilder {
   GeneratorReport Build() {
     MakeModels();
     const Eigen::Vector2d pitch = c_.block_size_m + Eigen::Vector2d::Constant(c_.street_width_m);
-    const Eigen::Vector2d size = c_.area.size_m;
-    const int nx = std::max(1, static_cast<int>((size.x() - c_.street_width_m) / pitch.x()));
-    const int ny = std::max(1, static_cast<int>((size.y() - c_.street_width_m) / pitch.y()));
+    // Validate bounded the counts by kMaxCityBlocks.
+    const Eigen::Vector2d blocks = CalcCityBlockCounts(c_);
+    const int nx = static_cast<int>(blocks.x());
+    const int ny = static_cast<int>(blocks.y());
     const Eigen::Vector2d used(nx * pitch.x() + c_.street_width_m,
                                ny * pitch.y() + c_.street_width_m);
     origin_ = c_.area.center_m - 0.5 * used;  // south-west corner of the first street
@@ -283,6 +284,13 @@ class CityBuilder {
 };
 
 }  // namespace
+
+Eigen::Vector2d CalcCityBlockCounts(const CityConfig& c) {
+  const Eigen::Vector2d pitch = c.block_size_m + Eigen::Vector2d::Constant(c.street_width_m);
+  const Eigen::Vector2d size = c.area.size_m;
+  return {std::max(1.0, std::floor((size.x() - c.street_width_m) / pitch.x())),
+          std::max(1.0, std::floor((size.y() - c.street_width_m) / pitch.y()))};
+}
 
 GeneratorReport GenerateCity(const CityConfig& config, const CityResources& resources,
                              const std::string& name, engine::RandomStream& stream,

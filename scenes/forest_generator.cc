@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/mission/path.h"
 #include "scenes/generators.h"
 
 namespace airis::scenes {
@@ -37,7 +38,9 @@ bool InClearing(const ForestConfig& c, const Vector2d& p) {
   return false;
 }
 
-void AreaBounds(const AreaConfig& area, Vector2d* lo, Vector2d* hi) {
+}  // namespace
+
+void CalcAreaBounds(const AreaConfig& area, Vector2d* lo, Vector2d* hi) {
   if (area.polygon_m.empty()) {
     *lo = area.center_m - 0.5 * area.size_m;
     *hi = area.center_m + 0.5 * area.size_m;
@@ -51,7 +54,13 @@ void AreaBounds(const AreaConfig& area, Vector2d* lo, Vector2d* hi) {
   }
 }
 
-}  // namespace
+double CalcForestGridCells(const ForestConfig& config) {
+  Vector2d lo, hi;
+  CalcAreaBounds(config.area, &lo, &hi);
+  const double cell = config.min_spacing_m / std::sqrt(2.0);  // as PoissonDiscSample's grid
+  return std::max(1.0, std::ceil((hi.x() - lo.x()) / cell)) *
+         std::max(1.0, std::ceil((hi.y() - lo.y()) / cell));
+}
 
 bool AreaContains(const AreaConfig& area, const Vector2d& p) {
   if (area.polygon_m.empty()) {
@@ -73,12 +82,7 @@ bool AreaContains(const AreaConfig& area, const Vector2d& p) {
 
 double AreaOf(const AreaConfig& area) {
   if (area.polygon_m.empty()) return area.size_m.x() * area.size_m.y();
-  double twice = 0.0;
-  const auto& poly = area.polygon_m;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    twice += poly[j].x() * poly[i].y() - poly[i].x() * poly[j].y();
-  }
-  return 0.5 * std::abs(twice);
+  return engine::CalcPolygonArea_m2(area.polygon_m);
 }
 
 std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, double radius_m,
@@ -175,7 +179,7 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
   for (const auto& sp : c.species) total_weight += sp.weight;
 
   Vector2d lo, hi;
-  AreaBounds(c.area, &lo, &hi);
+  CalcAreaBounds(c.area, &lo, &hi);
   std::vector<Vector2d> points = PoissonDiscSample(lo, hi, c.min_spacing_m, rng);
   // Thin to the density: keep each sample with the probability that brings the Poisson-disc density
   // (samples per bounding-box area) down to the requested one; thinning keeps the minimum spacing.

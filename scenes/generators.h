@@ -57,6 +57,17 @@ GeneratorReport GenerateForest(const ForestConfig& config, const ForestResources
 std::vector<Eigen::Vector2d> PoissonDiscSample(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
                                                double radius_m, engine::RandomStream& stream);
 
+/// Street blocks [north, east] a city lays over its area (at least one each way), as doubles so
+/// that huge areas can be checked against kMaxCityBlocks before anything is built.
+Eigen::Vector2d CalcCityBlockCounts(const CityConfig& config);
+
+/// Cells of the Poisson-disc grid of a forest (its area's bounding box in cells of min_spacing_m /
+/// sqrt 2), as a double for the check against kMaxForestGridCells.
+double CalcForestGridCells(const ForestConfig& config);
+
+/// The bounding box [lo, hi] ([north, east], m) of an area.
+void CalcAreaBounds(const AreaConfig& area, Eigen::Vector2d* lo, Eigen::Vector2d* hi);
+
 /// True when `p` is inside the area (rectangle, or polygon by the even-odd rule when given).
 bool AreaContains(const AreaConfig& area, const Eigen::Vector2d& p);
 /// Area of the region in m^2 (polygon by the shoelace formula).

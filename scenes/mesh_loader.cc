@@ -5,8 +5,12 @@
 
 #include <assimp/Importer.hpp>
 #include <filesystem>
+#include <vector>
 
+#include "engine/core/limits.h"
+#include "engine/render/texture_file.h"
 #include "engine/scene/primitive_meshes.h"
+#include "scenes/mesh_file_check.h"
 
 namespace airis::scenes {
 
@@ -54,10 +58,39 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
         throw MeshLoadError("texture file not found: " + resolved.string() +
                             " (named by material '" + out.name + "' of " + mesh_path + ")");
       }
+      const std::string problem = engine::CheckTextureFile(resolved.string());
+      if (!problem.empty()) {
+        throw MeshLoadError("texture " + resolved.string() + " (named by material '" + out.name +
+                            "'): " + problem);
+      }
       out.texture_path = fs::absolute(resolved).string();
     }
   }
   return out;
+}
+
+/// Vertices and faces of the scene once every node's meshes are placed (what pre-transforming
+/// makes: a mesh used by many nodes is copied for each), refused beyond the limits before that.
+void CheckPlacedCounts(const aiScene& scene) {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  std::vector<const aiNode*> pending{scene.mRootNode};
+  while (!pending.empty()) {
+    const aiNode* node = pending.back();
+    pending.pop_back();
+    if (node == nullptr) continue;
+    for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+      if (node->mMeshes[k] >= scene.mNumMeshes) continue;
+      vertices += scene.mMeshes[node->mMeshes[k]]->mNumVertices;
+      faces += scene.mMeshes[node->mMeshes[k]]->mNumFaces;
+    }
+    if (vertices > engine::kMaxMeshVertices || faces > engine::kMaxMeshTriangles) {
+      throw MeshLoadError("its nodes place more than " + std::to_string(engine::kMaxMeshVertices) +
+                          " vertices or " + std::to_string(engine::kMaxMeshTriangles) +
+                          " faces (the limits per mesh file, docs/limits.md)");
+    }
+    for (unsigned c = 0; c < node->mNumChildren; ++c) pending.push_back(node->mChildren[c]);
+  }
 }
 
 }  // namespace
@@ -65,14 +98,18 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
 std::span<const engine::EnumName<MeshAxes>> EnumNames(MeshAxes) { return kMeshAxesNames; }
 
 MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
+  CheckMeshFileBeforeImport(path);
   Assimp::Importer importer;
   // Keep only triangles: points and lines have no surface to collide with or draw.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
-                aiProcess_PreTransformVertices | aiProcess_SortByPType |
-                aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
+  // Read first, then check what placing every node's meshes would make, then process.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  if (scene == nullptr) throw MeshLoadError(importer.GetErrorString());
+  CheckPlacedCounts(*scene);
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                       aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
+                                       aiProcess_SortByPType | aiProcess_FindInvalidData);
   if (scene == nullptr) throw MeshLoadError(importer.GetErrorString());
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
     throw MeshLoadError("the file contains no triangle meshes");
@@ -117,6 +154,11 @@ MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
     out.meshes.push_back(std::move(mesh));
   }
   if (triangles == 0) throw MeshLoadError("the file contains no triangles");
+  if (triangles > engine::kMaxMeshTriangles) {
+    throw MeshLoadError("the file has " + std::to_string(triangles) +
+                        " triangles, more than the limit of " +
+                        std::to_string(engine::kMaxMeshTriangles) + " (docs/limits.md)");
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include "engine/core/limits.h"
 #include "engine/mission/mission_barriers.h"
 #include "scenes/mission_step_kinds.h"
 #include "scenes/yaml_reader.h"
@@ -48,31 +49,42 @@ std::vector<engine::MissionStep> ReadSteps(const YamlReader& reader, const YAML:
     reader.Fail(parent.Mark(), steps_path, "missing: " + what);
   }
   reader.RequireSequence(steps, steps_mark, steps_path, "a list of steps");
-  std::vector<engine::MissionStep> out;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const YAML::Node item = steps[i];
-    const std::string path = steps_path + "[" + std::to_string(i) + "]";
-    if (!item.IsMap() || item.size() != 1) {
-      reader.Fail(item.Mark(), path,
-                  "each step is a map with one key naming its kind, e.g. '- goto: {...}' (got " +
-                      YamlReader::Describe(item) + ")");
-    }
-    const auto entry = item.begin();
-    const std::string kind = entry->first.Scalar();
-    const YAML::Mark mark = entry->first.Mark();
-    const auto found = std::find(kind_names.begin(), kind_names.end(), kind);
-    if (found == kind_names.end()) {
-      std::string problem = "unknown step '" + kind + "'";
-      if (const auto close = engine::ClosestMatch(kind, kind_names))
-        problem += " (did you mean '" + *close + "'?)";
-      std::string all;
-      for (const auto& k : kind_names) all += (all.empty() ? "" : ", ") + k;
-      reader.Fail(mark, path, problem + "; steps are " + all);
-    }
-    const auto index = static_cast<std::size_t>(found - kind_names.begin());
-    out.push_back(MissionStepKinds()[index].read(reader, entry->second, mark, path + "." + kind));
+  if (steps.size() > engine::kMaxListEntries) {
+    reader.Fail(steps_mark, steps_path,
+                "a list of " + std::to_string(steps.size()) +
+                    " steps is longer than the limit of " +
+                    std::to_string(engine::kMaxListEntries) + " (docs/limits.md)");
   }
-  if (out.empty()) reader.Fail(steps_mark, steps_path, "a track needs at least one step");
+  if (steps.size() == 0) reader.Fail(steps_mark, steps_path, "a track needs at least one step");
+  std::vector<engine::MissionStep> out;
+  std::size_t i = 0;
+  for (const YAML::Node& item : steps) {
+    const std::string path = steps_path + "[" + std::to_string(i++) + "]";
+    // Mistakes in different steps are reported together.
+    reader.Collect([&] {
+      if (!item.IsMap() || item.size() != 1) {
+        reader.Fail(item.Mark(), path,
+                    "each step is a map with one key naming its kind, e.g. '- goto: {...}' (got " +
+                        YamlReader::Describe(item) + ")");
+      }
+      const auto entry = item.begin();
+      const std::string& kind =
+          reader.RequireScalar(entry->first, entry->first.Mark(), path, "a step kind as its key");
+      const YAML::Mark mark = entry->first.Mark();
+      const auto found = std::find(kind_names.begin(), kind_names.end(), kind);
+      if (found == kind_names.end()) {
+        std::string problem = "unknown step " + engine::QuoteValue(kind);
+        if (const auto close =
+                engine::ClosestMatch(kind.substr(0, engine::kMaxNameLength), kind_names))
+          problem += " (did you mean '" + *close + "'?)";
+        std::string all;
+        for (const auto& k : kind_names) all += (all.empty() ? "" : ", ") + k;
+        reader.Fail(mark, path, problem + "; steps are " + all);
+      }
+      const auto index = static_cast<std::size_t>(found - kind_names.begin());
+      out.push_back(MissionStepKinds()[index].read(reader, entry->second, mark, path + "." + kind));
+    });
+  }
   return out;
 }
 
@@ -90,8 +102,9 @@ std::vector<engine::MissionTrack> ReadTracks(const YamlReader& reader, const YAM
     const std::string name = entry.first.IsScalar() ? entry.first.Scalar() : "";
     const std::string path = "vehicles." + name;
     if (!engine::IsValidName(name)) {
-      reader.Fail(key_mark, "vehicles",
-                  "'" + name + "' is no vehicle name (1 to 64 letters, digits, '_' or '-')");
+      reader.Fail(
+          key_mark, "vehicles",
+          engine::QuoteValue(name) + " is no vehicle name (1 to 64 letters, digits, '_' or '-')");
     }
     for (const engine::MissionTrack& earlier : tracks) {
       if (earlier.vehicle == name) reader.Fail(key_mark, path, "a second track for this vehicle");
@@ -116,17 +129,21 @@ std::vector<engine::MissionTrack> ReadTracks(const YamlReader& reader, const YAM
 }
 
 engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
-  const YamlReader reader(file);
+  // Independent mistakes (the header's keys, different steps) are reported together.
+  const YamlReader reader(file, std::make_shared<YamlReadState>(/*collect=*/true));
   if (!root.IsMap()) {
     reader.Fail(root.Mark(), "",
                 "a mission file must be a map with a 'steps' list (got " +
                     YamlReader::Describe(root) + ")");
   }
   MissionHeader header;
-  reader.ReadStruct(root, root.Mark(), "", header, {"steps", "vehicles"});
+  reader.Collect([&] { reader.ReadStruct(root, root.Mark(), "", header, {"steps", "vehicles"}); });
   engine::Mission mission;
   mission.name = header.name;
   mission.file = file;
+  mission.locate = [root, file](const std::string& key) {
+    return YamlReader(file).Where(YamlReader::FindFieldMark(root, root.Mark(), key));
+  };
   YAML::Node vehicles;
   YAML::Mark vehicles_mark;
   if (YamlReader::FindKey(root, "vehicles", &vehicles, &vehicles_mark)) {
@@ -155,6 +172,7 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
     track.where = reader.Where(mark);
     mission.tracks.push_back(std::move(track));
   }
+  reader.state()->ThrowIfAny();
   engine::CheckMissionBarriers(mission);
   return mission;
 }

@@ -4,6 +4,7 @@
 // other layers can include it.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,9 +35,13 @@ struct VehicleDescription {
   /// Start state: position of the centre of mass and velocity in world NED, attitude body FRD ->
   /// NED, angular velocity in body axes. With on_ground, the height rests the body on the surface.
   engine::RigidBodyState start;
-  bool on_ground = false;                   ///< starts resting on the surface below it
-  engine::SourceLocation where;             ///< the entry in its scene file
-  std::string key_path;                     ///< e.g. `vehicles[0]`
+  bool on_ground = false;        ///< starts resting on the surface below it
+  engine::SourceLocation where;  ///< the entry in its scene file
+  std::string key_path;          ///< e.g. `vehicles[0]`
+  /// Where a key below the entry is (`start.position_ned_m`, `overrides.inertia_kg_m2`,
+  /// `sensors[1].camera.rate_hz`): the deepest part of it present in the file, the entry when none
+  /// is. For mistakes found after loading (building the world) to point at their key.
+  std::function<engine::SourceLocation(const std::string& key)> locate;
   std::shared_ptr<const VehicleSpec> spec;  ///< kind + preset + overrides, validated
   std::vector<SensorDescription> sensors;
   /// Who flies it (`autopilot:`): the built-in controller or PX4 over MAVLink (docs/px4.md).
@@ -63,8 +68,11 @@ struct SunPosition {
 };
 
 /// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and
-/// the vehicles to create. A scene that loads has finite poses, positive scales, unique instance
-/// ids in 1..65535, and no vehicle starting inside an object.
+/// the vehicles to create. A scene that loads has poses within kMaxCoordinate_m of the origin,
+/// positive scales, unique instance ids in 1..65535, each class, object name and generator name
+/// once, readable meshes and textures, and no vehicle body below the ground. What needs the
+/// physics world (a vehicle overlapping an object or another vehicle, sensors faster than the
+/// physics rate) BuildWorld checks.
 struct Scene {
   std::string name;
   std::string path;  ///< the scene file as given
@@ -77,6 +85,7 @@ struct Scene {
   engine::PhysicsConfig physics;  ///< tick rate and contact solver (the `physics:` block)
   SunPosition sun;                ///< as lighting.sun_direction_W of the static scene
   engine::StaticScene static_scene;
+  bool has_ground = false;  ///< a ground plane at z = 0 (`ground.enabled`)
   std::vector<VehicleDescription> vehicles;
   std::vector<GeneratedSummary> generated;
   /// The overrides it was loaded with (SceneLoadOptions): with `files`, what made this scene.
@@ -95,7 +104,9 @@ struct SceneLoadOptions {
 
 /// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and
 /// key path for every mistake: unknown keys, wrong types, bad values, missing or unreadable mesh or
-/// texture files, include cycles, unknown classes, a vehicle starting inside an object.
+/// texture files, include cycles and files included twice, unknown or twice-defined classes,
+/// duplicate names, counts beyond docs/limits.md. Independent mistakes (in different keys,
+/// objects, vehicles) are reported together (ConfigError::errors()), up to kMaxReportedErrors.
 Scene LoadScene(const std::string& path, const SceneLoadOptions& options = {});
 
 /// As LoadScene, from text (tests, Python); `path` names it in messages and anchors relative paths.

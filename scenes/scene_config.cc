@@ -3,6 +3,10 @@
 #include <string>
 #include <utility>
 
+#include "engine/core/limits.h"
+#include "engine/mission/path.h"
+#include "scenes/generators.h"
+
 namespace airis::scenes {
 
 using engine::InvalidField;
@@ -11,6 +15,7 @@ using engine::RequireFinite;
 using engine::RequireInRange;
 using engine::RequireNonNegative;
 using engine::RequirePositive;
+using engine::RequireWithinWorld;
 
 namespace {
 
@@ -35,6 +40,15 @@ void ValidateNested(const Config& config, const std::string& prefix) {
 
 void RequireVectorFinite(const std::string& field, const Eigen::Vector3d& v) {
   Require(v.allFinite(), field, "must be finite");
+}
+
+/// A size (m) of at most the world's width, 2 kMaxCoordinate_m.
+void RequireSizeWithinWorld(const std::string& field, double size_m) {
+  RequirePositive(field, size_m);
+  Require(size_m <= 2.0 * engine::kMaxCoordinate_m, field,
+          "must be at most " + engine::FormatNumber(2.0 * engine::kMaxCoordinate_m) +
+              " m, the width of the world (got " + engine::FormatNumber(size_m) +
+              "; docs/limits.md)");
 }
 
 }  // namespace
@@ -97,8 +111,8 @@ void MaterialConfig::Validate() const {
 }
 
 void GroundConfig::Validate() const {
-  RequirePositive("size_ne_m[0]", size_m[0]);
-  RequirePositive("size_ne_m[1]", size_m[1]);
+  RequireSizeWithinWorld("size_ne_m[0]", size_m[0]);
+  RequireSizeWithinWorld("size_ne_m[1]", size_m[1]);
   ValidateNested(material, "material");
   Require(!class_name.empty(), "class", "must not be empty");
 }
@@ -123,30 +137,32 @@ void ObjectConfig::Validate() const {
   const bool has_primitive = primitive != engine::Primitive::kNone;
   Require(has_mesh || has_primitive, "mesh", "give a mesh file or a primitive");
   Require(!(has_mesh && has_primitive), "primitive", "give a mesh file or a primitive, not both");
-  RequireVectorFinite("position_ned_m", position_m);
+  RequireWithinWorld("position_ned_m", position_m);
   RequireFinite("yaw_deg", yaw_deg);
   RequireFinite("pitch_deg", pitch_deg);
   RequireFinite("roll_deg", roll_deg);
-  for (int i = 0; i < 3; ++i) RequirePositive("scale[" + std::to_string(i) + "]", scale[i]);
+  for (int i = 0; i < 3; ++i) RequireSizeWithinWorld("scale[" + std::to_string(i) + "]", scale[i]);
   if (material) ValidateNested(*material, "material");
   Require(!class_name.empty(), "class", "must not be empty");
   ValidateNested(repeat, "repeat");
 }
 
 void AreaConfig::Validate() const {
-  Require(center_m.allFinite(), "center_ne_m", "must be finite");
-  RequirePositive("size_ne_m[0]", size_m[0]);
-  RequirePositive("size_ne_m[1]", size_m[1]);
+  RequireWithinWorld("center_ne_m", center_m);
+  RequireSizeWithinWorld("size_ne_m[0]", size_m[0]);
+  RequireSizeWithinWorld("size_ne_m[1]", size_m[1]);
   Require(polygon_m.empty() || polygon_m.size() >= 3, "polygon_ne_m",
           "a polygon needs at least 3 corners (got " + std::to_string(polygon_m.size()) + ")");
   for (std::size_t i = 0; i < polygon_m.size(); ++i) {
-    Require(polygon_m[i].allFinite(), Index("polygon_ne_m", i), "must be finite");
+    RequireWithinWorld(Index("polygon_ne_m", i), polygon_m[i]);
   }
+  Require(polygon_m.empty() || engine::CalcPolygonArea_m2(polygon_m) > 0.0, "polygon_ne_m",
+          "the polygon encloses no area (its corners are equal or on one line)");
 }
 
 void CityConfig::Validate() const {
   ValidateNested(area, "area");
-  Require(area.polygon_m.empty(), "area.polygon_m",
+  Require(area.polygon_m.empty(), "area.polygon_ne_m",
           "a city covers a rectangle; polygons are for forests");
   RequirePositive("block_size_ne_m[0]", block_size_m[0]);
   RequirePositive("block_size_ne_m[1]", block_size_m[1]);
@@ -165,7 +181,7 @@ void CityConfig::Validate() const {
   RequireRange("tall_height_m", tall_height_m);
   RequirePositive("low_height_m[0]", low_height_m[0]);
   RequirePositive("tall_height_m[0]", tall_height_m[0]);
-  Require(downtown_center_m.allFinite(), "downtown_center_ne_m", "must be finite");
+  RequireWithinWorld("downtown_center_ne_m", downtown_center_m);
   RequirePositive("downtown_radius_m", downtown_radius_m);
   RequireNonNegative("flat_roof_above_m", flat_roof_above_m);
   Require(!roof_shapes.empty(), "roof_shapes", "give at least one roof shape");
@@ -175,6 +191,11 @@ void CityConfig::Validate() const {
   RequireColor("roof_color", roof_color);
   RequireNonNegative("lamp_spacing_m", lamp_spacing_m);
   RequireNonNegative("cars_per_100m", cars_per_100m);
+  const Eigen::Vector2d blocks = CalcCityBlockCounts(*this);
+  Require(blocks.prod() <= static_cast<double>(engine::kMaxCityBlocks), "area.size_ne_m",
+          "gives " + engine::FormatNumber(blocks.x()) + " x " + engine::FormatNumber(blocks.y()) +
+              " street blocks of block_size_ne_m, more than the limit of " +
+              std::to_string(engine::kMaxCityBlocks) + " (docs/limits.md)");
 }
 
 void SpeciesConfig::Validate() const {
@@ -193,7 +214,7 @@ void SpeciesConfig::Validate() const {
 }
 
 void ClearingConfig::Validate() const {
-  Require(center_m.allFinite(), "center_ne_m", "must be finite");
+  RequireWithinWorld("center_ne_m", center_m);
   RequirePositive("radius_m", radius_m);
 }
 
@@ -216,6 +237,18 @@ void ForestConfig::Validate() const {
   ValidateNested(ground_cover, "ground_cover");
   RequireInRange("variants_per_species", variants_per_species, 1, 64);
   Require(!tree_class.empty(), "tree_class", "must not be empty");
+  const double cells = CalcForestGridCells(*this);
+  Require(cells <= static_cast<double>(engine::kMaxForestGridCells), "min_spacing_m",
+          "gives a Poisson-disc grid of " + engine::FormatRounded(cells) +
+              " cells over the area, more than the limit of " +
+              std::to_string(engine::kMaxForestGridCells) + " (got " +
+              engine::FormatNumber(min_spacing_m) + " m; docs/limits.md)");
+  Eigen::Vector2d lo, hi;
+  CalcAreaBounds(area, &lo, &hi);
+  const double bushes = ground_cover.density_per_ha * (hi - lo).prod() / 10000.0;
+  Require(bushes <= static_cast<double>(engine::kMaxInstances), "ground_cover.density_per_ha",
+          "gives " + engine::FormatRounded(bushes) + " bushes, more than the " +
+              std::to_string(engine::kMaxInstances) + " objects a scene holds (docs/limits.md)");
 }
 
 void GeneratorConfig::Validate() const {
@@ -225,7 +258,7 @@ void GeneratorConfig::Validate() const {
 }
 
 void StartStateConfig::Validate() const {
-  RequireVectorFinite("position_ned_m", position_m);
+  RequireWithinWorld("position_ned_m", position_m);
   RequireInRange("roll_deg", roll_deg, -180.0, 180.0);
   RequireInRange("pitch_deg", pitch_deg, -90.0, 90.0);
   RequireFinite("yaw_deg", yaw_deg);

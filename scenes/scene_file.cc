@@ -33,33 +33,29 @@ void AppendEntries(const std::vector<T>& configs, const std::shared_ptr<const So
 
 class DocumentReader {
  public:
-  explicit DocumentReader(SceneDocument* doc) : doc_(doc) {}
+  explicit DocumentReader(SceneDocument* doc)
+      : doc_(doc), state_(std::make_shared<YamlReadState>(/*collect=*/true)) {}
 
-  /// Reads one file (already parsed into `root`) and, first, everything it includes.
+  /// Reads one file (already parsed into `root`) and, first, everything it includes. Mistakes are
+  /// collected; Finish() throws them.
   void Read(const std::string& path, const YAML::Node& root) {
     const std::string identity = Identity(path);
     stack_.push_back({path, identity});
+    read_.push_back({identity, path});
     auto file = std::make_shared<SourceFile>(SourceFile{path, YAML::Node()});
     file->root.reset(root);
     doc_->files.push_back(file);
 
     SceneFileConfig config;
-    const YamlReader reader(path);
-    reader.ReadValue(root, root.Mark(), "", config);
-
-    for (std::size_t i = 0; i < config.include.size(); ++i) {
-      const YAML::Node node = root["include"][i];
-      const std::string key = "include[" + std::to_string(i) + "]";
-      const std::string child = ResolveRelative(path, config.include[i]);
-      const std::string child_identity = Identity(child);
-      for (std::size_t s = 0; s < stack_.size(); ++s) {
-        if (stack_[s].identity != child_identity) continue;
-        std::string chain;
-        for (std::size_t k = s; k < stack_.size(); ++k) chain += stack_[k].path + " -> ";
-        reader.Fail(node.Mark(), key, "include cycle: " + chain + child);
+    const YamlReader reader(path, state_);
+    const std::size_t errors_before = state_->errors().count();
+    reader.Collect([&] { reader.ReadValue(root, root.Mark(), "", config); });
+    // Includes of a file with mistakes could be misread (an entry left empty): read them once the
+    // mistakes are fixed.
+    if (state_->errors().count() == errors_before) {
+      for (std::size_t i = 0; i < config.include.size(); ++i) {
+        reader.Collect([&] { Include(reader, root, i, config.include[i]); });
       }
-      if (!fs::is_regular_file(child)) reader.Fail(node.Mark(), key, "file not found: " + child);
-      Read(child, LoadYamlFile(child));
     }
 
     // Settings: the including file (read after its includes) overrides what they set.
@@ -82,11 +78,61 @@ class DocumentReader {
     stack_.pop_back();
   }
 
+  /// Throws every mistake found in the files read.
+  void Finish() const { state_->ThrowIfAny(); }
+
  private:
   struct Frame {
     std::string path;
     std::string identity;
   };
+
+  /// Reads include `index` (`relative`) of the file `reader` reads: each file at most once (a file
+  /// included twice would place its objects twice), within kMaxIncludeDepth and
+  /// kMaxIncludedFiles.
+  void Include(const YamlReader& reader, const YAML::Node& root, std::size_t index,
+               const std::string& relative) {
+    const YAML::Node node = root["include"][index];
+    const std::string key = "include[" + std::to_string(index) + "]";
+    const std::string child = ResolveRelative(reader.file(), relative);
+    const std::string child_identity = Identity(child);
+    for (std::size_t s = 0; s < stack_.size(); ++s) {
+      if (stack_[s].identity != child_identity) continue;
+      std::string chain;
+      for (std::size_t k = s; k < stack_.size(); ++k) chain += stack_[k].path + " -> ";
+      reader.Fail(node.Mark(), key, "include cycle: " + chain + child);
+    }
+    for (const auto& [identity, first_path] : read_) {
+      if (identity == child_identity) {
+        reader.Fail(node.Mark(), key,
+                    "file " + child + " is already part of the scene (included before, as " +
+                        first_path +
+                        "); a file is included once, or its objects would be placed "
+                        "twice");
+      }
+    }
+    if (static_cast<int>(stack_.size()) >= engine::kMaxIncludeDepth) {
+      reader.Fail(node.Mark(), key,
+                  "includes nest deeper than the limit of " +
+                      std::to_string(engine::kMaxIncludeDepth) + " files (docs/limits.md)");
+    }
+    if (read_.size() >= engine::kMaxIncludedFiles) {
+      reader.Fail(node.Mark(), key,
+                  "the scene includes more than the limit of " +
+                      std::to_string(engine::kMaxIncludedFiles) + " files (docs/limits.md)");
+    }
+    if (!fs::exists(child)) reader.Fail(node.Mark(), key, "file not found: " + child);
+    YAML::Node child_root;
+    try {
+      child_root = LoadYamlFile(child);
+    } catch (const engine::ConfigError& e) {
+      // A mistake inside the file is reported there; one with the file as a whole (a folder, too
+      // large) where it is included.
+      if (e.where().line > 0) throw;
+      reader.Fail(node.Mark(), key, "cannot include " + child + ": " + e.problem());
+    }
+    Read(child, child_root);
+  }
 
   static std::string Identity(const std::string& path) {
     std::error_code ec;
@@ -95,7 +141,9 @@ class DocumentReader {
   }
 
   SceneDocument* doc_;
+  std::shared_ptr<YamlReadState> state_;
   std::vector<Frame> stack_;
+  std::vector<std::pair<std::string, std::string>> read_;  // identity, path of every file read
 };
 
 }  // namespace
@@ -117,14 +165,18 @@ void VehicleEntryConfig::Validate() const {
 SceneDocument ReadSceneDocument(const std::string& path) {
   SceneDocument doc;
   doc.path = path;
-  DocumentReader(&doc).Read(path, LoadYamlFile(path));
+  DocumentReader reader(&doc);
+  reader.Read(path, LoadYamlFile(path));
+  reader.Finish();
   return doc;
 }
 
 SceneDocument ReadSceneDocumentFromString(const std::string& text, const std::string& path) {
   SceneDocument doc;
   doc.path = path;
-  DocumentReader(&doc).Read(path, LoadYamlString(text, path));
+  DocumentReader reader(&doc);
+  reader.Read(path, LoadYamlString(text, path));
+  reader.Finish();
   return doc;
 }
 

@@ -101,49 +101,11 @@ struct Sourced {
   /// Location of `key` (a path below the entry such as `material.texture` or `sensors[1].name`):
   /// the deepest part of it that is present, or the entry itself when `key` is empty or absent.
   engine::SourceLocation Where(const std::string& key = "") const {
-    YAML::Mark at = mark;
-    YAML::Node current;
-    current.reset(node);
-    std::size_t pos = 0;
-    while (pos < key.size()) {
-      if (key[pos] == '.') {
-        ++pos;
-        continue;
-      }
-      if (key[pos] == '[') {
-        const std::size_t close = key.find(']', pos);
-        const std::size_t index = std::stoul(key.substr(pos + 1, close - pos - 1));
-        YAML::Node value;
-        if (!YamlReader::FindListEntry(current, index, &value, &at)) break;
-        current.reset(value);
-        pos = close + 1;
-        continue;
-      }
-      const std::size_t end = std::min(key.find_first_of(".[", pos), key.size());
-      const std::string part = key.substr(pos, end - pos);
-      bool found = false;
-      if (current.IsMap()) {
-        for (const auto& entry : current) {
-          if (entry.first.IsScalar() && entry.first.Scalar() == part) {
-            at = entry.first.Mark();
-            current.reset(entry.second);
-            found = true;
-            break;
-          }
-        }
-      }
-      if (!found) break;
-      pos = end;
-    }
-    return YamlReader(file->path).Where(at);
+    return YamlReader(file->path).Where(YamlReader::FindFieldMark(node, mark, key));
   }
   /// yaml-cpp mark of `key` inside the entry (as Where).
   YAML::Mark MarkOf(const std::string& key) const {
-    const engine::SourceLocation w = Where(key);
-    YAML::Mark m;
-    m.line = w.line - 1;
-    m.column = w.column - 1;
-    return m;
+    return YamlReader::FindFieldMark(node, mark, key);
   }
   std::string PathOf(const std::string& key) const {
     return key.empty() ? key_path : (key[0] == '[' ? key_path + key : key_path + "." + key);

@@ -5,8 +5,11 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <set>
 
+#include "engine/core/limits.h"
 #include "engine/core/random.h"
+#include "engine/render/texture_file.h"
 #include "engine/scene/static_scene_builder.h"
 #include "engine/world/image_sensor.h"
 #include "scenes/builtin_classes.h"
@@ -61,18 +64,26 @@ class SceneAssembler {
     s.environment = settings.environment;
     if (doc_.physics) s.physics = doc_.physics->config;
 
-    for (const auto& c : doc_.classes) DefineClass(c);
+    // Independent entries are checked one by one and their mistakes reported together; objects
+    // and generators name classes, so those come first.
+    engine::ErrorCollector errors;
+    for (const auto& c : doc_.classes) errors.Try([&] { DefineClass(c); });
+    errors.ThrowIfAny();
     builder_.scene().lighting = MakeLighting(settings, s.origin.latitude_rad);
     s.sun = sun_;
     GroundConfig ground;
     if (doc_.ground) ground = doc_.ground->config;
-    if (ground.enabled) AddGround(ground);
-    for (const auto& o : doc_.objects) AddObjects(o);
+    s.has_ground = ground.enabled;
+    if (ground.enabled) errors.Try([&] { AddGround(ground); });
+    for (const auto& o : doc_.objects) errors.Try([&] { AddObjects(o); });
     const engine::RandomStreams streams(s.seed);
-    for (const auto& g : doc_.generators) s.generated.push_back(Generate(g, streams));
-    CheckObjects();
-    for (const auto& v : doc_.vehicles)
-      s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
+    for (const auto& g : doc_.generators) {
+      errors.Try([&] { s.generated.push_back(Generate(g, streams)); });
+    }
+    for (const auto& v : doc_.vehicles) {
+      errors.Try([&] { s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled)); });
+    }
+    errors.ThrowIfAny();
     CheckDatasetCameraNames(s.vehicles);
     // The vehicles' looks take the instance ids after every object's, in vehicle order.
     for (std::size_t i = 0; i < s.vehicles.size(); ++i)
@@ -84,6 +95,12 @@ class SceneAssembler {
 
  private:
   void DefineClass(const Sourced<ClassConfig>& c) {
+    // A second definition would silently win over the first.
+    if (const auto it = defined_classes_.find(c.config.name); it != defined_classes_.end()) {
+      c.Fail("name", "class '" + c.config.name + "' is already defined (" + Describe(*it->second) +
+                         "); define each class once");
+    }
+    defined_classes_.emplace(c.config.name, &c);
     const Eigen::Vector3f color =
         c.config.color ? Eigen::Vector3f(c.config.color->cast<float>()) : Eigen::Vector3f::Zero();
     const bool* stuff = c.config.stuff ? &*c.config.stuff : nullptr;
@@ -138,8 +155,15 @@ class SceneAssembler {
                           const std::string& texture) const {
     if (texture.empty()) return "";
     const std::string resolved = ResolveRelative(entry.file->path, texture);
+    if (fs::is_directory(resolved)) {
+      entry.Fail(key, "texture " + resolved + " is a folder, not an image file");
+    }
     if (!fs::is_regular_file(resolved)) entry.Fail(key, "texture file not found: " + resolved);
-    NoteInput(resolved);
+    // Decoded once here, as the renderer will, so that `scene check` finds what a run would.
+    if (NoteInput(resolved)) {
+      const std::string problem = engine::CheckTextureFile(resolved);
+      if (!problem.empty()) entry.Fail(key, "texture " + resolved + ": " + problem);
+    }
     return fs::absolute(resolved).string();
   }
 
@@ -150,6 +174,9 @@ class SceneAssembler {
     const std::string resolved = ResolveRelative(entry.file->path, mesh);
     const auto cache_key = std::make_pair(resolved, static_cast<int>(axes));
     if (const auto it = mesh_models_.find(cache_key); it != mesh_models_.end()) return it->second;
+    if (fs::is_directory(resolved)) {
+      entry.Fail(key, "mesh " + resolved + " is a folder, not a mesh file");
+    }
     if (!fs::is_regular_file(resolved)) entry.Fail(key, "mesh file not found: " + resolved);
     MeshFile file;
     try {
@@ -161,6 +188,15 @@ class SceneAssembler {
     for (const auto& m : file.materials) {
       if (!m.texture_path.empty()) NoteInput(m.texture_path);
     }
+    std::size_t triangles = 0;
+    for (const auto& mesh : file.meshes) triangles += mesh.triangle_count();
+    if (stored_triangles_ + triangles > engine::kMaxSceneTriangles) {
+      entry.Fail(key, "mesh " + resolved + " adds " + std::to_string(triangles) +
+                          " triangles to the scene's " + std::to_string(stored_triangles_) +
+                          ", more than the limit of " + std::to_string(engine::kMaxSceneTriangles) +
+                          " (docs/limits.md)");
+    }
+    stored_triangles_ += triangles;
     engine::Model model;
     model.name = resolved;
     std::vector<std::uint32_t> materials;
@@ -187,12 +223,42 @@ class SceneAssembler {
         builder_.PrimitiveModel(engine::Primitive::kPlane),
         engine::MakePose(Vec3::Zero(), 0, 0, 0, Vec3(g.size_m.x(), g.size_m.y(), 1.0)), cls,
         engine::CollisionShape::kAuto, "ground", material);
-    ground_instance_ = 1;
   }
 
   void AddObjects(const Sourced<ObjectConfig>& entry) {
     const ObjectConfig& c = entry.config;
+    if (!c.name.empty()) {
+      // Names given by hand identify an object (annotations, collision events): one each.
+      const auto [it, added] = named_objects_.emplace(c.name, &entry);
+      if (!added) {
+        entry.Fail("name", "object name '" + c.name + "' is already used (" +
+                               Describe(*it->second) + "); give each object its own name");
+      }
+    }
     const std::uint8_t cls = ClassOf(entry, "class", c.class_name);
+    const RepeatConfig& r = c.repeat;
+    // Checked before anything is placed or reserved: how many copies, and where the last ones go.
+    const std::uint64_t copies = static_cast<std::uint64_t>(r.count) * r.rows;
+    const std::size_t free_ids = engine::kMaxInstances - builder_.scene().objects.size();
+    if (copies > free_ids) {
+      entry.Fail(r.count > 1 || r.rows > 1 ? "repeat" : "",
+                 "places " + std::to_string(copies) + " objects where " + std::to_string(free_ids) +
+                     " instance ids are left (a scene holds at most " +
+                     std::to_string(engine::kMaxInstances) +
+                     " objects: instance ids are 16-bit; docs/limits.md)");
+    }
+    for (const int row : {0, r.rows - 1}) {
+      for (const int i : {0, r.count - 1}) {
+        const Vec3 p = c.position_m + i * r.step_m + row * r.row_step_m;
+        if (p.norm() > engine::kMaxCoordinate_m) {
+          entry.Fail("repeat", "copy " + std::to_string(i) + " of row " + std::to_string(row) +
+                                   " lands " + engine::FormatRounded(p.norm()) +
+                                   " m from the origin, beyond the limit of " +
+                                   engine::FormatNumber(engine::kMaxCoordinate_m) +
+                                   " m (docs/limits.md)");
+        }
+      }
+    }
     std::uint32_t model = 0;
     std::string base = c.name;
     if (!c.mesh.empty()) {
@@ -207,8 +273,7 @@ class SceneAssembler {
       material = static_cast<std::int32_t>(builder_.Material(
           ToMaterial(*c.material, TexturePath(entry, "material.texture", c.material->texture))));
     }
-    const RepeatConfig& r = c.repeat;
-    builder_.ReserveObjects(static_cast<std::size_t>(r.count) * r.rows);
+    builder_.ReserveObjects(copies);
     for (int row = 0; row < r.rows; ++row) {
       for (int i = 0; i < r.count; ++i) {
         const Vec3 p = c.position_m + i * r.step_m + row * r.row_step_m;
@@ -217,10 +282,7 @@ class SceneAssembler {
         if (r.count > 1 || r.rows > 1) name += "_" + std::to_string(i);
         const Eigen::Affine3d T = engine::MakePose(p, DegToRad(c.yaw_deg), DegToRad(c.pitch_deg),
                                                    DegToRad(c.roll_deg), c.scale);
-        if (!builder_.AddObject(model, T, cls, c.collision, std::move(name), material)) {
-          entry.Fail("repeat", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                                   " objects (instance ids are 16-bit)");
-        }
+        AIRIS_DEMAND(builder_.AddObject(model, T, cls, c.collision, std::move(name), material));
       }
     }
   }
@@ -234,6 +296,12 @@ class SceneAssembler {
     summary.name = !given.empty() ? given
                                   : fs::path(entry.file->path).stem().string() + "/" +
                                         summary.kind + std::to_string(entry.index_in_file);
+    // Two generators of one name would draw the same random stream and name their objects alike.
+    if (const auto [it, added] = generator_names_.emplace(summary.name, &entry); !added) {
+      entry.Fail(given.empty() ? summary.kind : summary.kind + ".name",
+                 "generator name '" + summary.name + "' is already used (" + Describe(*it->second) +
+                     "); name each generator differently");
+    }
     engine::RandomStream stream = streams.Stream("generators/" + summary.name);
     GeneratorReport report;
     if (g.city) {
@@ -263,19 +331,6 @@ class SceneAssembler {
     summary.trees = report.trees;
     summary.bushes = report.bushes;
     return summary;
-  }
-
-  /// Every object's pose must be finite with a non-degenerate scale (inputs are checked, but
-  /// products of large values can still overflow).
-  void CheckObjects() const {
-    const auto& objects = builder_.scene().objects;
-    for (const auto& o : objects) {
-      const double det = o.T_WO.linear().determinant();
-      if (!o.T_WO.matrix().allFinite() || !std::isfinite(det) || std::abs(det) < 1e-12) {
-        throw engine::ConfigError({doc_.path, 0, 0}, "",
-                                  "object '" + o.name + "' has a non-finite or zero-scale pose");
-      }
-    }
   }
 
   /// The names datasets give image streams (engine::CalcDatasetNamePrefixes: a name another
@@ -343,6 +398,7 @@ class SceneAssembler {
     v.on_ground = c.start.on_ground;
     v.where = entry.Where();
     v.key_path = entry.key_path;
+    v.locate = [entry](const std::string& key) { return entry.Where(key); };
     v.spec = ReadVehicleSpec(entry);
     v.autopilot = c.autopilot;
     CheckAutopilot(entry, *v.spec, earlier);
@@ -377,22 +433,25 @@ class SceneAssembler {
         }
       }
     }
-    if (has_ground && v.start.p_W.z() > 0.0) {
-      entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts below the ground (z = " +
-                                             engine::FormatNumber(v.start.p_W.z()) +
-                                             " m; NED z is down, so heights are negative)");
+    if (has_ground && !v.on_ground) {
+      // The body box, not only its centre, must be above the ground (it may touch it).
+      const engine::Vec3 half = 0.5 * v.spec->CalcRigidBodyConfig().box_size_m;
+      const engine::Mat3 R = v.start.q_WB.toRotationMatrix();
+      const double lowest_z = v.start.p_W.z() + R.row(2).cwiseAbs().dot(half);
+      if (lowest_z > kStartTolerance_m) {
+        entry.Fail(
+            "start.position_ned_m",
+            "vehicle '" + c.name + "' starts " + engine::FormatRounded(lowest_z) +
+                " m into the ground (its body box reaches z = " + engine::FormatRounded(lowest_z) +
+                " m; NED z is down, so heights are negative; or set start.on_ground)");
+      }
     }
-    const engine::StaticScene& scene = builder_.scene();
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-      const engine::StaticObject& o = scene.objects[i];
-      if (o.collision == engine::CollisionShape::kNone || o.instance_id == ground_instance_)
-        continue;
-      const Eigen::Vector3f p_O = (o.T_WO.inverse() * v.start.p_W).cast<float>();
-      if (!scene.models[o.model].bounds.contains(p_O)) continue;
-      const engine::SemanticClass* cls = scene.FindClass(o.class_id);
-      entry.Fail("start.position_ned_m", "vehicle '" + c.name + "' starts inside object '" +
-                                             o.name + "' (class " + (cls ? cls->name : "?") +
-                                             ", instance " + std::to_string(o.instance_id) + ")");
+    const double speed = v.start.v_W.norm();
+    if (speed >= physics_max_speed_m_s_) {
+      entry.Fail("start.velocity_ned_m_s", "a start speed of " + engine::FormatNumber(speed) +
+                                               " m/s is at or above physics.max_speed_m_s (" +
+                                               engine::FormatNumber(physics_max_speed_m_s_) +
+                                               " m/s), where the run stops");
     }
     return v;
   }
@@ -429,10 +488,16 @@ class SceneAssembler {
 
   /// An `autopilot:` block that fits its vehicle (a channel per actuator) and uses its own PX4
   /// instance (ports).
-  static void CheckAutopilot(const Sourced<VehicleEntryConfig>& entry, const VehicleSpec& spec,
-                             const std::vector<VehicleDescription>& earlier) {
+  void CheckAutopilot(const Sourced<VehicleEntryConfig>& entry, const VehicleSpec& spec,
+                      const std::vector<VehicleDescription>& earlier) const {
     const engine::mavlink::AutopilotConfig& a = entry.config.autopilot;
     if (a.kind != engine::mavlink::AutopilotKind::kPx4) return;
+    try {
+      // HIL_SENSOR messages carry the sensors' samples: at most one per physics tick.
+      engine::RequireRate("sensor_rate_hz", a.sensor_rate_hz, physics_rate_hz_);
+    } catch (const engine::InvalidField& e) {
+      entry.Fail("autopilot.sensor_rate_hz", e.problem());
+    }
     const std::vector<int>& map = a.motor_map;
     if (!map.empty()) {
       const int actuators = spec.Build(entry.config.name)->actuator_count();
@@ -442,7 +507,7 @@ class SceneAssembler {
                        std::to_string(actuators) + " actuators (one PX4 output per actuator)");
       }
       for (std::size_t i = 0; i < map.size(); ++i) {
-        if (std::count(map.begin(), map.end(), map[i]) > 1) {
+        if (std::count(map.begin(), map.begin() + static_cast<std::ptrdiff_t>(i), map[i]) > 0) {
           entry.Fail("autopilot.motor_map[" + std::to_string(i) + "]",
                      "channel " + std::to_string(map[i]) + " drives two actuators");
         }
@@ -484,17 +549,38 @@ class SceneAssembler {
                       entry.PathOf("overrides"));
   }
 
-  /// Records a mesh or texture file the scene reads (once, in the order of first use).
-  void NoteInput(const std::string& path) const {
-    if (std::find(inputs_.begin(), inputs_.end(), path) == inputs_.end()) inputs_.push_back(path);
+  /// Records a mesh or texture file the scene reads (once, in the order of first use); true when it
+  /// is new.
+  bool NoteInput(const std::string& path) const {
+    if (!input_set_.insert(path).second) return false;
+    inputs_.push_back(path);
+    return true;
   }
+
+  /// "file:line" of an entry, for messages that point at two.
+  template <class T>
+  static std::string Describe(const Sourced<T>& entry) {
+    const engine::SourceLocation w = entry.Where();
+    return entry.key_path + " at " + w.file + ":" + std::to_string(w.line);
+  }
+
+  // A start may touch a surface; deeper than this into one is overlapping it.
+  static constexpr double kStartTolerance_m = 1e-3;
 
   SceneDocument doc_;
   SceneLoadOptions options_;
+  double physics_max_speed_m_s_ =
+      doc_.physics ? doc_.physics->config.max_speed_m_s : engine::PhysicsConfig{}.max_speed_m_s;
+  double physics_rate_hz_ =
+      doc_.physics ? doc_.physics->config.rate_hz : engine::PhysicsConfig{}.rate_hz;
   mutable std::vector<std::string> inputs_;  // mesh and texture files, for Scene::files
+  mutable std::set<std::string> input_set_;
+  std::map<std::string, const Sourced<ClassConfig>*> defined_classes_;
+  std::map<std::string, const Sourced<ObjectConfig>*> named_objects_;
+  std::map<std::string, const Sourced<GeneratorConfig>*> generator_names_;
+  std::size_t stored_triangles_ = 0;
   engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
-  std::uint32_t ground_instance_ = engine::kNoInstance;
   SunPosition sun_;  // set by MakeLighting
 };
 

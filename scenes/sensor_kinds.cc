@@ -47,10 +47,14 @@ void SensorEntry::ReadFromYaml(const YamlReader& reader, const YAML::Node& node,
   const SensorKind* found = nullptr;
   YAML::Node value;
   YAML::Mark value_mark;
+  bool named = false;
   for (const auto& item : node) {
-    const std::string key = item.first.Scalar();
+    const std::string& key =
+        reader.RequireScalar(item.first, item.first.Mark(), key_path, "a plain name as a key");
     const YAML::Mark key_mark = item.first.Mark();
     if (key == "name") {
+      if (named) reader.Fail(key_mark, yaml_detail::JoinKey(key_path, "name"), "duplicate key");
+      named = true;
       reader.Read(item.second, yaml_detail::JoinKey(key_path, "name"), name);
       try {
         engine::RequireName("name", name);
@@ -66,7 +70,7 @@ void SensorEntry::ReadFromYaml(const YamlReader& reader, const YAML::Node& node,
     if (!kind) {
       std::vector<std::string> keys = kinds;
       keys.emplace_back("name");
-      std::string problem = "unknown key '" + key + "'";
+      std::string problem = "unknown key " + engine::QuoteValue(key);
       if (const auto close = engine::ClosestMatch(key, keys)) {
         problem += " (did you mean '" + *close + "'?)";
       }

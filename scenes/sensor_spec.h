@@ -35,6 +35,8 @@ class SensorSpec {
   /// The engine sensor named `name`. Throws InvalidField on a config its class refuses.
   virtual std::unique_ptr<engine::Sensor> Build(const std::string& name,
                                                 SensorBuildContext& context) const = 0;
+  /// True when Build needs the render scene (a GL context): cameras.
+  virtual bool renders() const = 0;
   /// The names of the image streams a sensor named `name` of this kind makes (datasets write a
   /// folder per stream); empty for sensors without images.
   virtual std::vector<std::string> ImageStreamNames(const std::string& name) const = 0;
@@ -55,13 +57,13 @@ class SensorSpecOf final : public SensorSpec {
   }
   std::unique_ptr<engine::Sensor> Build(const std::string& name,
                                         SensorBuildContext& context) const override {
-    if constexpr (std::is_constructible_v<SensorT, std::string, const Config&,
-                                          engine::RandomStream>) {
-      return std::make_unique<SensorT>(name, config_, context.stream);
-    } else {
+    if constexpr (kRenders) {
       return std::make_unique<SensorT>(name, config_, context.render_scene());
+    } else {
+      return std::make_unique<SensorT>(name, config_, context.stream);
     }
   }
+  bool renders() const override { return kRenders; }
   std::vector<std::string> ImageStreamNames(const std::string& name) const override {
     if constexpr (requires { SensorT::StreamNames(name); }) {
       return SensorT::StreamNames(name);
@@ -71,6 +73,8 @@ class SensorSpecOf final : public SensorSpec {
   }
 
  private:
+  static constexpr bool kRenders =
+      !std::is_constructible_v<SensorT, std::string, const Config&, engine::RandomStream>;
   std::string_view kind_;
   Config config_;
 };

@@ -22,6 +22,8 @@ class VehicleSpec {
   virtual engine::RigidBodyConfig CalcRigidBodyConfig() const = 0;
   /// The engine vehicle named `name`. Throws InvalidField on a config its class refuses.
   virtual std::unique_ptr<engine::Vehicle> Build(const std::string& name) const = 0;
+  /// The fastest a mission may ask it to fly (m/s): its controller's limit.
+  virtual double CalcMaxSpeed_m_s() const = 0;
 };
 
 /// The VehicleSpec of config `Config` built as `VehicleT(name, config)`.
@@ -37,6 +39,7 @@ class VehicleSpecOf final : public VehicleSpec {
   std::unique_ptr<engine::Vehicle> Build(const std::string& name) const override {
     return std::make_unique<VehicleT>(name, config_);
   }
+  double CalcMaxSpeed_m_s() const override { return config_.CalcMaxSpeed_m_s(); }
 
  private:
   std::string_view kind_;

@@ -17,9 +17,15 @@ namespace airis::scenes {
 /// the environment about the scene's origin, an Embree ray caster over the collidable geometry,
 /// each vehicle (of its kind and preset, in its start state) and its sensors. Random
 /// streams derive from the scene seed by name: `environment/wind`, `vehicles/NAME/SENSOR`. Throws
-/// ConfigError naming the vehicle on a config the engine rejects (a sensor faster than the scene's
-/// physics rate, an on_ground vehicle with nothing below it, ...).
+/// ConfigError at the key of each config the engine rejects (a sensor faster than the scene's
+/// physics rate, an on_ground vehicle with nothing below it, a vehicle whose body overlaps an
+/// object or another vehicle where it starts, ...), every vehicle's mistakes together.
 std::unique_ptr<engine::World> BuildWorld(const Scene& scene);
+
+/// As BuildWorld, without a GL context: every vehicle and sensor is built and checked as for a run
+/// except the cameras, whose configs are checked (nothing renders). `airis scene check` builds
+/// this, so that it refuses what a run would.
+std::unique_ptr<engine::World> BuildWorldWithoutCameras(const Scene& scene);
 
 /// The immutable parts of a scene's World, which worlds built again from the same loaded scene can
 /// share instead of making each anew: the static scene, the ray caster over it (its Cast is const

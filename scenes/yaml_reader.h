@@ -17,6 +17,7 @@
 #include <concepts>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -25,6 +26,7 @@
 
 #include "engine/core/config.h"
 #include "engine/core/error.h"
+#include "engine/core/limits.h"
 
 namespace airis::scenes {
 
@@ -77,15 +79,55 @@ inline std::string JoinKey(const std::string& prefix, const std::string& key) {
 
 }  // namespace yaml_detail
 
+/// What the readers of one load share: when collecting, the mistakes found so far.
+class YamlReadState {
+ public:
+  /// @param collect true: a mistake in a key or list entry is recorded and reading goes on with
+  /// the next one (the loader then calls ThrowIfAny); false: the first mistake is thrown.
+  explicit YamlReadState(bool collect = false) : collect_(collect) {}
+  bool collecting() const { return collect_; }
+  engine::ErrorCollector& errors() { return errors_; }
+  /// Throws every mistake collected, if any.
+  void ThrowIfAny() const { errors_.ThrowIfAny(); }
+
+ private:
+  bool collect_;
+  engine::ErrorCollector errors_;
+};
+
 /// Reads config structs and values from YAML nodes of one file, reporting every mistake as a
 /// ConfigError that names the file, the 1-based line and column, and the key path. Missing keys
 /// keep the struct's defaults; unknown keys are errors with the closest valid key suggested.
+/// Values quoted in messages are cut short (engine::QuoteValue); strings must be UTF-8; no list
+/// holds more than kMaxListEntries entries.
 class YamlReader {
  public:
   /// @param file the file name printed in messages (as the user wrote it, or resolved).
-  explicit YamlReader(std::string file) : file_(std::move(file)) {}
+  /// @param state shared with the other readers of the same load (a fresh one when null).
+  explicit YamlReader(std::string file, std::shared_ptr<YamlReadState> state = nullptr)
+      : file_(std::move(file)),
+        state_(state ? std::move(state) : std::make_shared<YamlReadState>()) {}
 
   const std::string& file() const { return file_; }
+  /// A reader of `file` sharing this one's state (an included file, a preset's overrides).
+  YamlReader ForFile(std::string file) const { return YamlReader(std::move(file), state_); }
+  const std::shared_ptr<YamlReadState>& state() const { return state_; }
+
+  /// Runs `read()`. When the state collects, a ConfigError it throws is recorded and false
+  /// returned (reading goes on); otherwise the error passes through.
+  template <class F>
+  bool Collect(F&& read) const {
+    if (!state_->collecting()) {
+      read();
+      return true;
+    }
+    return state_->errors().Try(read);
+  }
+
+  /// The mark of `field` (a path below `node` such as `mount.roll_deg`, `species[2].height_m` or
+  /// `[3]`): the deepest part of it present in `node`, or `mark` when none is.
+  static YAML::Mark FindFieldMark(const YAML::Node& node, const YAML::Mark& mark,
+                                  std::string_view field);
 
   /// 1-based location of a yaml-cpp mark (0-based) in this reader's file.
   engine::SourceLocation Where(const YAML::Mark& mark) const;
@@ -128,10 +170,11 @@ class YamlReader {
   }
 
   /// Finds `key` in map `node`: sets its value and its key's mark; false when absent.
-  static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
+  static bool FindKey(const YAML::Node& node, std::string_view key, YAML::Node* value,
                       YAML::Mark* mark);
 
-  /// Short description of a node's kind for "got ..." ("a list", "a map", "nothing", "'text'").
+  /// Short description of a node's kind for "got ..." ("a list", "a map", "nothing", "'text'"
+  /// cut to engine::kMaxQuotedChars).
   static std::string Describe(const YAML::Node& node);
 
   /// Parses a finite double from a scalar, or throws ConfigError.
@@ -171,10 +214,18 @@ class YamlReader {
   [[noreturn]] void FailInvalidField(const YAML::Node& node, const YAML::Mark& mark,
                                      const std::string& key_path,
                                      const engine::InvalidField& e) const;
+  /// Refuses (or, collecting, records) each key of `node` not in `known`.
   void RejectUnknownKeys(
       const YAML::Node& node, const std::string& key_path, const std::vector<std::string>& known,
       const std::vector<std::pair<std::string, std::string>>& renamed = {}) const;
+  /// Throws ConfigError unless a list of `size` entries is within kMaxListEntries.
+  void RequireListSize(std::size_t size, const YAML::Mark& mark, const std::string& key_path) const;
+  /// Throws ConfigError unless `text` is UTF-8.
+  void RequireUtf8(const std::string& text, const YAML::Mark& mark,
+                   const std::string& key_path) const;
+
   std::string file_;
+  std::shared_ptr<YamlReadState> state_;
 };
 
 class YamlReader::FieldReader {
@@ -188,7 +239,8 @@ class YamlReader::FieldReader {
     YAML::Node value;
     YAML::Mark mark;
     if (FindKey(node_, key, &value, &mark)) {
-      reader_.ReadValue(value, mark, yaml_detail::JoinKey(key_path_, key), member);
+      reader_.Collect(
+          [&] { reader_.ReadValue(value, mark, yaml_detail::JoinKey(key_path_, key), member); });
     }
   }
 
@@ -213,6 +265,7 @@ void YamlReader::ReadStruct(const YAML::Node& node, const YAML::Mark& mark,
                             const std::string& key_path, T& out,
                             const std::vector<std::string>& ignored_keys) const {
   // `key:` with nothing after it means "all defaults".
+  const std::size_t errors_before = state_->errors().count();
   if (!node.IsNull()) {
     if (!node.IsMap()) Fail(mark, key_path, "expected a map of keys (got " + Describe(node) + ")");
     FieldReader fields(*this, node, key_path);
@@ -221,7 +274,8 @@ void YamlReader::ReadStruct(const YAML::Node& node, const YAML::Mark& mark,
     known.insert(known.end(), ignored_keys.begin(), ignored_keys.end());
     RejectUnknownKeys(node, key_path, known, fields.renamed());
   }
-  Validate(node, mark, key_path, out);
+  // A struct that was read only in part would report the defaults left in it.
+  if (state_->errors().count() == errors_before) Validate(node, mark, key_path, out);
 }
 
 template <class T>
@@ -242,11 +296,12 @@ void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark,
   } else if constexpr (std::is_floating_point_v<T>) {
     const double v = ParseDouble(node, mark, key_path);
     if (std::abs(v) > static_cast<double>(std::numeric_limits<T>::max())) {
-      Fail(mark, key_path, "out of range (got " + node.Scalar() + ")");
+      Fail(mark, key_path, "out of range (got " + engine::QuoteValue(node.Scalar()) + ")");
     }
     out = static_cast<T>(v);
   } else if constexpr (std::is_same_v<T, std::string>) {
     out = RequireScalar(node, mark, key_path, "a string");
+    RequireUtf8(out, mark, key_path);
   } else if constexpr (std::is_enum_v<T>) {
     const std::string& text = RequireScalar(node, mark, key_path, "one of the names");
     const auto parsed = engine::ParseEnum<T>(text);
@@ -281,11 +336,14 @@ void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark,
       return;
     }
     RequireSequence(node, mark, key_path, "a list");
+    RequireListSize(node.size(), mark, key_path);
     out.clear();
     out.resize(node.size());
-    for (std::size_t i = 0; i < node.size(); ++i) {
-      const YAML::Node item = node[i];
-      ReadValue(item, item.Mark(), key_path + "[" + std::to_string(i) + "]", out[i]);
+    std::size_t i = 0;
+    for (const YAML::Node& item : node) {
+      auto& element = out[i];
+      const std::string item_path = key_path + "[" + std::to_string(i++) + "]";
+      Collect([&] { ReadValue(item, item.Mark(), item_path, element); });
     }
   } else if constexpr (IsStdOptional<T>::value) {
     if (!out) out.emplace();
@@ -300,10 +358,13 @@ void YamlReader::ReadValue(const YAML::Node& node, const YAML::Mark& mark,
 }
 
 /// Loads a YAML file, turning yaml-cpp's parse errors into ConfigError with file:line:col. Throws
-/// ConfigError naming the path when the file cannot be read.
+/// ConfigError naming the path when it is not a readable file, is larger than kMaxYamlFileBytes,
+/// holds more than one YAML document, or more than kMaxYamlValues values once its aliases are
+/// expanded (a few hundred bytes of nested aliases would otherwise read as billions).
 YAML::Node LoadYamlFile(const std::string& path);
 
-/// Parses YAML text (for tests and embedded documents); `file` names it in messages.
+/// Parses YAML text (for tests and embedded documents); `file` names it in messages. Refuses text
+/// of more than one document as LoadYamlFile does.
 YAML::Node LoadYamlString(const std::string& text, const std::string& file);
 
 /// Reads a whole YAML file into a config struct T (starting from T's defaults) and validates it.

@@ -19,7 +19,7 @@ static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void BarometerConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("pressure_noise_pa", pressure_noise_pa);
   engine::RequireInRange("drift_sigma", drift_sigma, 0.0, 0.5);

@@ -42,7 +42,7 @@ double Decay(double initial, double final_value, double tau_s, TimeNs start_ns, 
 }  // namespace
 
 void GpsConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireInRange("latency_s", latency_s, 0.0, 10.0);
   engine::RequireNonNegative("startup_delay_s", startup_delay_s);

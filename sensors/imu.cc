@@ -32,7 +32,7 @@ static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void ImuConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("gyro_noise_density_deg_s_sqrt_hz", gyro_noise_density_deg_s_sqrt_hz);
   engine::RequireNonNegative("gyro_bias_instability_deg_h", gyro_bias_instability_deg_h);

@@ -20,7 +20,7 @@ static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void LidarConfig::Validate() const {
-  engine::RequirePositive("rotation_rate_hz", rotation_rate_hz);
+  engine::RequireRate("rotation_rate_hz", rotation_rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireInRange("channels", channels, 1, 1024);
   engine::RequireInRange("vertical_fov_upper_deg", vertical_fov_upper_deg, -90.0, 90.0);
@@ -41,8 +41,11 @@ void LidarConfig::Validate() const {
     engine::RequireInRange("channel_elevations_deg[" + std::to_string(i) + "]",
                            channel_elevations_deg[i], -90.0, 90.0);
   }
-  engine::Require(static_cast<double>(CalcElevations_deg().size()) * CalcColumns() <= 1e7,
-                  "horizontal_resolution_deg", "gives more than 10,000,000 points per scan");
+  const double rays = static_cast<double>(CalcElevations_deg().size()) * CalcColumns();
+  engine::Require(
+      rays <= static_cast<double>(engine::kMaxLidarRaysPerScan), "horizontal_resolution_deg",
+      "gives " + engine::FormatNumber(rays) + " rays per scan, more than the limit of " +
+          std::to_string(engine::kMaxLidarRaysPerScan) + " (docs/limits.md)");
 }
 
 void LidarConfig::ValidateForPhysicsRate(double physics_rate_hz) const {

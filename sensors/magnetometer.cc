@@ -19,7 +19,7 @@ static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void MagnetometerConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("noise_gauss", noise_gauss);
   engine::RequireNonNegative("field_update_distance_m", field_update_distance_m);

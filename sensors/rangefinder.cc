@@ -20,7 +20,7 @@ static_assert(std::size(kColumnDocs) == std::size(kColumns));
 }  // namespace
 
 void RangefinderConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
   ValidateNested("mount", mount);
   engine::RequireNonNegative("min_range_m", min_range_m);
   engine::RequirePositive("max_range_m", max_range_m);

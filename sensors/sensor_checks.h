@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "engine/core/error.h"
+#include "engine/core/limits.h"
 
 namespace airis::sensors {
 
@@ -22,8 +23,8 @@ inline constexpr double kGaussMarkovAllanPeak = 0.6173642831;
 /// sigma_A = B sqrt(2 ln 2 / pi) = 0.664 B. Sensors put their bias model's Allan plateau there.
 inline constexpr double kFlickerAllanFloor = 0.66428247026796;
 
-/// Throws InvalidField(field) unless 0 < rate_hz <= physics_rate_hz: a sensor cannot sample more
-/// often than the physics tick that produces its truth.
+/// Throws InvalidField(field) unless kMinRate_hz <= rate_hz <= physics_rate_hz: a sensor cannot
+/// sample more often than the physics tick that produces its truth.
 void RequireRateWithinPhysics(std::string_view field, double rate_hz, double physics_rate_hz);
 
 /// Runs `config.Validate()` and prefixes the field of any InvalidField with `prefix` and a dot

@@ -33,7 +33,8 @@ struct BrownConradyDistortion {
     v.Field("p2", p2, "tangential distortion coefficient p2");
     v.Field("k3", k3, "radial distortion, r^6 coefficient");
   }
-  /// Throws InvalidField on a non-finite coefficient.
+  /// Throws InvalidField on a coefficient that is not finite or beyond kMaxRadialDistortion /
+  /// kMaxTangentialDistortion (limits.h).
   void Validate() const;
 
   bool IsIdentity() const { return k1 == 0 && k2 == 0 && p1 == 0 && p2 == 0 && k3 == 0; }
@@ -62,8 +63,10 @@ struct CameraIntrinsics {
   static CameraIntrinsics FromHorizontalFov(int width_px, int height_px, double hfov_deg,
                                             double near_m = 0.1, double far_m = 1000.0);
 
-  /// Throws InvalidField on a non-positive size or focal length, a bad clip range or bad
-  /// distortion.
+  /// Throws InvalidField on a size beyond kMaxImageSide_px / kMaxImagePixels, a focal length
+  /// giving a field of view wider than 170 deg, a principal point outside the image, a bad clip
+  /// range, or a distortion that folds inside the image or makes its undistorted view smaller than
+  /// a quarter or larger than four times the image (CheckUndistortedView).
   void Validate() const;
 
   /// Pixel of a point in the camera frame C (distortion applied); nullopt behind the camera (z <=
@@ -72,6 +75,12 @@ struct CameraIntrinsics {
   /// Unit ray in C through pixel (u, v) (distortion inverted); nullopt where Undistort fails.
   std::optional<Eigen::Vector3d> CalcRay(const Eigen::Vector2d& uv) const;
 };
+
+/// Checks the undistorted view of `k` (normalised coordinates [lo, hi] that the image's pixels
+/// see): between a quarter and four times the image on each axis (the renderer draws that view
+/// then remaps it). Throws InvalidField("distortion") otherwise.
+void CheckUndistortedExtent(const CameraIntrinsics& k, const Eigen::Vector2d& lo,
+                            const Eigen::Vector2d& hi);
 
 /// Rotation from the optical frame C to a sensor frame S that follows the body convention (x
 /// forward, y right, z down): a camera whose mount is the identity looks along body x with image

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "engine/core/config.h"
 #include "engine/core/error.h"
 
 namespace airis::engine {
@@ -15,7 +16,7 @@ constexpr std::int64_t kMicroHzPerHz = 1'000'000;
 TimeNs SecondsToNs(double seconds, const char* field) {
   if (!std::isfinite(seconds) || std::abs(seconds) > 9.2e9) {
     throw InvalidField(field, "must be a finite number of seconds below 9.2e9 (got " +
-                                  std::to_string(seconds) + ")");
+                                  FormatNumber(seconds) + ")");
   }
   return static_cast<TimeNs>(std::llround(seconds * 1e9));
 }
@@ -24,9 +25,9 @@ SimClock::SimClock(TimeNs step_ns) : step_ns_(step_ns) { AIRIS_DEMAND(step_ns > 
 
 SimClock SimClock::FromRateHz(double rate_hz, double min_hz, double max_hz) {
   if (!std::isfinite(rate_hz) || rate_hz < min_hz || rate_hz > max_hz) {
-    throw InvalidField("rate_hz", "must be between " + std::to_string(min_hz) + " and " +
-                                      std::to_string(max_hz) + " Hz (got " +
-                                      std::to_string(rate_hz) + ")");
+    throw InvalidField("rate_hz", "must be between " + FormatNumber(min_hz) + " and " +
+                                      FormatNumber(max_hz) + " Hz (got " + FormatNumber(rate_hz) +
+                                      ")");
   }
   const double step = 1e9 / rate_hz;
   const double whole = std::round(step);
@@ -34,7 +35,7 @@ SimClock SimClock::FromRateHz(double rate_hz, double min_hz, double max_hz) {
     throw InvalidField("rate_hz",
                        "the tick period 1e9 / rate_hz must be a whole number of nanoseconds "
                        "(got " +
-                           std::to_string(rate_hz) + " Hz, period " + std::to_string(step) +
+                           FormatNumber(rate_hz) + " Hz, period " + FormatRounded(step, 9) +
                            " ns; try 250, 500, 1000, 2000 or 4000)");
   }
   return SimClock(static_cast<TimeNs>(whole));
@@ -44,12 +45,12 @@ RateSchedule::RateSchedule(double rate_hz, TimeNs start_ns, std::int64_t first_e
     : start_ns_(start_ns), first_event_(first_event), next_index_(first_event) {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 1e9) {
     throw InvalidField("rate_hz",
-                       "must be > 0 and at most 1e9 Hz (got " + std::to_string(rate_hz) + ")");
+                       "must be > 0 and at most 1e9 Hz (got " + FormatNumber(rate_hz) + ")");
   }
   AIRIS_DEMAND(first_event >= 0);
   rate_uhz_ = std::llround(rate_hz * kMicroHzPerHz);
   if (rate_uhz_ <= 0) {
-    throw InvalidField("rate_hz", "must be at least 1e-6 Hz (got " + std::to_string(rate_hz) + ")");
+    throw InvalidField("rate_hz", "must be at least 1e-6 Hz (got " + FormatNumber(rate_hz) + ")");
   }
   constexpr std::int64_t kNsMicroHz = kNsPerSecond * kMicroHzPerHz;  // 1e15: one period's numerator
   period_quotient_ = kNsMicroHz / rate_uhz_;

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/core/limits.h"
 
 namespace airis::engine {
 
@@ -72,8 +73,21 @@ std::string EnumChoices() {
   return out;
 }
 
-/// Shortest text that reads back as the same double (for "got ..." in messages).
+/// Shortest text that reads back as the same double (for "got ..." in messages); whole numbers
+/// below 1e15 keep their digits (200000, not 2e+05).
 std::string FormatNumber(double value);
+/// `value` rounded to `significant` digits (whole numbers past that keep their integer digits),
+/// for computed quantities in messages: 102.2 px, 0.01553 m, 1.705e-06.
+std::string FormatRounded(double value, int significant = 4);
+
+/// Longest user text quoted in a message (QuoteValue), in characters.
+inline constexpr std::size_t kMaxQuotedChars = 80;
+/// `text` as messages quote it: in single quotes, control characters and bytes outside ASCII
+/// escaped (\xNN), and cut after kMaxQuotedChars with its full length given, so a 50 MB value
+/// makes a one-line message.
+std::string QuoteValue(std::string_view text);
+/// True when `text` is valid UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool IsValidUtf8(std::string_view text);
 
 /// Checks for Validate(). Each throws InvalidField(field, "...(got value)") when it fails.
 void RequireFinite(std::string_view field, double value);
@@ -81,6 +95,18 @@ void RequirePositive(std::string_view field, double value);     ///< finite and 
 void RequireNonNegative(std::string_view field, double value);  ///< finite and >= 0
 void RequireInRange(std::string_view field, double value, double lo, double hi);  ///< lo <= v <= hi
 void Require(bool condition, std::string_view field, std::string_view problem);
+/// A simulated duration or timeout (s): finite, >= 0 and at most kMaxMissionDuration_s.
+void RequireDuration(std::string_view field, double seconds);
+/// A position (or [north, east] point) within kMaxCoordinate_m of the world origin.
+void RequireWithinWorld(std::string_view field, std::span<const double> components);
+template <int N>
+void RequireWithinWorld(std::string_view field, const Eigen::Matrix<double, N, 1>& p) {
+  RequireWithinWorld(field, std::span<const double>(p.data(), static_cast<std::size_t>(N)));
+}
+/// Rates of sensors, cameras and logs: finite, >= kMinRate_hz (limits.h) and at most
+/// `max_rate_hz` (the physics rate where it is known: nothing samples more often than the truth
+/// it reads is made); the message names the limit.
+void RequireRate(std::string_view field, double rate_hz, double max_rate_hz);
 /// Names of things that become file and folder names (vehicles, sensors, cameras, classes,
 /// objects): 1 to kMaxNameLength letters, digits, '_' or '-'.
 inline constexpr std::size_t kMaxNameLength = 64;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,10 @@ struct Mission {
   std::string name;
   std::vector<MissionTrack> tracks;  ///< at least one; vehicles differ
   std::string file;                  ///< the mission file, for messages
+  /// Where a key of the file is (`vehicle`, `steps[2].goto.speed_m_s`,
+  /// `vehicles.drone1.steps[0].takeoff`): the deepest part present, for mistakes found after
+  /// reading (checks against the scene). Empty for missions made in code.
+  std::function<SourceLocation(const std::string& key)> locate;
 };
 
 }  // namespace airis::engine

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <Eigen/Geometry>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "engine/core/clock.h"
 #include "engine/core/error.h"
@@ -46,6 +49,21 @@ struct StepPlan {
   const LocalNedFrame* frame = nullptr;
 };
 
+/// What the scene and vehicle allow a mission, for checking its steps before the flight
+/// (MissionStepSpec::Check): a step that cannot be flown is refused at load, naming the step.
+struct MissionLimits {
+  /// Where the vehicle may be sent, world NED (m): the scene's objects, ground and vehicle starts
+  /// with a margin around them, from kMaxFlightHeight_m above the origin down to the ground.
+  Eigen::AlignedBox3d region_W;
+  bool has_ground = false;       ///< a ground plane at z = 0 (nothing below it can be reached)
+  double max_speed_m_s = 0.0;    ///< the vehicle's top speed (its controller's limit)
+  double physics_rate_hz = 0.0;  ///< the highest rate a capture may ask for
+  /// The names a capture step may give: the track's vehicle's cameras and their image streams.
+  std::vector<std::string> cameras;
+  /// True when the box (world NED) lies entirely inside one solid object of the scene.
+  std::function<bool(const Eigen::AlignedBox3d&)> inside_object;
+};
+
 /// What a step reads when it starts and on every tick.
 struct StepContext {
   TimeNs now_ns = 0;
@@ -83,8 +101,9 @@ class ActiveStep {
 /// A step as written in a mission file: its settings and how it is flown. Each kind is a config
 /// struct with Visit/Validate (the mission reader fills it) and the members StepSpecOf needs:
 /// `kKind` (its file key), `kNeedsHost`, `EstimateDuration_s(StepPlan&)` and
-/// `Start(const StepContext&, const VehicleCommand& hold)`; the kinds are registered once, in
-/// scenes/mission_file.cc.
+/// `Start(const StepContext&, const VehicleCommand& hold)`, and optionally
+/// `Check(const MissionLimits&, const StepPlan&)`; the kinds are registered once, in
+/// scenes/mission_step_kinds.cc.
 class MissionStepSpec {
  public:
   virtual ~MissionStepSpec() = default;
@@ -94,6 +113,11 @@ class MissionStepSpec {
   virtual bool needs_host() const = 0;
   /// Nominal duration (s) flown from `plan.position_W`; moves the plan to the step's end.
   virtual double EstimateDuration_s(StepPlan& plan) const = 0;
+  /// Throws InvalidField (a field of the step) when the step cannot be flown within `limits`
+  /// starting at `plan` (targets outside the region or under the ground, speeds beyond the
+  /// vehicle's, names of cameras the vehicle lacks). Kinds without scene-dependent settings accept
+  /// everything.
+  virtual void Check(const MissionLimits& limits, const StepPlan& plan) const = 0;
   /// Starts the step. `hold` holds the previous step's target (or where the vehicle is, when the
   /// previous step had none), at rest.
   virtual std::unique_ptr<ActiveStep> Start(const StepContext& context,
@@ -110,6 +134,9 @@ class StepSpecOf final : public MissionStepSpec {
   bool needs_host() const override { return Config::kNeedsHost; }
   double EstimateDuration_s(StepPlan& plan) const override {
     return config_.EstimateDuration_s(plan);
+  }
+  void Check(const MissionLimits& limits, const StepPlan& plan) const override {
+    if constexpr (requires { config_.Check(limits, plan); }) config_.Check(limits, plan);
   }
   std::unique_ptr<ActiveStep> Start(const StepContext& context,
                                     const VehicleCommand& hold) const override {

@@ -120,17 +120,43 @@ double Path::CalcSpeedLimit(double s_m, double max_speed_m_s, double lateral_acc
   return v;
 }
 
+namespace {
+
+/// The corners of a polygon given as two (a rectangle) or more corners.
+std::vector<Eigen::Vector2d> PolygonCorners(std::span<const Eigen::Vector2d> corners) {
+  if (corners.size() != 2) return {corners.begin(), corners.end()};
+  const Eigen::Vector2d a = corners[0].cwiseMin(corners[1]);
+  const Eigen::Vector2d b = corners[0].cwiseMax(corners[1]);
+  return {{a.x(), a.y()}, {b.x(), a.y()}, {b.x(), b.y()}, {a.x(), b.y()}};
+}
+
+}  // namespace
+
+double CalcPolygonArea_m2(std::span<const Eigen::Vector2d> corners) {
+  const std::vector<Eigen::Vector2d> poly = PolygonCorners(corners);
+  double twice = 0.0;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    twice += poly[j].x() * poly[i].y() - poly[i].x() * poly[j].y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
+double CalcPolygonWidth_m(std::span<const Eigen::Vector2d> corners, double heading_rad) {
+  const Eigen::Vector2d v_axis(-std::sin(heading_rad), std::cos(heading_rad));
+  double v_min = std::numeric_limits<double>::infinity(), v_max = -v_min;
+  for (const Eigen::Vector2d& p : PolygonCorners(corners)) {
+    v_min = std::min(v_min, p.dot(v_axis));
+    v_max = std::max(v_max, p.dot(v_axis));
+  }
+  return v_max - v_min;
+}
+
 std::vector<Vec3> CalcLawnmowerWaypoints(std::span<const Vec3> polygon_ned_m, double spacing_m,
                                          double heading_rad, double down_m) {
   AIRIS_DEMAND(spacing_m > 0.0);
-  std::vector<Eigen::Vector2d> poly;
-  if (polygon_ned_m.size() == 2) {
-    const Vec3 a = polygon_ned_m[0].cwiseMin(polygon_ned_m[1]);
-    const Vec3 b = polygon_ned_m[0].cwiseMax(polygon_ned_m[1]);
-    poly = {{a.x(), a.y()}, {b.x(), a.y()}, {b.x(), b.y()}, {a.x(), b.y()}};
-  } else {
-    for (const Vec3& p : polygon_ned_m) poly.emplace_back(p.x(), p.y());
-  }
+  std::vector<Eigen::Vector2d> corners;
+  for (const Vec3& p : polygon_ned_m) corners.emplace_back(p.x(), p.y());
+  const std::vector<Eigen::Vector2d> poly = PolygonCorners(corners);
   AIRIS_DEMAND(poly.size() >= 3);
   // Line frame: u along the lines, v across them.
   const Eigen::Vector2d u_axis(std::cos(heading_rad), std::sin(heading_rad));

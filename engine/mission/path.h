@@ -49,6 +49,14 @@ class Path {
   double length_m_ = 0.0;
 };
 
+/// Area (m^2) of the polygon with corners [north, east] `corners` by the shoelace formula; two
+/// corners mean the axis-aligned rectangle between them (as CalcLawnmowerWaypoints reads them).
+double CalcPolygonArea_m2(std::span<const Eigen::Vector2d> corners);
+
+/// Width (m) of the polygon (two corners: the rectangle) across lines along `heading_rad`: the
+/// distance a lawnmower of those lines covers, (width / spacing) lines.
+double CalcPolygonWidth_m(std::span<const Eigen::Vector2d> corners, double heading_rad);
+
 /// Waypoints of a lawnmower (boustrophedon) coverage of a polygon: parallel lines `spacing_m` apart
 /// along `heading_rad`, flown alternately, at world down coordinate `down_m`. The first line is
 /// spacing/2 inside the polygon's edge. A line spans from its first to its last crossing of the

@@ -138,11 +138,7 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
     r.cy_px = -lo.y() * r.fy_px + kMarginPx;
     r.width_px = static_cast<int>(std::ceil((hi.x() - lo.x()) * r.fx_px)) + 2 * kMarginPx + 1;
     r.height_px = static_cast<int>(std::ceil((hi.y() - lo.y()) * r.fy_px)) + 2 * kMarginPx + 1;
-    if (r.width_px > 4 * w || r.height_px > 4 * h) {
-      throw InvalidField("distortion", "the undistorted view is more than 4x the image (" +
-                                           std::to_string(r.width_px) + "x" +
-                                           std::to_string(r.height_px) + " px)");
-    }
+    CheckUndistortedExtent(intrinsics_, lo, hi);
     for (std::size_t i = 0; i < map.size(); i += 2) {
       map[i] = static_cast<float>(r.fx_px * map[i] + r.cx_px);
       map[i + 1] = static_cast<float>(r.fy_px * map[i + 1] + r.cy_px);

@@ -25,11 +25,11 @@ struct Vertex {
   float uv[2];
 };
 
-GLuint UploadTexture(const Material& material, std::size_t index) {
+GLuint UploadTexture(const Material& material) {
+  // Scene loading checked the file (CheckTextureFile); it may have changed since.
   const cv::Mat bgr = cv::imread(material.texture_path, cv::IMREAD_COLOR);
   if (bgr.empty()) {
-    throw ConfigError({}, "materials[" + std::to_string(index) + "].texture_path",
-                      "cannot read the image (got '" + material.texture_path + "')");
+    throw ConfigError({material.texture_path, 0, 0}, "", "cannot read the texture image");
   }
   cv::Mat rgba;
   cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
@@ -104,7 +104,7 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
           std::lround(255.0f * std::clamp(m.base_color_rgb[c], 0.0f, 1.0f)));
     }
     gpu.base_color_rgba[3] = 255;
-    gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m, i);
+    gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m);
     materials_.push_back(gpu);
   }
 

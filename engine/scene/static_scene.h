@@ -9,6 +9,7 @@
 
 #include "engine/core/config.h"
 #include "engine/core/frames.h"
+#include "engine/core/limits.h"
 
 namespace airis::engine {
 
@@ -16,7 +17,6 @@ namespace airis::engine {
 inline constexpr std::uint8_t kNoClass = 0;
 /// Instance id of nothing. Real instances are 1..65535 (they must fit a 16-bit segmentation image).
 inline constexpr std::uint32_t kNoInstance = 0;
-inline constexpr std::uint32_t kMaxInstances = 65535;
 
 /// A semantic class (building, tree, road, ...): id, name and the colour used in colourised label
 /// images.

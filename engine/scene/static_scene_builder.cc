@@ -122,6 +122,13 @@ std::vector<std::string> StaticSceneBuilder::ClassNames() const {
   return names;
 }
 
+void StaticSceneBuilder::ReserveObjects(std::size_t n) {
+  std::vector<StaticObject>& objects = scene_.objects;
+  const std::size_t wanted = std::min<std::size_t>(objects.size() + n, kMaxInstances);
+  if (wanted <= objects.capacity()) return;
+  objects.reserve(std::min<std::size_t>(std::max(wanted, 2 * objects.capacity()), kMaxInstances));
+}
+
 bool StaticSceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO,
                                    std::uint8_t class_id, CollisionShape collision,
                                    std::string name, std::int32_t material_override) {

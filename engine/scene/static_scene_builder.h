@@ -50,8 +50,10 @@ class StaticSceneBuilder {
   bool AddVehicleBody(std::uint32_t model, const Eigen::Affine3d& T_BM, std::uint8_t class_id,
                       std::string name, std::int32_t material_override = -1);
 
-  /// Reserves room for `n` more objects (generators call this before a batch).
-  void ReserveObjects(std::size_t n) { scene_.objects.reserve(scene_.objects.size() + n); }
+  /// Reserves room for `n` more objects (generators call this before a batch), at most up to
+  /// kMaxInstances. The capacity grows geometrically: reserving a few more for every object of a
+  /// long list stays linear in the list.
+  void ReserveObjects(std::size_t n);
 
   StaticScene& scene() { return scene_; }
   const StaticScene& scene() const { return scene_; }

@@ -85,6 +85,41 @@ bool World::RestOnSurfaceBelow(std::size_t i, double search_m) {
   return !slot.touching.empty();
 }
 
+std::optional<World::Overlap> World::FindOverlap(std::size_t i, double tolerance_m) {
+  AIRIS_DEMAND(i < slots_.size());
+  Slot& slot = slots_[i];
+  const RigidBodyState& state = slot.vehicle->state();
+  std::vector<Contact> contacts;
+  collision_.FindContacts(slot.body, state.p_W, state.q_WB, 0.0, contacts);
+  std::optional<Overlap> deepest;
+  for (const Contact& c : contacts) {
+    const bool rests_on =
+        std::find(slot.touching.begin(), slot.touching.end(), c.collider) != slot.touching.end();
+    if (rests_on || c.depth_m <= tolerance_m) continue;
+    if (!deepest || c.depth_m > deepest->depth_m) {
+      deepest = Overlap{collision_.colliders()[c.collider].name, false, c.depth_m};
+    }
+  }
+  for (std::size_t j = 0; j < slots_.size(); ++j) {
+    if (j == i) continue;
+    const Slot& other = slots_[j];
+    const RigidBodyState& o = other.vehicle->state();
+    const double reach_m =
+        slot.vehicle->body().bounding_radius_m() + other.vehicle->body().bounding_radius_m();
+    if ((state.p_W - o.p_W).squaredNorm() > reach_m * reach_m) continue;
+    contacts.clear();
+    collision_.FindBodyContacts(slot.body, state.p_W, state.q_WB, other.body, o.p_W, o.q_WB,
+                                contacts);
+    for (const Contact& c : contacts) {
+      if (c.depth_m <= tolerance_m) continue;
+      if (!deepest || c.depth_m > deepest->depth_m) {
+        deepest = Overlap{other.vehicle->name(), true, c.depth_m};
+      }
+    }
+  }
+  return deepest;
+}
+
 Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {
   AIRIS_DEMAND(vehicle < slots_.size() && sensor != nullptr);
   auto& sensors = slots_[vehicle].sensors;

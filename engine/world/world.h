@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -84,6 +85,15 @@ class World {
   /// and counts that surface as already touched (resting there is no collision). False when no
   /// surface lies within `search_m` below it, or it starts overlapping one.
   bool RestOnSurfaceBelow(std::size_t i, double search_m = 1000.0);
+  /// What vehicle `i` overlaps where it stands: a static object or another vehicle that its body
+  /// box penetrates deeper than `tolerance_m`. Surfaces it rests on (RestOnSurfaceBelow) do not
+  /// count. Used to refuse starts that would collide at the first tick.
+  struct Overlap {
+    std::string name;      ///< the object's or the other vehicle's
+    bool vehicle = false;  ///< true: another vehicle
+    double depth_m = 0.0;
+  };
+  std::optional<Overlap> FindOverlap(std::size_t i, double tolerance_m);
   /// Index of the vehicle named `name`, or -1.
   int FindVehicle(std::string_view name) const;
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/core/limits.h"
+
 namespace airis::sensors {
 
 namespace {
@@ -26,9 +28,9 @@ std::span<const engine::EnumName<CameraAttachment>> EnumNames(CameraAttachment) 
 }
 
 void CameraConfig::Validate() const {
-  engine::RequirePositive("rate_hz", rate_hz);
-  engine::RequireInRange("width_px", width_px, 1, 8192);
-  engine::RequireInRange("height_px", height_px, 1, 8192);
+  engine::RequireRate("rate_hz", rate_hz, engine::kMaxPhysicsRate_hz);
+  engine::RequireInRange("width_px", width_px, 1, engine::kMaxImageSide_px);
+  engine::RequireInRange("height_px", height_px, 1, engine::kMaxImageSide_px);
   if (!fx_px) engine::RequireInRange("hfov_deg", hfov_deg, 1.0, 170.0);
   // The intrinsics' own checks name fx_px, near_m, distortion.k1, ... as in this struct.
   CalcIntrinsics().Validate();
@@ -36,6 +38,11 @@ void CameraConfig::Validate() const {
   WithPrefix("mount.", [&] { mount.Validate(); });
   engine::Require(!sees_own_body || attachment == CameraAttachment::kVehicle, "sees_own_body",
                   "applies to a camera on a vehicle; a world-attached camera sees every vehicle");
+}
+
+void CameraConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  Validate();
+  engine::RequireRate("rate_hz", rate_hz, physics_rate_hz);
 }
 
 engine::CameraIntrinsics CameraConfig::CalcIntrinsics() const {
@@ -59,6 +66,11 @@ engine::CameraIntrinsics CameraConfig::CalcIntrinsics() const {
 
 void StereoCameraConfig::Validate() const {
   WithPrefix("camera.", [&] { camera.Validate(); });
+  engine::RequirePositive("baseline_m", baseline_m);
+}
+
+void StereoCameraConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
+  WithPrefix("camera.", [&] { camera.ValidateForPhysicsRate(physics_rate_hz); });
   engine::RequirePositive("baseline_m", baseline_m);
 }
 

@@ -68,6 +68,8 @@ struct CameraConfig {
   /// Throws InvalidField naming the field (e.g. `hfov_deg`, `distortion.k1`, `mount.pitch_deg`,
   /// `sees_own_body` on a world-attached camera).
   void Validate() const;
+  /// Validate() plus rate_hz <= physics_rate_hz: a camera renders at most once per tick.
+  void ValidateForPhysicsRate(double physics_rate_hz) const;
 
   /// The intrinsics this config describes (no validation).
   engine::CameraIntrinsics CalcIntrinsics() const;
@@ -87,6 +89,8 @@ struct StereoCameraConfig {
   }
   /// Throws InvalidField naming the field (`baseline_m`, `camera.rate_hz`, ...).
   void Validate() const;
+  /// Validate() plus camera.rate_hz <= physics_rate_hz.
+  void ValidateForPhysicsRate(double physics_rate_hz) const;
 };
 
 }  // namespace airis::sensors

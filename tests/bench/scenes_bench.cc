@@ -115,5 +115,30 @@ void BM_LoadForestScene10k(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadForestScene10k)->Unit(benchmark::kMillisecond);
 
+// Objects listed one by one in the file (no `repeat`): loading must stay linear in the list. The
+// time per object is the same at every size when it is.
+void BM_LoadObjectsListedOneByOne(benchmark::State& state) {
+  const auto objects = static_cast<int>(state.range(0));
+  std::string text = "scene: {name: bench}\nobjects:\n";
+  for (int i = 0; i < objects; ++i) {
+    text += "  - {primitive: box, position_ned_m: [" + std::to_string(i % 200) + ", " +
+            std::to_string(i / 200) + ", -1]}\n";
+  }
+  const Scene warm = LoadSceneFromString(text, "bench.yaml");
+  for (auto _ : state) {
+    Scene s = LoadSceneFromString(text, "bench.yaml");
+    benchmark::DoNotOptimize(s.static_scene.objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * objects);
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(text.size()));
+  ReportScene(state, warm.static_scene);
+}
+BENCHMARK(BM_LoadObjectsListedOneByOne)
+    ->Arg(10'000)
+    ->Arg(20'000)
+    ->Arg(40'000)
+    ->Arg(60'000)
+    ->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace airis::scenes

@@ -45,6 +45,17 @@ TEST(ConfigTest, FormatNumberIsShortestRoundTrip) {
   EXPECT_EQ(FormatNumber(0.1), "0.1");
   EXPECT_EQ(FormatNumber(-5.0), "-5");
   EXPECT_EQ(FormatNumber(1e-300), "1e-300");
+  EXPECT_EQ(FormatNumber(200000.0), "200000") << "whole numbers keep their digits";
+  EXPECT_EQ(FormatNumber(1e9), "1000000000");
+  EXPECT_EQ(FormatNumber(1e300), "1e+300");
+}
+
+TEST(ConfigTest, FormatRoundedKeepsFourDigits) {
+  EXPECT_EQ(FormatRounded(102.15748009805715), "102.2");
+  EXPECT_EQ(FormatRounded(0.02763139720814413), "0.02763");
+  EXPECT_EQ(FormatRounded(1.7047396481104406e-06), "1.705e-06");
+  EXPECT_EQ(FormatRounded(9806650.0), "9806650") << "whole digits are kept";
+  EXPECT_EQ(FormatRounded(-3.14159), "-3.142");
 }
 
 }  // namespace

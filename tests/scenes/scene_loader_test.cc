@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scenes/scene.h"
+#include "scenes/world_builder.h"
 #include "tests/fixtures/temp_dir.h"
 
 namespace airis::scenes {
@@ -38,6 +39,17 @@ class SceneFiles {
 std::string LoadError(const std::string& path) {
   try {
     LoadScene(path);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The message of the ConfigError that loading `path` and building its world (as `scene check`
+/// does) throws ("" if none).
+std::string BuildError(const std::string& path) {
+  try {
+    BuildWorldWithoutCameras(LoadScene(path));
   } catch (const ConfigError& e) {
     return e.what();
   }
@@ -178,10 +190,13 @@ TEST(SceneLoaderTest, VehicleInsideAnObjectNamesBoth) {
               "  - name: drone1\n"
               "    preset: quad_x\n"
               "    start: {position_ned_m: [11, 1, -1]}\n");
-  EXPECT_EQ(LoadError(path),
-            path +
-                ":6:13: vehicles[0].start.position_ned_m: vehicle 'drone1' starts inside object "
-                "'shed' (class structure, instance 2)");
+  // Found by the vehicle's collision shape against the object's, once the world is built.
+  const std::string error = BuildError(path);
+  EXPECT_EQ(error.rfind(path + ":6:13: vehicles[0].start.position_ned_m: vehicle 'drone1' starts "
+                               "overlapping object 'shed' by ",
+                        0),
+            0u)
+      << error;
 }
 
 TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
@@ -190,8 +205,9 @@ TEST(SceneLoaderTest, VehicleBelowGroundAndDuplicateNamesAreErrors) {
       "a.yaml", "vehicles:\n  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, 1]}}\n");
   EXPECT_EQ(
       LoadError(a),
-      a + ":2:39: vehicles[0].start.position_ned_m: vehicle 'd' starts below the ground (z = 1 m; "
-          "NED z is down, so heights are negative)");
+      a + ":2:39: vehicles[0].start.position_ned_m: vehicle 'd' starts 1.02 m into the ground (its "
+          "body box reaches z = 1.02 m; NED z is down, so heights are negative; or set "
+          "start.on_ground)");
   const std::string b =
       f.Write("b.yaml",
               "vehicles:\n"
@@ -212,7 +228,9 @@ TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
                                    "    repeat: {count: 65535, step_ned_m: [2, 0, 0]}\n");
   EXPECT_EQ(
       LoadError(path),
-      path + ":3:5: objects[0].repeat: the scene exceeds 65535 objects (instance ids are 16-bit)");
+      path +
+          ":3:5: objects[0].repeat: places 65535 objects where 65534 instance ids are left (a "
+          "scene holds at most 65535 objects: instance ids are 16-bit; docs/limits.md)");
 }
 
 TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {

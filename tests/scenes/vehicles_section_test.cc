@@ -152,9 +152,10 @@ TEST(VehiclesSectionTest, SensorFasterThanThePhysicsIsRejectedNamingIt) {
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("scenes/v.yaml:2:5: vehicles[0].sensors[1].imu.rate_hz:"),
-              std::string::npos)
-        << what;
+    // At the key itself, not the vehicle's entry.
+    EXPECT_EQ(what,
+              "scenes/v.yaml:5:39: vehicles[0].sensors[1].imu.rate_hz: must not exceed the physics "
+              "rate of 1000 Hz (got 2000)");
   }
 }
 

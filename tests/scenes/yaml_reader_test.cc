@@ -141,7 +141,7 @@ TEST(YamlReaderTest, ReadsFullUnsigned64Seeds) {
             18446744073709551615ull);
   EXPECT_EQ(
       ErrorOf<SceneTestConfig>("seed: -1\n"),
-      "scenes/test.yaml:1:1: seed: out of range (got -1; expected 0 to 18446744073709551615)");
+      "scenes/test.yaml:1:1: seed: out of range (got '-1'; expected 0 to 18446744073709551615)");
 }
 
 TEST(YamlReaderTest, UnknownKeySuggestsClosest) {
@@ -234,9 +234,9 @@ TEST(YamlReaderTest, ListElementErrorsPointAtTheElement) {
 
 TEST(YamlReaderTest, OutOfRangeIntegersAreRejected) {
   EXPECT_EQ(ErrorOf<BarometerTestConfig>("channel: 300\n"),
-            "scenes/test.yaml:1:1: channel: out of range (got 300; expected 0 to 255)");
+            "scenes/test.yaml:1:1: channel: out of range (got '300'; expected 0 to 255)");
   EXPECT_EQ(ErrorOf<BarometerTestConfig>("channel: -1\n"),
-            "scenes/test.yaml:1:1: channel: out of range (got -1; expected 0 to 255)");
+            "scenes/test.yaml:1:1: channel: out of range (got '-1'; expected 0 to 255)");
 }
 
 TEST(YamlReaderTest, UnknownEnumValueListsChoicesAndSuggests) {
@@ -261,7 +261,7 @@ TEST(YamlReaderTest, UnreadableFileNamesThePath) {
     LoadYamlFile("/nonexistent/scene.yaml");
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& e) {
-    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.yaml: cannot read the file");
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.yaml: file not found");
   }
 }
 

@@ -17,7 +17,13 @@ int RunReportingErrors(const std::function<int()>& body) {
   try {
     return body();
   } catch (const engine::ConfigError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    // One line per mistake found (a file's independent mistakes are reported together).
+    for (const engine::ConfigError& one : e.errors())
+      std::fprintf(stderr, "error: %s\n", one.what());
+    if (e.truncated()) {
+      std::fprintf(stderr, "note: stopped after %zu errors; fix these and run again\n",
+                   e.errors().size());
+    }
     return 2;
   } catch (const engine::SimulationError& e) {
     std::fprintf(stderr, "simulation stopped: %s\n", e.what());
@@ -44,6 +50,18 @@ int RunReportingErrors(const std::function<int()>& body) {
     // Everything else users meet (a full disk, no EGL display) carries its own clear message.
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
+  }
+}
+
+void RefuseEmptyValues(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() == 0 || option->get_expected_min() == 0) continue;
+    for (const std::string& value : option->results()) {
+      if (!value.empty()) continue;
+      const std::string name = option->get_name(false, true);
+      throw engine::ConfigError({}, name.empty() ? option->get_name() : name,
+                                "needs a value (got '')");
+    }
   }
 }
 

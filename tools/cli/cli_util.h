@@ -16,6 +16,11 @@ namespace airis::tools {
 /// its message. Returns the body's exit code otherwise. No stack traces, no noise.
 int RunReportingErrors(const std::function<int()>& body);
 
+/// Throws ConfigError naming the first option of `command` that was given an empty value
+/// (`--seed ""`, `--out=`): an empty value never silently means "not given". Options that may be
+/// given without a value (`--realtime`) are left alone.
+void RefuseEmptyValues(const CLI::App& command);
+
 /// The absolute path of the running airis binary (what Slurm job scripts run). Throws
 /// std::runtime_error when /proc/self/exe cannot be read.
 std::string CurrentExecutable();

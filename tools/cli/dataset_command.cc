@@ -299,6 +299,7 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->callback([a, cmd, merge, status, schema, &exit_code] {
     if (merge->parsed() || status->parsed() || schema->parsed()) return;
     exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*cmd);
       if (a->slurm != 0) return SubmitToSlurm(*a);
       for (const char* option : {"--only-shards", "--dry-run", "--partition", "--time",
                                  "--cpus-per-task", "--mem", "--sbatch-arg"}) {

@@ -141,6 +141,7 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
     if (airframe->parsed()) return;
     a->realtime_given = cmd->count("--realtime") > 0;
     exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*cmd);
       for (const char* option :
            {"--cameras", "--formats", "--workers", "--stream-format", "--min-object-area-px"}) {
         if (cmd->count(option) > 0 && a->dataset.empty()) {

@@ -131,7 +131,10 @@ void AddRunCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--truth-rate", options->truth_rate, "ground-truth log rate (Hz, default 100)");
   cmd->callback([options, cmd, &exit_code] {
     options->realtime_given = cmd->count("--realtime") > 0;
-    exit_code = RunReportingErrors([&] { return Run(*options); });
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*cmd);
+      return Run(*options);
+    });
   });
 }
 

@@ -21,6 +21,7 @@
 #include "tools/cli/commands.h"
 #include "tools/jobs/preview_render.h"
 #include "tools/jobs/scene_report.h"
+#include "tools/jobs/simulation_job.h"
 
 namespace airis::tools {
 namespace {
@@ -28,7 +29,7 @@ namespace {
 struct SceneOptions {
   std::string file;
   std::vector<std::string> overrides;  // --set KEY=VALUE
-  std::string mission;                 // check: the mission to report the captures of
+  std::string mission;  // check: the mission to check in the scene and report the captures of
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -65,8 +66,7 @@ std::string ClassList(const scenes::SceneStats& stats) {
   return out;
 }
 
-void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
-  const scenes::Scene& s = loaded.scene;
+void PrintSummary(const scenes::Scene& s, double load_ms, const scenes::SceneStats& stats) {
   std::printf("scene       %s (%s, %zu file%s)\n", s.name.c_str(), s.path.c_str(), s.files.size(),
               s.files.size() == 1 ? "" : "s");
   std::printf("seed        %llu\n", static_cast<unsigned long long>(s.seed));
@@ -102,25 +102,37 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
   }
   std::printf("memory      %.2f MiB (static scene)\n",
               static_cast<double>(stats.memory_bytes) / (1024.0 * 1024.0));
-  std::printf("load time   %.1f ms\n", loaded.load_ms);
+  std::printf("load time   %.1f ms\n", load_ms);
 }
 
 int RunCheck(const SceneOptions& options) {
-  const Loaded loaded = Load(options);
+  // Everything a run builds (world, vehicles, sensors; cameras short of a GL context) and the
+  // mission's checks against it, so that what passes here is what a run accepts.
+  const auto start = std::chrono::steady_clock::now();
+  SceneSource source;
+  source.path = options.file;
+  source.overrides = scenes::ParseSceneOverrides(options.overrides);
+  const SimulationJob job = SimulationJob::WithoutCameras(source);
   std::optional<engine::Mission> mission;
-  if (!options.mission.empty()) mission = scenes::LoadMissionFile(options.mission);
-  const SceneReport report = BuildSceneReport(loaded.scene, mission ? &*mission : nullptr);
+  if (!options.mission.empty()) {
+    mission = scenes::LoadMissionFile(options.mission);
+    job.CheckMission(*mission);
+  }
+  const double load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const scenes::Scene& scene = job.scene();
+  const SceneReport report = BuildSceneReport(scene, mission ? &*mission : nullptr);
   if (options.json) {
     nlohmann::json out = SceneReportJson(report);
-    out["scene"] = loaded.scene.name;
-    out["file"] = loaded.scene.path;
+    out["scene"] = scene.name;
+    out["file"] = scene.path;
     out["valid"] = true;
     std::cout << out.dump(2) << "\n";
     return 0;
   }
-  const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
-  PrintSummary(loaded, stats);
+  PrintSummary(scene, load_ms, scenes::CalcSceneStats(scene));
   std::printf("%s", FormatSceneReport(report).c_str());
+  if (mission) std::printf("ok          %s flies in it\n", options.mission.c_str());
   std::printf("ok          %s is valid\n", options.file.c_str());
   return 0;
 }
@@ -129,7 +141,7 @@ int RunStats(const SceneOptions& options) {
   const Loaded loaded = Load(options);
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   if (!options.json) {
-    PrintSummary(loaded, stats);
+    PrintSummary(loaded.scene, loaded.load_ms, stats);
     return 0;
   }
   nlohmann::json out;
@@ -204,15 +216,23 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   cmd->require_subcommand(1);
   auto options = std::make_shared<SceneOptions>();
 
-  CLI::App* check =
-      cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
+  CLI::App* check = cmd->add_subcommand(
+      "check",
+      "Validate a scene as a run would (and a mission in it); print a summary, or the errors and "
+      "exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
-  check->add_option("--mission", options->mission,
-                    "a mission file: also list the cameras its capture steps record");
+  check
+      ->add_option("--mission", options->mission,
+                   "a mission file: check it in the scene as a run would, and list the cameras "
+                   "its capture steps record")
+      ->type_name("FILE");
   check->add_flag("--json", options->json, "print one JSON object instead of text");
   AddSceneOverrideOption(check, options->overrides);
-  check->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunCheck(*options); });
+  check->callback([options, check, &exit_code] {
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*check);
+      return RunCheck(*options);
+    });
   });
 
   CLI::App* stats = cmd->add_subcommand(
@@ -220,8 +240,11 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
   stats->add_flag("--json", options->json, "print one JSON object instead of text");
   AddSceneOverrideOption(stats, options->overrides);
-  stats->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunStats(*options); });
+  stats->callback([options, stats, &exit_code] {
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*stats);
+      return RunStats(*options);
+    });
   });
 
   CLI::App* schema =
@@ -237,8 +260,11 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
                       "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
   preview->add_option("--out", options->out, "PNG to write (default preview.png)");
   AddSceneOverrideOption(preview, options->overrides);
-  preview->callback([options, &exit_code] {
-    exit_code = RunReportingErrors([&] { return RunPreview(*options); });
+  preview->callback([options, preview, &exit_code] {
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*preview);
+      return RunPreview(*options);
+    });
   });
 }
 

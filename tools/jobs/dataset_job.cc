@@ -13,7 +13,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   CheckDatasetWriteOptions(o);
   SimulationJob job(o.scene);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
-  const std::vector<std::size_t> vehicles = job.MissionVehicles(mission);
+  const std::vector<std::size_t> vehicles = job.CheckMission(mission);
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
   DatasetSession dataset(job, o, o.scene.path, &mission, vehicles);
 

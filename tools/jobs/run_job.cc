@@ -12,10 +12,10 @@ namespace airis::tools {
 
 RunJobResult RunMissionJob(const RunJobOptions& o,
                            const std::function<void(const JobProgress&)>& progress) {
-  CheckPacingOptions(o.realtime, o.truth_rate_hz);
   SimulationJob job(o.scene);
+  CheckPacingOptions(o.realtime, o.truth_rate_hz, job.scene().physics.rate_hz, o.until_ns);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
-  job.MissionVehicles(mission);  // a track without its vehicle fails before anything is written
+  job.CheckMission(mission);  // a mission that cannot be flown fails before anything is written
   job.DisableImageSensors();
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
 

@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "engine/core/random.h"
 #include "engine/world/image_sensor.h"
+#include "scenes/mission_limits.h"
 #include "scenes/world_builder.h"
 
 namespace airis::tools {
@@ -14,10 +15,17 @@ scenes::Scene LoadSceneSource(const SceneSource& source) {
                              : scenes::LoadSceneFromString(source.text, source.path, options);
 }
 
-SimulationJob::SimulationJob(const SceneSource& source)
+SimulationJob::SimulationJob(const SceneSource& source) : SimulationJob(source, true) {}
+
+SimulationJob SimulationJob::WithoutCameras(const SceneSource& source) {
+  return SimulationJob(source, false);
+}
+
+SimulationJob::SimulationJob(const SceneSource& source, bool cameras)
     : wall_start_(std::chrono::steady_clock::now()), scene_(LoadSceneSource(source)) {
   simulation_ = std::make_unique<engine::Simulation>(
-      scenes::BuildWorld(scene_), engine::SimulationConfig{scene_.physics.rate_hz});
+      cameras ? scenes::BuildWorld(scene_) : scenes::BuildWorldWithoutCameras(scene_),
+      engine::SimulationConfig{scene_.physics.rate_hz});
 }
 
 double SimulationJob::wall_s() const {
@@ -37,7 +45,8 @@ std::vector<std::size_t> SimulationJob::MissionVehicles(const engine::Mission& m
     engine::SourceLocation where = track.where;
     if (where.file.empty()) where.file = mission.file;
     if (w.vehicle_count() == 0) {
-      throw engine::ConfigError(where, key, "the scene has no vehicle to fly the mission");
+      throw engine::ConfigError(where, key,
+                                "the scene " + scene_.path + " has no vehicle to fly the mission");
     }
     if (track.vehicle.empty()) {
       out.push_back(0);
@@ -53,6 +62,12 @@ std::vector<std::size_t> SimulationJob::MissionVehicles(const engine::Mission& m
   return out;
 }
 
+std::vector<std::size_t> SimulationJob::CheckMission(const engine::Mission& mission) const {
+  const std::vector<std::size_t> vehicles = MissionVehicles(mission);
+  scenes::CheckMissionInScene(mission, scene_, vehicles);
+  return vehicles;
+}
+
 void SimulationJob::DisableImageSensors() {
   engine::World& w = world();
   for (std::size_t v = 0; v < w.vehicle_count(); ++v) {
@@ -64,7 +79,7 @@ void SimulationJob::DisableImageSensors() {
 
 std::unique_ptr<engine::MissionSession> SimulationJob::StartMission(
     const engine::Mission& mission, engine::MissionSession::Callbacks callbacks) {
-  const std::vector<std::size_t> vehicles = MissionVehicles(mission);
+  const std::vector<std::size_t> vehicles = CheckMission(mission);
   const engine::RandomStreams streams(scene_.seed);
   std::vector<engine::MissionSession::TrackBinding> bindings;
   for (std::size_t t = 0; t < vehicles.size(); ++t) {

@@ -99,6 +99,10 @@ class SimulationJob {
  public:
   /// Loads and builds. Throws ConfigError naming file, line and key for bad input.
   explicit SimulationJob(const SceneSource& source);
+  /// Loads and builds without a GL context: cameras are checked, not made (`airis scene check`:
+  /// what a run would refuse, this refuses). The simulation must not be stepped with cameras
+  /// expected.
+  static SimulationJob WithoutCameras(const SceneSource& source);
 
   const scenes::Scene& scene() const { return scene_; }
   engine::Simulation& simulation() { return *simulation_; }
@@ -110,6 +114,11 @@ class SimulationJob {
   /// scene's first. Throws ConfigError at the track's vehicle in the mission file when the scene
   /// has no such vehicle (listing the scene's vehicles).
   std::vector<std::size_t> MissionVehicles(const engine::Mission& mission) const;
+  /// Checks every track of `mission` against this job's scene and its vehicle before the flight
+  /// (scenes::CheckMissionInScene: targets within the scene, speeds within the vehicle's, cameras
+  /// that exist, durations within the limits) and returns the tracks' vehicles (MissionVehicles).
+  /// Throws ConfigError at each offending key of the mission file.
+  std::vector<std::size_t> CheckMission(const engine::Mission& mission) const;
 
   /// Switches off every image sensor (a job that records no images does not render).
   void DisableImageSensors();
@@ -118,7 +127,7 @@ class SimulationJob {
   /// run (MissionSession::Run); FlyMission runs one. Each track draws from its own stream of the
   /// scene seed: "mission" for the single-vehicle form, "mission/<vehicle>" for each track of the
   /// per-vehicle form. For front ends that step the flight themselves (the Python API). Throws as
-  /// MissionVehicles.
+  /// CheckMission.
   std::unique_ptr<engine::MissionSession> StartMission(
       const engine::Mission& mission, engine::MissionSession::Callbacks callbacks = {});
 
@@ -134,6 +143,8 @@ class SimulationJob {
   JobProgress Progress(const engine::MissionSession& session) const;
 
  private:
+  SimulationJob(const SceneSource& source, bool cameras);
+
   std::chrono::steady_clock::time_point wall_start_;
   scenes::Scene scene_;
   std::unique_ptr<engine::Simulation> simulation_;

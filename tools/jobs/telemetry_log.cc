@@ -1,13 +1,24 @@
 #include "tools/jobs/telemetry_log.h"
 
+#include "engine/core/config.h"
 #include "engine/core/error.h"
 #include "tools/jobs/output_folder.h"
 
 namespace airis::tools {
 
-void CheckPacingOptions(const std::optional<double>& realtime, double truth_rate_hz) {
+void CheckPacingOptions(const std::optional<double>& realtime, double truth_rate_hz,
+                        double physics_rate_hz, engine::TimeNs until_ns) {
   if (realtime && !(*realtime > 0.0)) throw engine::ConfigError({}, "--realtime", "must be > 0");
-  if (!(truth_rate_hz > 0.0)) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+  try {
+    engine::RequireRate("truth-rate", truth_rate_hz, physics_rate_hz);
+  } catch (const engine::InvalidField& e) {
+    throw engine::ConfigError({}, "--truth-rate", e.problem());
+  }
+  if (until_ns < 0) {
+    throw engine::ConfigError(
+        {}, "--until",
+        "must be >= 0 s (got " + engine::FormatNumber(engine::ToSeconds(until_ns)) + ")");
+  }
 }
 
 std::unique_ptr<engine::TelemetryRecorder> OpenTelemetryLog(engine::World& world,

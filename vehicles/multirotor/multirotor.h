@@ -107,7 +107,7 @@ class Multirotor final : public engine::Vehicle {
 
   /// Air density at which the controller's actuator effects are computed (sea level, standard
   /// atmosphere).
-  static constexpr double kReferenceDensity_kg_m3 = 1.225;
+  static constexpr double kReferenceDensity_kg_m3 = MultirotorConfig::kSeaLevelDensity_kg_m3;
 
   MultirotorConfig config_;
   std::vector<Rotor> rotors_;

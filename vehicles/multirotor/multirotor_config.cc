@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "engine/world/vehicle_command.h"
+
 namespace airis::vehicles {
 
 std::vector<RotorConfig> ReferenceQuadXRotors() {
@@ -75,6 +77,10 @@ void MultirotorConfig::Validate() const {
   engine::RequirePositive("mass_kg", mass_kg);
   engine::RequireNonNegative("motor_mass_kg", motor_mass_kg);
   for (int i = 0; i < 3; ++i) engine::RequirePositive("box_size_m", box_size_m[i]);
+  engine::Require(!rotors.empty(), "rotors", "needs at least one rotor");
+  engine::Require(rotors.size() <= static_cast<std::size_t>(engine::kMaxActuators), "rotors",
+                  "has " + std::to_string(rotors.size()) + " rotors; a vehicle has at most " +
+                      std::to_string(engine::kMaxActuators) + " actuators");
   for (std::size_t i = 0; i < rotors.size(); ++i) {
     try {
       rotors[i].Validate();
@@ -99,10 +105,35 @@ void MultirotorConfig::Validate() const {
   } catch (const engine::InvalidField& e) {
     throw engine::InvalidField("controller." + e.field(), e.problem());
   }
+  try {
+    MakeRigidBodyConfig().Validate();
+  } catch (const engine::InvalidField& e) {
+    // The rigid body's fields carry the same names here except the inertia.
+    throw engine::InvalidField(e.field() == "inertia_B_kg_m2" ? "inertia_kg_m2" : e.field(),
+                               e.problem());
+  }
+  // Lift at full command with the rotors untilted, against the weight: a vehicle that cannot
+  // leave the ground flies no mission.
+  double lift_n = 0.0;
+  for (const RotorConfig& r : rotors) {
+    lift_n += r.CalcThrustPerDensity() * kSeaLevelDensity_kg_m3 *
+              std::max(0.0, -r.thrust_direction.normalized().z());
+  }
+  const double weight_n = mass_kg * kStandardGravity_m_s2;
+  engine::Require(
+      lift_n > weight_n, "mass_kg",
+      "the rotors lift at most " + engine::FormatRounded(lift_n) +
+          " N at sea level, not more than the weight of " + engine::FormatRounded(weight_n) +
+          " N (thrust-to-weight " + engine::FormatRounded(lift_n / weight_n) +
+          "): the vehicle cannot take off (got " + engine::FormatNumber(mass_kg) + " kg)");
 }
 
 engine::RigidBodyConfig MultirotorConfig::CalcRigidBodyConfig() const {
   Validate();
+  return MakeRigidBodyConfig();
+}
+
+engine::RigidBodyConfig MultirotorConfig::MakeRigidBodyConfig() const {
   engine::RigidBodyConfig body;
   body.mass_kg = mass_kg;
   body.box_size_m = box_size_m;
@@ -121,13 +152,6 @@ engine::RigidBodyConfig MultirotorConfig::CalcRigidBodyConfig() const {
     const double box_mass = mass_kg - motor_mass_kg * static_cast<double>(rotors.size());
     body.inertia_B_kg_m2 =
         engine::CalcBoxAndPointMassInertia(box_mass, box_size_m, motor_mass_kg, points);
-  }
-  try {
-    body.Validate();
-  } catch (const engine::InvalidField& e) {
-    // The rigid body's fields carry the same names here except the inertia.
-    throw engine::InvalidField(e.field() == "inertia_B_kg_m2" ? "inertia_kg_m2" : e.field(),
-                               e.problem());
   }
   return body;
 }

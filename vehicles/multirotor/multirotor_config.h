@@ -51,10 +51,12 @@ struct MultirotorConfig {
             "the rotors (vertices), in actuator order; {INDEX: keys} changes one of the preset's");
     v.Field("controller", controller, "built-in flight controller gains and limits");
   }
-  /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, motors heavier than the
-  /// vehicle, more actuators than engine::kMaxActuators, or rotors the built-in controller cannot
-  /// fly: fewer than 4, or (untilted) unable to set thrust, roll, pitch and yaw independently, such
-  /// as all spinning the same way (docs/vehicles.md).
+  /// Throws InvalidField (e.g. "rotors[2].max_rpm") on any bad field, no rotors or more than
+  /// engine::kMaxActuators, motors heavier than the vehicle, an inertia that is not positive
+  /// definite or violates the triangle inequality, rotors that cannot lift the vehicle off at sea
+  /// level (thrust-to-weight at most 1 in the standard atmosphere), or rotors the built-in
+  /// controller cannot fly: fewer than 4, or (untilted) unable to set thrust, roll, pitch and yaw
+  /// independently, such as all spinning the same way (docs/vehicles.md).
   void Validate() const;
 
   /// What each rotor does at command 1 per unit air density, untilted (CalcRotorEffectPerDensity).
@@ -64,6 +66,18 @@ struct MultirotorConfig {
 
   /// The rigid body: mass, inertia (given or computed), box, drag and material. Validates first.
   engine::RigidBodyConfig CalcRigidBodyConfig() const;
+  /// The fastest the controller flies it (m/s): its horizontal speed limit.
+  double CalcMaxSpeed_m_s() const { return controller.max_horizontal_speed_m_s; }
+
+  /// Air density at sea level in the U.S. Standard Atmosphere 1976 (kg/m^3): where the
+  /// thrust-to-weight check and the controller's actuator effects are reckoned.
+  static constexpr double kSeaLevelDensity_kg_m3 = 1.225;
+  /// Standard gravity g0 (m/s^2).
+  static constexpr double kStandardGravity_m_s2 = 9.80665;
+
+ private:
+  /// The rigid body, without validation.
+  engine::RigidBodyConfig MakeRigidBodyConfig() const;
 };
 
 }  // namespace airis::vehicles

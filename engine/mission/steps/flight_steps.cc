@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/mission/steps/step_checks.h"
+
 namespace airis::engine {
 namespace {
 
@@ -41,8 +43,15 @@ std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_
 }  // namespace
 
 void TakeoffStep::Validate() const {
+  RequireInRange("height_above_start_m", height_above_start_m, 0.0, kMaxFlightHeight_m);
   RequirePositive("height_above_start_m", height_above_start_m);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void TakeoffStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
+  RequireInRegion(
+      "height_above_start_m", limits,
+      Vec3(plan.position_W.x(), plan.position_W.y(), plan.home_W.z() - height_above_start_m));
 }
 
 double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
@@ -68,7 +77,7 @@ void GotoStep::Validate() const {
   Require(position_ned_m.has_value() != has_geodetic(), "position_ned_m",
           "give exactly one target: position_ned_m, or latitude_deg, longitude_deg and "
           "altitude_m");
-  if (position_ned_m) RequireFinite("position_ned_m", *position_ned_m);
+  if (position_ned_m) RequireWithinWorld("position_ned_m", *position_ned_m);
   if (has_geodetic()) {
     Require(latitude_deg.has_value(), "latitude_deg", "missing: a geodetic target needs all three");
     Require(longitude_deg.has_value(), "longitude_deg",
@@ -81,7 +90,13 @@ void GotoStep::Validate() const {
   RequirePositive("speed_m_s", speed_m_s);
   if (yaw_deg) RequireInRange("yaw_deg", *yaw_deg, -360.0, 360.0);
   RequirePositive("acceptance_radius_m", acceptance_radius_m);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void GotoStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
+  RequireInRegion(position_ned_m ? "position_ned_m" : "latitude_deg", limits,
+                  CalcTarget_W(*plan.frame));
+  RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 
 Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame) const {
@@ -115,8 +130,8 @@ std::unique_ptr<ActiveStep> GotoStep::Start(const StepContext& c, const VehicleC
 }
 
 void HoverStep::Validate() const {
-  RequireNonNegative("duration_s", duration_s);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("duration_s", duration_s);
+  RequireDuration("timeout_s", timeout_s);
 }
 
 double HoverStep::EstimateDuration_s(StepPlan&) const { return duration_s; }
@@ -131,7 +146,7 @@ std::unique_ptr<ActiveStep> HoverStep::Start(const StepContext& c, const Vehicle
 
 void YawStep::Validate() const {
   RequireInRange("yaw_deg", yaw_deg, -360.0, 360.0);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
 }
 
 double YawStep::EstimateDuration_s(StepPlan&) const {
@@ -148,7 +163,7 @@ std::unique_ptr<ActiveStep> YawStep::Start(const StepContext&, const VehicleComm
   });
 }
 
-void LandStep::Validate() const { RequireNonNegative("timeout_s", timeout_s); }
+void LandStep::Validate() const { RequireDuration("timeout_s", timeout_s); }
 
 double LandStep::EstimateDuration_s(StepPlan& plan) const {
   const double s = std::abs(plan.home_W.z() - plan.position_W.z());  // at 1 m/s

@@ -25,6 +25,8 @@ struct TakeoffStep {
             "fail the mission if not done after this long (s); 0 = automatic");
   }
   void Validate() const;
+  /// The height above the start stays within the flight region.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };
@@ -57,6 +59,8 @@ struct GotoStep {
     v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
   }
   void Validate() const;
+  /// The target lies in the flight region, above the ground; the speed is the vehicle's.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   /// True when the target is given by latitude_deg, longitude_deg and altitude_m.
   bool has_geodetic() const { return latitude_deg || longitude_deg || altitude_m; }
   /// The target in world NED (m).

@@ -1,8 +1,11 @@
 #include "engine/mission/steps/host_steps.h"
 
+#include <algorithm>
 #include <numbers>
 #include <string>
 #include <utility>
+
+#include "engine/mission/steps/step_checks.h"
 
 namespace airis::engine {
 namespace {
@@ -89,7 +92,7 @@ class WaitAtBarrier final : public ActiveStep {
 
 }  // namespace
 
-void WaitStep::Validate() const { RequireNonNegative("duration_s", duration_s); }
+void WaitStep::Validate() const { RequireDuration("duration_s", duration_s); }
 
 double WaitStep::EstimateDuration_s(StepPlan&) const { return duration_s; }
 
@@ -101,7 +104,27 @@ std::unique_ptr<ActiveStep> WaitStep::Start(const StepContext&, const VehicleCom
   });
 }
 
-void CaptureStep::Validate() const { RequireNonNegative("rate_hz", rate_hz); }
+void CaptureStep::Validate() const {
+  if (rate_hz != 0.0) RequireRate("rate_hz", rate_hz, kMaxPhysicsRate_hz);
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    RequireName("cameras[" + std::to_string(i) + "]", cameras[i]);
+  }
+}
+
+void CaptureStep::Check(const MissionLimits& limits, const StepPlan&) const {
+  if (rate_hz != 0.0) RequireRate("rate_hz", rate_hz, limits.physics_rate_hz);
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    if (std::find(limits.cameras.begin(), limits.cameras.end(), cameras[i]) !=
+        limits.cameras.end()) {
+      continue;
+    }
+    std::string known;
+    for (const std::string& c : limits.cameras) known += (known.empty() ? "" : ", ") + c;
+    throw InvalidField("cameras[" + std::to_string(i) + "]",
+                       "its vehicle has no camera '" + cameras[i] + "' (it has " +
+                           (known.empty() ? "none" : known) + ")");
+  }
+}
 
 double CaptureStep::EstimateDuration_s(StepPlan&) const { return 0.0; }
 
@@ -116,14 +139,31 @@ std::unique_ptr<ActiveStep> CaptureStep::Start(const StepContext&,
 
 void RandomPosesStep::Validate() const {
   Require(count >= 1, "count", "must be at least 1 (got " + std::to_string(count) + ")");
-  RequireFinite("min_ned_m", min_ned_m);
-  RequireFinite("max_ned_m", max_ned_m);
+  Require(static_cast<std::size_t>(count) <= kMaxRandomPoses, "count",
+          "must be at most " + std::to_string(kMaxRandomPoses) + " (got " + std::to_string(count) +
+              "; docs/limits.md)");
+  RequireWithinWorld("min_ned_m", min_ned_m);
+  RequireWithinWorld("max_ned_m", max_ned_m);
   for (int i = 0; i < 3; ++i) {
     Require(min_ned_m[i] <= max_ned_m[i], "max_ned_m",
             "every component must be >= the same component of min_ned_m");
   }
   RequireInRange("max_tilt_deg", max_tilt_deg, 0.0, 89.0);
   RequirePositive("dwell_s", dwell_s);
+  RequireDuration("dwell_s", dwell_s * count);
+}
+
+void RandomPosesStep::Check(const MissionLimits& limits, const StepPlan&) const {
+  Require(!limits.has_ground || min_ned_m.z() <= 0.0, "min_ned_m",
+          "the whole volume is under the ground (min_ned_m down " + FormatNumber(min_ned_m.z()) +
+              " m > 0; NED z is down, heights are negative)");
+  // A volume reaching into the ground is allowed: the poses drawn there show the ground.
+  RequireInRegion("min_ned_m", limits, min_ned_m, /*below_ground_ok=*/true);
+  RequireInRegion("max_ned_m", limits, max_ned_m, /*below_ground_ok=*/true);
+  Require(!limits.inside_object || !limits.inside_object(Eigen::AlignedBox3d(min_ned_m, max_ned_m)),
+          "min_ned_m",
+          "the whole volume is inside an object of the scene: every frame would be "
+          "taken from inside it");
 }
 
 double RandomPosesStep::EstimateDuration_s(StepPlan&) const { return count * dwell_s; }

@@ -40,6 +40,8 @@ struct CaptureStep {
     v.Field("cameras", cameras, "camera names; empty = all");
   }
   void Validate() const;
+  /// Every camera named is one of the scene's; the rate is at most the physics rate.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };
@@ -63,6 +65,9 @@ struct RandomPosesStep {
     v.Field("dwell_s", dwell_s, "simulated time at each pose (s)");
   }
   void Validate() const;
+  /// The volume lies in the flight region, and not entirely under the ground or inside one object
+  /// (every frame would be taken from inside it).
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };

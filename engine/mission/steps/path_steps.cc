@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "engine/mission/path.h"
+#include "engine/mission/steps/step_checks.h"
 
 namespace airis::engine {
 namespace {
@@ -158,12 +159,19 @@ double PathLength(const std::vector<Vec3>& points, double corner_radius_m, StepP
 void PathStep::Validate() const {
   Require(!waypoints_ned_m.empty(), "waypoints_ned_m", "needs at least one waypoint");
   for (std::size_t i = 0; i < waypoints_ned_m.size(); ++i) {
-    RequireFinite("waypoints_ned_m[" + std::to_string(i) + "]", waypoints_ned_m[i]);
+    RequireWithinWorld("waypoints_ned_m[" + std::to_string(i) + "]", waypoints_ned_m[i]);
   }
   RequirePositive("speed_m_s", speed_m_s);
-  RequireNonNegative("corner_radius_m", corner_radius_m);
+  RequireInRange("corner_radius_m", corner_radius_m, 0.0, kMaxCoordinate_m);
   if (yaw_deg) RequireInRange("yaw_deg", *yaw_deg, -360.0, 360.0);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void PathStep::Check(const MissionLimits& limits, const StepPlan&) const {
+  for (std::size_t i = 0; i < waypoints_ned_m.size(); ++i) {
+    RequireInRegion("waypoints_ned_m[" + std::to_string(i) + "]", limits, waypoints_ned_m[i]);
+  }
+  RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 
 double PathStep::EstimateDuration_s(StepPlan& plan) const {
@@ -179,14 +187,32 @@ void SurveyStep::Validate() const {
   Require(polygon_ne_m.size() >= 2, "polygon_ne_m",
           "needs two corners (a rectangle) or at least three (a polygon)");
   for (std::size_t i = 0; i < polygon_ne_m.size(); ++i) {
-    RequireFinite("polygon_ne_m[" + std::to_string(i) + "]", polygon_ne_m[i]);
+    RequireWithinWorld("polygon_ne_m[" + std::to_string(i) + "]", polygon_ne_m[i]);
   }
+  // A survey of nothing would "succeed" without flying.
+  Require(CalcPolygonArea_m2(polygon_ne_m) > 0.0, "polygon_ne_m",
+          "the corners enclose no area (equal, or on one line): nothing to survey");
+  RequireInRange("height_above_start_m", height_above_start_m, 0.0, kMaxFlightHeight_m);
   RequirePositive("height_above_start_m", height_above_start_m);
   RequirePositive("spacing_m", spacing_m);
   RequireInRange("heading_deg", heading_deg, -360.0, 360.0);
+  const double lines = CalcPolygonWidth_m(polygon_ne_m, DegToRad(heading_deg)) / spacing_m;
+  Require(lines <= static_cast<double>(kMaxSurveyLines), "spacing_m",
+          "gives " + FormatNumber(std::ceil(lines)) + " survey lines, more than the limit of " +
+              std::to_string(kMaxSurveyLines) + " (got " + FormatNumber(spacing_m) +
+              " m; docs/limits.md)");
   RequirePositive("speed_m_s", speed_m_s);
-  RequireNonNegative("corner_radius_m", corner_radius_m);
-  RequireNonNegative("timeout_s", timeout_s);
+  RequireInRange("corner_radius_m", corner_radius_m, 0.0, kMaxCoordinate_m);
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void SurveyStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
+  for (std::size_t i = 0; i < polygon_ne_m.size(); ++i) {
+    RequireInRegion(
+        "polygon_ne_m[" + std::to_string(i) + "]", limits,
+        Vec3(polygon_ne_m[i].x(), polygon_ne_m[i].y(), plan.home_W.z() - height_above_start_m));
+  }
+  RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 
 std::vector<Vec3> SurveyStep::CalcWaypoints_W(const Vec3& home_W) const {
@@ -206,11 +232,26 @@ std::unique_ptr<ActiveStep> SurveyStep::Start(const StepContext& c, const Vehicl
 }
 
 void OrbitStep::Validate() const {
-  RequireFinite("center_ned_m", center_ned_m);
+  RequireWithinWorld("center_ned_m", center_ned_m);
+  RequireInRange("radius_m", radius_m, 0.0, kMaxCoordinate_m);
   RequirePositive("radius_m", radius_m);
   RequirePositive("speed_m_s", speed_m_s);
   RequirePositive("turns", turns);
-  RequireNonNegative("timeout_s", timeout_s);
+  const double duration_s = 2.0 * kPi * radius_m * turns / speed_m_s;
+  Require(duration_s <= kMaxMissionDuration_s, "turns",
+          FormatNumber(turns) + " turns would take " + FormatRounded(duration_s) +
+              " s of simulated time, more than the limit of " +
+              FormatNumber(kMaxMissionDuration_s) + " s (docs/limits.md)");
+  RequireDuration("timeout_s", timeout_s);
+}
+
+void OrbitStep::Check(const MissionLimits& limits, const StepPlan&) const {
+  // The circle's extreme points north, south, east and west of the centre.
+  for (const Vec3& offset :
+       {Vec3(radius_m, 0, 0), Vec3(-radius_m, 0, 0), Vec3(0, radius_m, 0), Vec3(0, -radius_m, 0)}) {
+    RequireInRegion("center_ned_m", limits, Vec3(center_ned_m + offset));
+  }
+  RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 
 double OrbitStep::EstimateDuration_s(StepPlan&) const {

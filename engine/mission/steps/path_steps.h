@@ -40,6 +40,8 @@ struct PathStep {
     v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
   }
   void Validate() const;
+  /// Every waypoint lies in the flight region, above the ground; the speed is the vehicle's.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };
@@ -69,7 +71,11 @@ struct SurveyStep {
     v.Field("corner_radius_m", corner_radius_m, "turn radius at line ends (m)");
     v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
   }
+  /// Throws InvalidField also for a polygon without area (corners equal or on one line) and for
+  /// more than kMaxSurveyLines lines.
   void Validate() const;
+  /// Every corner lies in the flight region, at a height in it; the speed is the vehicle's.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   /// The lawnmower's waypoints, at `height_above_start_m` above `home_W`.
   std::vector<Vec3> CalcWaypoints_W(const Vec3& home_W) const;
   double EstimateDuration_s(StepPlan& plan) const;
@@ -98,7 +104,10 @@ struct OrbitStep {
     v.Field("clockwise", clockwise, "direction seen from above");
     v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
   }
+  /// Throws InvalidField also for an orbit longer than kMaxMissionDuration_s.
   void Validate() const;
+  /// The circle lies in the flight region, above the ground; the speed is the vehicle's.
+  void Check(const MissionLimits& limits, const StepPlan& plan) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "tools/cli/commands.h"
 
@@ -17,7 +19,9 @@ struct CommandResult {
 };
 
 /// `add_command` is one of the Add*Command functions of tools/commands.h.
-inline CommandResult RunAiris(void (*add_command)(CLI::App&, int&), const std::string& args) {
+/// `parse` runs the parser on the app (its arguments given in one of CLI11's forms).
+template <class Parse>
+CommandResult RunAirisParsing(void (*add_command)(CLI::App&, int&), Parse&& parse) {
   CLI::App app{"airis"};
   app.require_subcommand(1);
   CommandResult r;
@@ -25,13 +29,27 @@ inline CommandResult RunAiris(void (*add_command)(CLI::App&, int&), const std::s
   ::testing::internal::CaptureStdout();
   ::testing::internal::CaptureStderr();
   try {
-    app.parse(args, false);
+    parse(app);
   } catch (const CLI::ParseError& e) {
     r.exit_code = app.exit(e);
   }
   r.out = ::testing::internal::GetCapturedStdout();
   r.err = ::testing::internal::GetCapturedStderr();
   return r;
+}
+
+/// `args`: the command line after `airis`, split as a shell would (quotes group words).
+inline CommandResult RunAiris(void (*add_command)(CLI::App&, int&), const std::string& args) {
+  return RunAirisParsing(add_command, [&](CLI::App& app) { app.parse(args, false); });
+}
+
+/// `args`: the command line after `airis`, one argument each, as a shell passes them (an empty
+/// argument, `""`, stays one; the string form drops it).
+inline CommandResult RunAiris(void (*add_command)(CLI::App&, int&), std::vector<std::string> args) {
+  return RunAirisParsing(add_command, [&](CLI::App& app) {
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    app.parse(args);
+  });
 }
 
 }  // namespace airis::tools::testing

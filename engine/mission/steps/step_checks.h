@@ -1,0 +1,20 @@
+#pragma once
+
+// Checks of step settings against what the scene and vehicle allow (MissionStepSpec::Check).
+
+#include <string_view>
+
+#include "engine/mission/mission_step.h"
+
+namespace airis::engine {
+
+/// Throws InvalidField(field) unless `p_W` lies in limits.region_W and, with a ground, not below it
+/// (`below_ground_ok`: any depth below the region is accepted).
+void RequireInRegion(std::string_view field, const MissionLimits& limits, const Vec3& p_W,
+                     bool below_ground_ok = false);
+
+/// Throws InvalidField(field) when `speed_m_s` exceeds the vehicle's top speed (the step would
+/// fly slower than planned and time out).
+void RequireSpeed(std::string_view field, const MissionLimits& limits, double speed_m_s);
+
+}  // namespace airis::engine

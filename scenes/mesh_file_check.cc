@@ -1,0 +1,344 @@
+#include "scenes/mesh_file_check.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+#include "engine/core/config.h"
+#include "engine/core/limits.h"
+#include "scenes/mesh_loader.h"
+
+namespace airis::scenes {
+
+namespace fs = std::filesystem;
+using engine::kMaxMeshTriangles;
+using engine::kMaxMeshVertices;
+
+namespace {
+
+// The formats scenes accept (docs/scene-format.md); the importer reads many more, each with its own
+// parser, which scenes have no use for.
+constexpr const char* kMeshExtensions[] = {"obj", "gltf", "glb", "fbx", "ply", "stl", "dae"};
+// A PLY header is a few hundred bytes; one this long is not a mesh.
+constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
+// Node trees of real models are a few levels deep.
+constexpr std::size_t kMaxGltfNodeDepth = 256;
+
+std::string Count(std::uint64_t n) { return std::to_string(n); }
+
+[[noreturn]] void Refuse(const std::string& problem) { throw MeshLoadError(problem); }
+
+std::string Lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string ReadBytes(const std::string& path, std::size_t offset, std::size_t count) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(offset));
+  std::string out(count, '\0');
+  in.read(out.data(), static_cast<std::streamsize>(count));
+  out.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return out;
+}
+
+std::uint64_t LittleEndian(std::string_view bytes) {
+  std::uint64_t v = 0;
+  for (std::size_t i = bytes.size(); i > 0; --i) {
+    v = (v << 8) | static_cast<unsigned char>(bytes[i - 1]);
+  }
+  return v;
+}
+
+void RequireCount(const char* what, std::uint64_t count, std::uint64_t limit) {
+  if (count > limit) {
+    Refuse("the file declares " + Count(count) + " " + what + ", more than the limit of " +
+           Count(limit) + " (docs/limits.md)");
+  }
+}
+
+/// PLY (Turk 1994): the header declares each element's count and properties; the body must have
+/// room for them (binary: their fixed sizes; ASCII: at least "0 " per property).
+void CheckPly(const std::string& path, std::uintmax_t file_bytes) {
+  const std::string head = ReadBytes(path, 0, kMaxPlyHeaderBytes);
+  const std::size_t end = head.find("end_header");
+  if (end == std::string::npos) Refuse("a PLY file without 'end_header' in its first 64 KiB");
+  const std::size_t body_start = head.find('\n', end);
+  const std::uint64_t body_bytes =
+      body_start == std::string::npos ? 0 : file_bytes - (body_start + 1);
+  std::istringstream lines(head.substr(0, end));
+  std::string line;
+  bool binary = false;
+  struct Element {
+    std::string name;
+    std::uint64_t count = 0;
+    std::uint64_t min_bytes = 0;  // per element
+  };
+  std::vector<Element> elements;
+  auto type_bytes = [](const std::string& type) -> std::uint64_t {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" ||
+        type == "float32")
+      return 4;
+    if (type == "double" || type == "float64") return 8;
+    Refuse("a PLY property of unknown type " + engine::QuoteValue(type));
+  };
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (word == "format") {
+      std::string format;
+      words >> format;
+      binary = format != "ascii";
+    } else if (word == "element") {
+      Element e;
+      std::string count;
+      words >> e.name >> count;
+      const auto parsed = std::from_chars(count.data(), count.data() + count.size(), e.count);
+      if (parsed.ec == std::errc::result_out_of_range) e.count = UINT64_MAX;
+      if (parsed.ec == std::errc::invalid_argument) {
+        Refuse("a PLY element " + engine::QuoteValue(e.name) + " without a count");
+      }
+      elements.push_back(e);
+    } else if (word == "property" && !elements.empty()) {
+      std::string type;
+      words >> type;
+      if (type == "list") {
+        std::string count_type;
+        words >> count_type;
+        elements.back().min_bytes += binary ? type_bytes(count_type) : 2;
+      } else {
+        elements.back().min_bytes += binary ? type_bytes(type) : 2;
+      }
+    }
+  }
+  std::uint64_t needed = 0;
+  for (const Element& e : elements) {
+    if (e.name == "vertex") RequireCount("vertices", e.count, kMaxMeshVertices);
+    if (e.name == "face") RequireCount("faces", e.count, kMaxMeshTriangles);
+    const std::uint64_t per = std::max<std::uint64_t>(e.min_bytes, 1);
+    if (e.count > body_bytes / per || needed + e.count * per > body_bytes) {
+      Refuse("the header declares " + Count(e.count) + " " + engine::QuoteValue(e.name) +
+             " elements, more than the " + Count(body_bytes) + " bytes after it can hold");
+    }
+    needed += e.count * per;
+  }
+}
+
+/// Binary STL: an 80-byte header, a triangle count, then 50 bytes per triangle. ASCII STL lists
+/// its facets one by one.
+void CheckStl(const std::string& path, std::uintmax_t file_bytes) {
+  const std::string head = ReadBytes(path, 0, 84);
+  if (Lowercase(head.substr(0, 5)) == "solid" &&
+      ReadBytes(path, 0, 1024).find("facet") != std::string::npos) {
+    return;  // ASCII
+  }
+  if (head.size() < 84) Refuse("too short for a binary STL file (84 bytes of header)");
+  const std::uint64_t triangles = LittleEndian(std::string_view(head).substr(80, 4));
+  RequireCount("triangles", triangles, kMaxMeshTriangles);
+  if (84 + 50 * triangles > file_bytes) {
+    Refuse("the header declares " + Count(triangles) + " triangles (" + Count(84 + 50 * triangles) +
+           " bytes) but the file has " + Count(file_bytes));
+  }
+}
+
+/// Bytes of one element of a glTF accessor (glTF 2.0, 3.6.2).
+std::uint64_t AccessorElementBytes(const nlohmann::json& accessor) {
+  static const std::pair<const char*, std::uint64_t> kComponents[] = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
+  std::uint64_t components = 1;
+  const std::string type = accessor.value("type", std::string("SCALAR"));
+  for (const auto& [name, n] : kComponents) {
+    if (type == name) components = n;
+  }
+  const int component_type = accessor.value("componentType", 5126);
+  const std::uint64_t component_bytes = (component_type == 5120 || component_type == 5121)   ? 1
+                                        : (component_type == 5122 || component_type == 5123) ? 2
+                                                                                             : 4;
+  return components * component_bytes;
+}
+
+std::uint64_t Unsigned(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  if (it == object.end()) return 0;
+  if (!it->is_number_unsigned()) {
+    if (it->is_number_integer() || it->is_number_float()) {
+      Refuse("glTF '" + std::string(key) + "' must be a whole number >= 0");
+    }
+    return 0;
+  }
+  return it->get<std::uint64_t>();
+}
+
+/// glTF 2.0 JSON: every buffer holds the bytes it claims (from the GLB's binary chunk, a data URI
+/// or a file beside it), every view lies within its buffer, every accessor within its view, and no
+/// accessor (those without a view are zero-filled: nothing bounds them but their count) is larger
+/// than the limits. Nodes form a forest, as the specification requires (a node shared by two
+/// parents would be copied for each).
+void CheckGltfJson(const std::string& path, const std::string& text, std::uint64_t glb_bin_bytes) {
+  const nlohmann::json gltf = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (gltf.is_discarded() || !gltf.is_object()) Refuse("its glTF JSON does not parse");
+  const nlohmann::json empty = nlohmann::json::array();
+  auto list = [&](const char* key) -> const nlohmann::json& {
+    const auto it = gltf.find(key);
+    return it != gltf.end() && it->is_array() ? *it : empty;
+  };
+  std::vector<std::uint64_t> buffer_bytes;
+  for (const auto& buffer : list("buffers")) {
+    if (!buffer.is_object()) Refuse("a glTF buffer that is not an object");
+    const std::uint64_t claimed = Unsigned(buffer, "byteLength");
+    std::uint64_t available = glb_bin_bytes;
+    if (const auto uri = buffer.find("uri"); uri != buffer.end() && uri->is_string()) {
+      const std::string& u = uri->get_ref<const std::string&>();
+      if (u.rfind("data:", 0) == 0) {
+        const std::size_t comma = u.find(',');
+        available = comma == std::string::npos ? 0 : (u.size() - comma - 1) / 4 * 3;
+      } else {
+        std::error_code ec;
+        const fs::path file = fs::path(path).parent_path() / u;
+        available = fs::is_regular_file(file, ec) ? fs::file_size(file, ec) : 0;
+      }
+    }
+    if (claimed > available) {
+      Refuse("glTF buffer " + Count(buffer_bytes.size()) + " claims " + Count(claimed) +
+             " bytes but only " + Count(available) + " are there");
+    }
+    buffer_bytes.push_back(claimed);
+  }
+  std::vector<std::uint64_t> view_bytes;
+  for (const auto& view : list("bufferViews")) {
+    if (!view.is_object()) Refuse("a glTF buffer view that is not an object");
+    const std::uint64_t buffer = Unsigned(view, "buffer");
+    const std::uint64_t offset = Unsigned(view, "byteOffset");
+    const std::uint64_t length = Unsigned(view, "byteLength");
+    if (buffer >= buffer_bytes.size() || offset > buffer_bytes[buffer] ||
+        length > buffer_bytes[buffer] - offset) {
+      Refuse("glTF buffer view " + Count(view_bytes.size()) + " lies outside its buffer");
+    }
+    view_bytes.push_back(length);
+  }
+  std::size_t index = 0;
+  for (const auto& accessor : list("accessors")) {
+    if (!accessor.is_object()) Refuse("a glTF accessor that is not an object");
+    const std::uint64_t count = Unsigned(accessor, "count");
+    RequireCount("elements in one accessor", count, 3 * kMaxMeshTriangles);
+    const std::uint64_t bytes = count * AccessorElementBytes(accessor);
+    if (bytes > engine::kMaxMeshFileBytes) {
+      Refuse("glTF accessor " + Count(index) + " is " + Count(bytes) +
+             " bytes, more than the mesh file limit of " + Count(engine::kMaxMeshFileBytes));
+    }
+    if (accessor.contains("bufferView")) {
+      const std::uint64_t view = Unsigned(accessor, "bufferView");
+      const std::uint64_t offset = Unsigned(accessor, "byteOffset");
+      if (view >= view_bytes.size() || offset > view_bytes[view] ||
+          (count > 0 && AccessorElementBytes(accessor) > view_bytes[view] - offset)) {
+        Refuse("glTF accessor " + Count(index) + " lies outside its buffer view");
+      }
+    }
+    ++index;
+  }
+  const nlohmann::json& nodes = list("nodes");
+  constexpr std::size_t kNoParent = SIZE_MAX;
+  std::vector<std::size_t> parent(nodes.size(), kNoParent);
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (!nodes[n].is_object()) continue;
+    const auto children = nodes[n].find("children");
+    if (children == nodes[n].end() || !children->is_array()) continue;
+    for (const auto& child : *children) {
+      if (!child.is_number_unsigned() || child.get<std::uint64_t>() >= nodes.size()) {
+        Refuse("a glTF node names a child that does not exist");
+      }
+      std::size_t& p = parent[child.get<std::size_t>()];
+      if (p != kNoParent) {
+        Refuse("glTF node " + Count(child.get<std::uint64_t>()) +
+               " is a child of two nodes (glTF 2.0 requires a tree)");
+      }
+      p = n;
+    }
+  }
+  // Importers walk the tree recursively: a chain of a million nodes would exhaust the stack, and a
+  // loop never ends.
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    std::size_t depth = 0;
+    for (std::size_t at = n; parent[at] != kNoParent; at = parent[at]) {
+      if (++depth > kMaxGltfNodeDepth) {
+        Refuse("glTF node " + Count(n) + " is nested more than " + Count(kMaxGltfNodeDepth) +
+               " levels deep (or in a loop)");
+      }
+    }
+  }
+}
+
+/// GLB (glTF 2.0, 4.4): a 12-byte header with the total length, then a JSON chunk and an optional
+/// binary chunk, each with its length. Lengths beyond the file are refused.
+void CheckGlb(const std::string& path, std::uintmax_t file_bytes) {
+  const std::string header = ReadBytes(path, 0, 20);
+  if (header.size() < 20 || header.substr(0, 4) != "glTF") {
+    Refuse("not a GLB file (it must start with 'glTF' and a 12-byte header)");
+  }
+  const std::uint64_t version = LittleEndian(std::string_view(header).substr(4, 4));
+  const std::uint64_t length = LittleEndian(std::string_view(header).substr(8, 4));
+  if (version != 2) Refuse("a GLB file of version " + Count(version) + " (only 2 is read)");
+  if (length > file_bytes) {
+    Refuse("the header declares " + Count(length) + " bytes but the file has " + Count(file_bytes));
+  }
+  const std::uint64_t json_bytes = LittleEndian(std::string_view(header).substr(12, 4));
+  if (LittleEndian(std::string_view(header).substr(16, 4)) != 0x4E4F534Au) {
+    Refuse("the first GLB chunk is not JSON");
+  }
+  if (json_bytes > length - 20) {
+    Refuse("the JSON chunk declares " + Count(json_bytes) + " bytes, more than the file holds");
+  }
+  std::uint64_t bin_bytes = 0;
+  const std::uint64_t bin_at = 20 + json_bytes;
+  if (bin_at + 8 <= length) {
+    const std::string bin = ReadBytes(path, bin_at, 8);
+    bin_bytes = LittleEndian(std::string_view(bin).substr(0, 4));
+    if (bin_bytes > length - bin_at - 8) {
+      Refuse("the binary chunk declares " + Count(bin_bytes) + " bytes, more than the file holds");
+    }
+  }
+  CheckGltfJson(path, ReadBytes(path, 20, json_bytes), bin_bytes);
+}
+
+}  // namespace
+
+void CheckMeshFileBeforeImport(const std::string& path) {
+  std::string extension = Lowercase(fs::path(path).extension().string());
+  if (!extension.empty()) extension.erase(0, 1);
+  const bool known = std::any_of(std::begin(kMeshExtensions), std::end(kMeshExtensions),
+                                 [&](const char* e) { return extension == e; });
+  if (!known) {
+    Refuse("unsupported mesh format " + engine::QuoteValue(extension) +
+           " (expected .obj, .gltf, .glb, .fbx, .ply, .stl or .dae)");
+  }
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec) Refuse("cannot read the file");
+  if (bytes > engine::kMaxMeshFileBytes) {
+    Refuse("the file has " + Count(bytes) + " bytes, more than the limit of " +
+           Count(engine::kMaxMeshFileBytes) + " (docs/limits.md)");
+  }
+  if (extension == "ply") CheckPly(path, bytes);
+  if (extension == "stl") CheckStl(path, bytes);
+  if (extension == "glb" || extension == "gltf") {
+    // The glTF importer reads either form whatever the extension says.
+    if (ReadBytes(path, 0, 4) == "glTF") {
+      CheckGlb(path, bytes);
+    } else {
+      CheckGltfJson(path, ReadBytes(path, 0, bytes), 0);
+    }
+  }
+}
+
+}  // namespace airis::scenes
