@@ -5,12 +5,21 @@ namespace airis::engine {
 Sensor::Sensor(std::string name, double rate_hz) : name_(std::move(name)), schedule_(rate_hz) {}
 
 bool Sensor::Update(const SensorContext& context) {
+  if (!SampleIfDue(context)) return false;
+  NotifyListeners();
+  return true;
+}
+
+bool Sensor::SampleIfDue(const SensorContext& context) {
   if (schedule_.ConsumeDue(context.now_ns) == 0 || !enabled_) return false;
   if (gate_ && !gate_(context.now_ns)) return false;
   last_sample_ns_ = context.now_ns;
   Sample(context);
-  for (const auto& listener : listeners_) listener(*this);
   return true;
+}
+
+void Sensor::NotifyListeners() const {
+  for (const auto& listener : listeners_) listener(*this);
 }
 
 }  // namespace airis::engine

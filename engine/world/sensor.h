@@ -40,9 +40,17 @@ class Sensor {
   Sensor(const Sensor&) = delete;
   Sensor& operator=(const Sensor&) = delete;
 
-  /// Called by the Simulation every tick after physics: samples when the schedule says so and
-  /// notifies the listeners. Returns true when a sample was taken.
+  /// Called every tick after physics: samples when the schedule says so and notifies the
+  /// listeners. Returns true when a sample was taken.
   bool Update(const SensorContext& context);
+  /// Update without the listeners (SampleIfDue, then NotifyListeners when it sampled, is Update).
+  /// Sensors of different vehicles may sample at the same time on different threads (each reads
+  /// only its context and changes only itself); an image sensor renders, so only on the thread
+  /// that owns the GL context. The Simulation samples every vehicle's sensors on its threads, then
+  /// notifies on its own thread, in order.
+  bool SampleIfDue(const SensorContext& context);
+  /// Calls every listener with this sensor (after a sample).
+  void NotifyListeners() const;
 
   /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...};
   /// constant over the run.
