@@ -1,7 +1,7 @@
 // `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--cameras a,b] [--shard
 // K/N] [--resume]
-//  [--formats npy,normals,tartanair] [--workers N]`: flies the mission and writes a labeled
-//  dataset.
+//  [--formats npy,normals,tartanair] [--workers N] [--threads N]`: flies the mission and writes a
+//  labeled dataset.
 // `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
 // `airis dataset ... --slurm N [--only-shards K,...]`: submits the shards and their merge to Slurm;
 // `airis dataset status DIR [--json]`: how far they got (docs/cluster.md).
@@ -37,6 +37,7 @@ namespace fs = std::filesystem;
 struct DatasetArgs {
   std::string scene, mission, out, seed, cameras, formats, shard;
   int workers = 2;
+  std::string threads = "1";
   std::int64_t min_object_area_px = 16;
   std::string streams = "capture";
   std::string stream_format = "npy";
@@ -121,6 +122,7 @@ int Run(const DatasetArgs& a) {
   o.outputs = ParseFormats(a.formats);
   o.shard = ParseShard(a.shard);
   o.workers = a.workers;
+  o.threads = ParseThreads(a.threads);
   o.min_object_area_px = a.min_object_area_px;
   if (a.streams != "capture" && a.streams != "flight") {
     throw engine::ConfigError({}, "--streams",
@@ -222,6 +224,7 @@ int SubmitToSlurm(const DatasetArgs& a) {
   // and not in N tasks on the cluster.
   if (!a.seed.empty()) ParseSeed("seed", a.seed);
   ParseFormats(a.formats);
+  ParseThreads(a.threads);
   DatasetOptionValues v;
   v.seed = a.seed;
   v.cameras = a.cameras;
@@ -230,6 +233,7 @@ int SubmitToSlurm(const DatasetArgs& a) {
   v.stream_format = a.stream_format;
   v.min_object_area_px = std::to_string(a.min_object_area_px);
   v.workers = std::to_string(a.workers);
+  v.threads = a.threads;
   if (a.streams != "capture" && a.streams != "flight") {
     throw engine::ConfigError({}, "--streams",
                               "expected capture or flight (got '" + a.streams + "')");
@@ -311,6 +315,8 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", a->shard,
                   "write shard K of N (every N-th frame from the K-th); join with 'merge'");
   cmd->add_option("--workers", a->workers, "image encoding threads (default 2)");
+  cmd->add_option("--threads", a->threads,
+                  "threads that step the vehicles (default 1; the results do not depend on it)");
   cmd->add_option("--streams", a->streams,
                   "sensor, truth and command rows of the capture windows (capture, default) or "
                   "of the whole flight (flight)");

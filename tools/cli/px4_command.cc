@@ -1,5 +1,5 @@
-// `airis px4 SCENE.yaml [--out DIR] [--seed N] [--until SECONDS] [--realtime [FACTOR]]` and
-// `airis px4 airframe SCENE.yaml --vehicle NAME [--id N]` (docs/px4.md).
+// `airis px4 SCENE.yaml [--out DIR] [--seed N] [--until SECONDS] [--realtime [FACTOR]]
+// [--threads N]` and `airis px4 airframe SCENE.yaml --vehicle NAME [--id N]` (docs/px4.md).
 #include <unistd.h>
 
 #include <cstdio>
@@ -23,6 +23,7 @@ struct Px4Args {
   bool realtime_given = false;
   std::string until;
   std::string truth_rate = "100";
+  std::string threads = "1";
 };
 
 struct AirframeArgs {
@@ -47,6 +48,7 @@ int Serve(const Px4Args& a) {
     job.until_ns = engine::SecondsToNs(ParseFiniteNumber("until", a.until), "--until");
   }
   job.truth_rate_hz = ParseFiniteNumber("truth-rate", a.truth_rate);
+  job.threads = ParseThreads(a.threads);
   job.log = PrintToStderr;
   const StopOnSignals signals;
   job.stop = signals.flag();
@@ -112,6 +114,8 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
                   "station or a person)")
       ->expected(0, 1);
   cmd->add_option("--truth-rate", a->truth_rate, "ground-truth log rate (Hz, default 100)");
+  cmd->add_option("--threads", a->threads,
+                  "threads that step the vehicles (default 1; the results do not depend on it)");
   cmd->callback([a, cmd, airframe, &exit_code] {
     if (airframe->parsed()) return;
     a->realtime_given = cmd->count("--realtime") > 0;

@@ -42,7 +42,7 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
     throw engine::ConfigError({}, "--workers",
                               "must be 1 to 64 (got " + std::to_string(o.workers) + ")");
   }
-  SimulationJob job(o.scene);
+  SimulationJob job(o.scene, o.threads);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   const std::size_t vehicle = job.MissionVehicle(mission);
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written

@@ -23,6 +23,7 @@ struct DatasetJobOptions {
   engine::DatasetOutputs outputs;    ///< which files per frame
   ShardSpec shard;
   int workers = 2;  ///< image encoding threads, 1 to 64
+  int threads = 1;  ///< threads that step the vehicles, 1 to 64 (results do not depend on it)
   /// Instances with fewer visible pixels get no COCO annotation (they stay in the label images).
   std::int64_t min_object_area_px = 16;
   /// Sensor, truth and command streams of the whole flight (true) or of the capture windows only.

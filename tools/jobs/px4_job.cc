@@ -12,7 +12,7 @@ namespace airis::tools {
 Px4JobResult RunPx4Job(const Px4JobOptions& o,
                        const std::function<void(const JobProgress&)>& progress) {
   CheckPacingOptions(o.realtime, o.truth_rate_hz);
-  SimulationJob job(o.scene);
+  SimulationJob job(o.scene, o.threads);
   job.DisableImageSensors();
   const std::vector<AttachedAutopilot> px4 = AttachAutopilots(job, o.log);
   if (px4.empty()) {

@@ -13,7 +13,7 @@ namespace airis::tools {
 RunJobResult RunMissionJob(const RunJobOptions& o,
                            const std::function<void(const JobProgress&)>& progress) {
   CheckPacingOptions(o.realtime, o.truth_rate_hz);
-  SimulationJob job(o.scene);
+  SimulationJob job(o.scene, o.threads);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   job.MissionVehicle(mission);  // a mission without its vehicle fails before anything is written
   job.DisableImageSensors();

@@ -14,10 +14,10 @@ scenes::Scene LoadSceneSource(const SceneSource& source) {
                              : scenes::LoadSceneFromString(source.text, source.path, options);
 }
 
-SimulationJob::SimulationJob(const SceneSource& source)
+SimulationJob::SimulationJob(const SceneSource& source, int threads)
     : wall_start_(std::chrono::steady_clock::now()), scene_(LoadSceneSource(source)) {
   simulation_ = std::make_unique<engine::Simulation>(
-      scenes::BuildWorld(scene_), engine::SimulationConfig{scene_.physics.rate_hz});
+      scenes::BuildWorld(scene_), engine::SimulationConfig{scene_.physics.rate_hz, threads});
 }
 
 double SimulationJob::wall_s() const {

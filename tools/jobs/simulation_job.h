@@ -74,8 +74,10 @@ struct MissionFlight {
 /// Simulation that steps it. Its wall clock starts at construction, for progress and summaries.
 class SimulationJob {
  public:
-  /// Loads and builds. Throws ConfigError naming file, line and key for bad input.
-  explicit SimulationJob(const SceneSource& source);
+  /// Loads and builds; the Simulation steps its vehicles on `threads` threads (1 to 64; the
+  /// results do not depend on it). Throws ConfigError naming file, line and key for bad input,
+  /// InvalidField("threads") for a thread count outside that range.
+  explicit SimulationJob(const SceneSource& source, int threads = 1);
 
   const scenes::Scene& scene() const { return scene_; }
   engine::Simulation& simulation() { return *simulation_; }

@@ -70,12 +70,14 @@ class Simulation(_airis._Simulation):
     run`). `name` names text or dict scenes in error messages and anchors their relative paths
     (default "<string>" / "<dict>", relative to the working directory). Each sensor keeps at most
     `max_samples` unread samples (the oldest are dropped beyond it, counted in Sensor.dropped).
+    `threads` (1 to 64) step the vehicles (their physics, sensors and controllers) as `airis run
+    --threads` does: worth it from a few dozen vehicles, and the results do not depend on it.
     Raises ConfigError (`file:line:col: key: problem`) for bad input.
     """
 
-    def __init__(self, scene, seed=None, *, name=None, max_samples=100000):
+    def __init__(self, scene, seed=None, *, name=None, max_samples=100000, threads=1):
         path, text = _scene_source(scene, name)
-        super().__init__(path, text, seed, max_samples)
+        super().__init__(path, text, seed, max_samples, threads)
         self._text = text
         handles = self.vehicle_handles
         for v in handles:
