@@ -178,7 +178,6 @@ struct CollisionWorld::Bullet {
   struct Body {
     std::unique_ptr<btCollisionObject> object;
     Vec3 half_m = Vec3::Zero();
-    double radius_m = 0.0;
     std::vector<std::uint32_t> near;  // colliders of the current query
     struct Algorithm {
       std::uint32_t collider;
@@ -188,6 +187,8 @@ struct CollisionWorld::Bullet {
     std::vector<Algorithm> algorithms_next;  // scratch
   };
   std::vector<Body> bodies;
+  // Radius of each body's bounding sphere (m), apart: the open-air test reads nothing else.
+  std::vector<double> body_radius_m;
 
   static void Free(btDispatcher& dispatcher, btCollisionAlgorithm* algorithm) {
     algorithm->~btCollisionAlgorithm();
@@ -371,7 +372,7 @@ int CollisionWorld::AddBody(const Vec3& box_size_m) {
   body.object->setCollisionShape(shape);
   body.object->setUserIndex(-1);
   body.half_m = 0.5 * box_size_m;
-  body.radius_m = 0.5 * box_size_m.norm();
+  b.body_radius_m.push_back(0.5 * box_size_m.norm());
   return static_cast<int>(b.bodies.size() - 1);
 }
 
@@ -379,18 +380,18 @@ void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q
                                   double margin_m, std::vector<Contact>& contacts) {
   Bullet& b = *bullet_;
   contacts.clear();
-  Bullet::Body& body = b.bodies[static_cast<std::size_t>(body_index)];
+  const auto index = static_cast<std::size_t>(body_index);
+  const double radius_m = b.body_radius_m[index];
   // Open air (the common case: flying above the ground and every roof): the body's bounding sphere
   // is above every collider's bounds, so nothing is near; no rotation, bounds or grid needed.
-  if (p_W.z() + body.radius_m + margin_m < b.grid.top_z()) {
-    if (!body.algorithms.empty()) b.FreeAlgorithms(body);
-    return;
-  }
+  // (It keeps its algorithms, a handful at most, until its next query near colliders.)
+  if (p_W.z() + radius_m + margin_m < b.grid.top_z()) return;
+  Bullet::Body& body = b.bodies[index];
   // Broadphase: the body's world AABB (|R| half-extents) in the grid, then the exact
   // bounding-sphere test against each collider's oriented bounds.
   const Mat3 R_WB = q_WB.toRotationMatrix();
   const Vec3 reach = R_WB.cwiseAbs() * body.half_m + Vec3::Constant(margin_m);
-  b.grid.FindNear(p_W - reach, p_W + reach, p_W, body.radius_m + margin_m, body.near);
+  b.grid.FindNear(p_W - reach, p_W + reach, p_W, radius_m + margin_m, body.near);
 
   // Narrowphase on the near colliders only, with Bullet's contact algorithms (box-box is exact),
   // each kept from the last query when that collider was near then too. The algorithms report
@@ -451,16 +452,18 @@ double CollisionWorld::Sweep(int body_index, const Quat& q_WB, const Vec3& from_
                              Contact* hit) {
   Bullet& b = *bullet_;
   if ((to_W - from_W).squaredNorm() == 0.0) return 1.0;
-  Bullet::Body& body = b.bodies[static_cast<std::size_t>(body_index)];
+  const auto index = static_cast<std::size_t>(body_index);
+  const double radius_m = b.body_radius_m[index];
   // Open air along the whole path (see FindContacts).
-  if (std::max(from_W.z(), to_W.z()) + body.radius_m < b.grid.top_z()) return 1.0;
+  if (std::max(from_W.z(), to_W.z()) + radius_m < b.grid.top_z()) return 1.0;
+  Bullet::Body& body = b.bodies[index];
   const Mat3 R = q_WB.toRotationMatrix();
   // The colliders near the swept segment (a superset of those the box can touch on its way: the
   // sphere about the segment's middle holds the whole swept box); none: no sweep (the common case,
   // and Bullet's sweep is costly).
   const Vec3 reach = R.cwiseAbs() * body.half_m;
   const Vec3 lo = from_W.cwiseMin(to_W) - reach, hi = from_W.cwiseMax(to_W) + reach;
-  b.grid.FindNear(lo, hi, 0.5 * (from_W + to_W), body.radius_m + 0.5 * (to_W - from_W).norm(),
+  b.grid.FindNear(lo, hi, 0.5 * (from_W + to_W), radius_m + 0.5 * (to_W - from_W).norm(),
                   body.near);
   if (body.near.empty()) return 1.0;
   const auto* shape = static_cast<const btConvexShape*>(body.object->getCollisionShape());
