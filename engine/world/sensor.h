@@ -51,6 +51,8 @@ class Sensor {
   bool SampleIfDue(const SensorContext& context);
   /// Calls every listener with this sensor (after a sample).
   void NotifyListeners() const;
+  /// True when a listener was added (NotifyListeners would call someone).
+  bool has_listeners() const { return !listeners_.empty(); }
 
   /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...};
   /// constant over the run.

@@ -26,7 +26,7 @@ void Simulation::Step() {
   clock_.Advance();
 
   const TimeNs now_ns = clock_.now_ns();
-  UpdateSensors(now_ns);
+  if (world_->sensor_count() > 0) UpdateSensors(now_ns);
   const auto control_context = [&](std::size_t i) {
     Vehicle& vehicle = world_->vehicle(i);
     ControlContext context{now_ns,           dt_s,
@@ -70,7 +70,7 @@ void Simulation::UpdateSensors(TimeNs now_ns) {
     for (const auto& sensor : sensors) {
       if (sensor->image() != nullptr) {
         sensor->Update(context);
-      } else if (sensor->last_sample_ns() == now_ns) {
+      } else if (sensor->has_listeners() && sensor->last_sample_ns() == now_ns) {
         sensor->NotifyListeners();
       }
     }

@@ -95,6 +95,7 @@ Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {
                 slots_[vehicle].vehicle->name() + "'");
   }
   sensors.push_back(std::move(sensor));
+  ++sensor_count_;
   return *sensors.back();
 }
 
@@ -120,28 +121,35 @@ int World::FindVehicle(std::string_view name) const {
 }
 
 void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
-  if (dt_s != sleep_dt_s_) {
-    sleep_dt_s_ = dt_s;
-    // Whole ticks covering the delay (a delay of 0.5 s at 1 ms is 500, not 501 by rounding).
-    sleep_delay_ticks_ =
-        std::max(1, static_cast<int>(std::ceil(physics_.sleep.delay_s / dt_s - 1e-9)));
+  if (dt_s != sleep_dt_s_) SetSleepDelay(dt_s);
+  if (slots_.size() == 1) {
+    if (!slots_[0].held) StepVehicle(slots_[0], 0, now_ns, dt_s);
+  } else {
+    ParallelFor(pool, slots_.size(), [&](std::size_t i) {
+      Slot& slot = slots_[i];
+      slot.p_start_W = slot.vehicle->state().p_W;
+      if (!slot.held) StepVehicle(slot, i, now_ns, dt_s);
+    });
   }
-  const bool several = slots_.size() > 1;
-  ParallelFor(pool, slots_.size(), [&](std::size_t i) {
-    Slot& slot = slots_[i];
-    if (several) slot.p_start_W = slot.vehicle->state().p_W;
-    if (!slot.held) StepVehicle(slot, i, now_ns, dt_s);
-  });
+  if (!collision_listeners_.empty()) ReportEvents();
+  if (slots_.size() > 1) ResolveVehicleContacts(now_ns, dt_s);
+}
+
+void World::SetSleepDelay(double dt_s) {
+  sleep_dt_s_ = dt_s;
+  // Whole ticks covering the delay (a delay of 0.5 s at 1 ms is 500, not 501 by rounding).
+  sleep_delay_ticks_ =
+      std::max(1, static_cast<int>(std::ceil(physics_.sleep.delay_s / dt_s - 1e-9)));
+}
+
+void World::ReportEvents() {
   // The listeners hear of the new static contacts on this thread, in vehicle order.
-  if (!collision_listeners_.empty()) {
-    for (Slot& slot : slots_) {
-      for (const CollisionEvent& event : slot.events) {
-        for (const auto& listener : collision_listeners_) listener(event);
-      }
-      slot.events.clear();
+  for (Slot& slot : slots_) {
+    for (const CollisionEvent& event : slot.events) {
+      for (const auto& listener : collision_listeners_) listener(event);
     }
+    slot.events.clear();
   }
-  if (several) ResolveVehicleContacts(now_ns, dt_s);
 }
 
 void World::CalcLocalConditions(std::size_t i, double* air_density_kg_m3,
@@ -219,7 +227,7 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   }
   forcing.force_B = wrench.force_B;
   forcing.torque_B = wrench.torque_B;
-  if (slot.asleep) {
+  if (slot.asleep) [[unlikely]] {
     // Asleep it stays where it fell asleep, unless the forces on it grew or its state was changed
     // from outside (compared to the bit: a sleeping body's state is never touched here).
     const RigidBodyState& rest = slot.rest_state;

@@ -127,6 +127,8 @@ class World {
   std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const {
     return slots_[i].sensors;
   }
+  /// Sensors on all vehicles together.
+  std::size_t sensor_count() const { return sensor_count_; }
 
   /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world; may be
   /// null).
@@ -190,6 +192,8 @@ class World {
     std::size_t first, count;  // range in vehicle_contacts_
   };
   void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
+  void SetSleepDelay(double dt_s);
+  void ReportEvents();  // the vehicles' new static contacts, to the listeners
   // Whether the forces on the body other than gravity and contacts (the actuator wrench, the
   // wind's drag at rest) are within the sleep bound.
   bool IsQuiet(const Slot& slot, const Wrench& wrench, const StepForcing& forcing) const;
@@ -214,6 +218,7 @@ class World {
   int sleep_delay_ticks_ = 0;  // sleep.delay_s in ticks of sleep_dt_s_
   double sleep_dt_s_ = 0.0;
   std::vector<Slot> slots_;
+  std::size_t sensor_count_ = 0;
   std::unique_ptr<RayCaster> ray_caster_;
   std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
   // Vehicle-vehicle contact state (used only with several vehicles).
