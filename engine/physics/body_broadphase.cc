@@ -28,6 +28,7 @@ void BodyBroadphase::FindPairs(std::span<const BodyBounds> bounds, std::vector<B
   pairs.clear();
   entries_.clear();
   large_.clear();
+  still_.clear();
   const std::size_t n = bounds.size();
   if (n < 2) return;
 
@@ -49,6 +50,10 @@ void BodyBroadphase::FindPairs(std::span<const BodyBounds> bounds, std::vector<B
       large_.push_back(static_cast<std::uint32_t>(i));
       continue;
     }
+    if (bounds[i].still) {
+      still_.push_back(static_cast<std::uint32_t>(i));
+      continue;
+    }
     for (std::int64_t z = z0; z <= z1; ++z) {
       for (std::int64_t y = y0; y <= y1; ++y) {
         for (std::int64_t x = x0; x <= x1; ++x) {
@@ -62,36 +67,51 @@ void BodyBroadphase::FindPairs(std::span<const BodyBounds> bounds, std::vector<B
   const std::size_t size = std::bit_ceil(std::max<std::size_t>(16, 2 * entries_.size()));
   const std::uint64_t mask = size - 1;
   slots_.assign(size, -1);
-  auto slot_of = [&](const Entry& e) {
-    const std::uint64_t h = static_cast<std::uint64_t>(e.cx) * 73856093u ^
-                            static_cast<std::uint64_t>(e.cy) * 19349663u ^
-                            static_cast<std::uint64_t>(e.cz) * 83492791u;
+  auto slot_of = [&](std::int64_t cx, std::int64_t cy, std::int64_t cz) {
+    const std::uint64_t h = static_cast<std::uint64_t>(cx) * 73856093u ^
+                            static_cast<std::uint64_t>(cy) * 19349663u ^
+                            static_cast<std::uint64_t>(cz) * 83492791u;
     return static_cast<std::size_t>((h ^ (h >> 29)) & mask);
   };
   for (std::size_t k = 0; k < entries_.size(); ++k) {
-    const std::size_t s = slot_of(entries_[k]);
+    const std::size_t s = slot_of(entries_[k].cx, entries_[k].cy, entries_[k].cz);
     entries_[k].next = slots_[s];
     slots_[s] = static_cast<std::int32_t>(k);
   }
 
-  // Every two entries of one cell (they share a slot); a pair that shares several cells counts in
-  // the one that holds the low corner of the boxes' overlap.
-  for (const Entry& e : entries_) {
-    for (std::int32_t k = e.next; k >= 0; k = entries_[static_cast<std::size_t>(k)].next) {
+  // Box `a` against the listed entries from `first` on in its cell (cx, cy, cz); a pair that
+  // shares several cells counts in the one that holds the low corner of the boxes' overlap.
+  auto pairs_in_cell = [&](std::uint32_t a, std::int64_t cx, std::int64_t cy, std::int64_t cz,
+                           std::int32_t first) {
+    for (std::int32_t k = first; k >= 0; k = entries_[static_cast<std::size_t>(k)].next) {
       const Entry& f = entries_[static_cast<std::size_t>(k)];
-      if (f.cx != e.cx || f.cy != e.cy || f.cz != e.cz) continue;  // another cell, same slot
-      const BodyBounds& a = bounds[e.box];
-      const BodyBounds& b = bounds[f.box];
-      if (!Overlap(a, b)) continue;
-      std::int64_t cx, cy, cz;
-      cell_of(a.lo_W.cwiseMax(b.lo_W), &cx, &cy, &cz);
-      if (cx == e.cx && cy == e.cy && cz == e.cz) pairs.push_back(Ordered(e.box, f.box));
+      if (f.cx != cx || f.cy != cy || f.cz != cz) continue;  // another cell, same slot
+      if (!Overlap(bounds[a], bounds[f.box])) continue;
+      std::int64_t lx, ly, lz;
+      cell_of(bounds[a].lo_W.cwiseMax(bounds[f.box].lo_W), &lx, &ly, &lz);
+      if (lx == cx && ly == cy && lz == cz) pairs.push_back(Ordered(a, f.box));
+    }
+  };
+  // Every two listed entries of one cell (they share a slot).
+  for (const Entry& e : entries_) pairs_in_cell(e.box, e.cx, e.cy, e.cz, e.next);
+  // Each still box against the listed (moving) boxes of the cells it overlaps (none listed: no
+  // lookups).
+  if (entries_.empty()) still_.clear();
+  for (const std::uint32_t i : still_) {
+    std::int64_t x0, y0, z0, x1, y1, z1;
+    cell_of(bounds[i].lo_W, &x0, &y0, &z0);
+    cell_of(bounds[i].hi_W, &x1, &y1, &z1);
+    for (std::int64_t z = z0; z <= z1; ++z) {
+      for (std::int64_t y = y0; y <= y1; ++y) {
+        for (std::int64_t x = x0; x <= x1; ++x) pairs_in_cell(i, x, y, z, slots_[slot_of(x, y, z)]);
+      }
     }
   }
-  // Boxes too large for the grid, against every box (two large ones once).
+  // Boxes too large for the grid, against every box (two large ones once, two still ones never).
   for (const std::uint32_t big : large_) {
     for (std::uint32_t j = 0; j < n; ++j) {
-      if (j == big || (j < big && std::binary_search(large_.begin(), large_.end(), j))) continue;
+      if (j == big || (bounds[big].still && bounds[j].still)) continue;
+      if (j < big && std::binary_search(large_.begin(), large_.end(), j)) continue;
       if (Overlap(bounds[big], bounds[j])) pairs.push_back(Ordered(big, j));
     }
   }

@@ -12,8 +12,6 @@ namespace airis::engine {
 std::size_t World::FindVehiclePairContacts(std::size_t i, std::size_t j) {
   Slot& a = slots_[i];
   Slot& b = slots_[j];
-  // Held and sleeping vehicles do not move: two of them cannot come into contact.
-  if ((a.held || a.asleep) && (b.held || b.asleep)) return 0;
   RigidBodyState& sa = a.vehicle->state();
   RigidBodyState& sb = b.vehicle->state();
   const RigidBodyModel& ma = a.vehicle->body();
@@ -77,8 +75,9 @@ void World::ResolveVehicleContacts(TimeNs now_ns, double dt_s) {
     const Slot& slot = slots_[k];
     const Vec3& p_W = slot.vehicle->state().p_W;
     const Vec3 reach = Vec3::Constant(slot.vehicle->body().bounding_radius_m());
-    swept_bounds_[k] =
-        BodyBounds{p_W.cwiseMin(slot.p_start_W) - reach, p_W.cwiseMax(slot.p_start_W) + reach};
+    // Held and sleeping vehicles do not move: two of them cannot come into contact.
+    swept_bounds_[k] = BodyBounds{p_W.cwiseMin(slot.p_start_W) - reach,
+                                  p_W.cwiseMax(slot.p_start_W) + reach, slot.held || slot.asleep};
   }
   broadphase_.FindPairs(swept_bounds_, near_pairs_);
   for (const auto& [i, j] : near_pairs_) {

@@ -4,9 +4,10 @@
 // iteration is one tick of the whole swarm; items are vehicle-ticks. Run from the repository root.
 //   build/bench/bench_vehicles
 //   valgrind --tool=callgrind --toggle-collect='airis::tools::SwarmScenario::Tick()'
-//       build/bench/bench_vehicles --benchmark_filter='BM_SwarmFlying/flying:100/threads:1$'
-//       --benchmark_min_time=0.01
-//   instructions per vehicle-tick: the collected Ir / the calls of Simulation::Step / N.
+//       build/bench/bench_vehicles --benchmark_filter='BM_SwarmFlying/flying:100/threads:1/'
+//       --benchmark_min_time=1
+//   instructions per vehicle-tick: the collected Ir / the calls of Simulation::Step / N (a
+//   shorter min_time stops after a first, cold tick under valgrind).
 // The thread columns are wall time (UseRealTime): CPU time counts both threads.
 
 #include <benchmark/benchmark.h>
