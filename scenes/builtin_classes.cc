@@ -19,6 +19,8 @@ std::vector<engine::SemanticClass> BuiltInClasses() {
       {11, "structure", Eigen::Vector3f(0.40f, 0.40f, 0.61f)},
       {12, "landing_pad", Eigen::Vector3f(1.00f, 0.50f, 0.00f)},
       {13, "water", Eigen::Vector3f(0.10f, 0.40f, 0.90f), true},
+      // The vehicles' own bodies (vehicles[].body.class), so drones can be detected and tracked.
+      {14, "drone", Eigen::Vector3f(0.00f, 0.85f, 0.75f)},
   };
 }
 

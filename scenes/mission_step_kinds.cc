@@ -10,6 +10,7 @@ std::span<const MissionStepKind> MissionStepKinds() {
       MissionStepKindOf<engine::LandStep>(),        MissionStepKindOf<engine::SurveyStep>(),
       MissionStepKindOf<engine::WaitStep>(),        MissionStepKindOf<engine::CaptureStep>(),
       MissionStepKindOf<engine::RandomPosesStep>(), MissionStepKindOf<engine::SetWindStep>(),
+      MissionStepKindOf<engine::BarrierStep>(),
   };
   return kKinds;
 }

@@ -17,6 +17,7 @@
 #include "engine/physics/rigid_body_state.h"
 #include "engine/scene/static_scene.h"
 #include "engine/world/world.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/sensor_spec.h"
 #include "scenes/vehicle_spec.h"
 
@@ -52,6 +53,15 @@ struct GeneratedSummary {
   std::size_t bushes = 0;
 };
 
+/// Where a scene's sun is, and what placed it.
+struct SunPosition {
+  double azimuth_rad = 0.0;    ///< direction toward the sun, clockwise from north
+  double elevation_rad = 0.0;  ///< above the horizon; negative when the sun is below it
+  /// The local solar time it was placed for (`lighting.time_of_day_h`), or unset when the scene
+  /// gave the angles.
+  std::optional<double> time_of_day_h;
+};
+
 /// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and
 /// the vehicles to create. A scene that loads has finite poses, positive scales, unique instance
 /// ids in 1..65535, and no vehicle starting inside an object.
@@ -65,9 +75,12 @@ struct Scene {
   engine::GeodeticPosition origin;  ///< of the world NED frame
   engine::EnvironmentConfig environment;
   engine::PhysicsConfig physics;  ///< tick rate and contact solver (the `physics:` block)
+  SunPosition sun;                ///< as lighting.sun_direction_W of the static scene
   engine::StaticScene static_scene;
   std::vector<VehicleDescription> vehicles;
   std::vector<GeneratedSummary> generated;
+  /// The overrides it was loaded with (SceneLoadOptions): with `files`, what made this scene.
+  std::vector<SceneOverride> overrides;
 };
 
 /// What a loader applies over the file's own settings.
@@ -75,6 +88,9 @@ struct SceneLoadOptions {
   /// Replaces `scene.seed` before the generators draw from it, so the scene built is the one of
   /// this seed (a dataset's manifest then reproduces it).
   std::optional<std::uint64_t> seed;
+  /// Keys of the scene document replaced before it is validated and built (`--set`;
+  /// ApplySceneOverrides). Errors their values cause name them.
+  std::vector<SceneOverride> overrides = {};
 };
 
 /// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and

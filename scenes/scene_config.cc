@@ -1,5 +1,8 @@
 #include "scenes/scene_config.h"
 
+#include <string>
+#include <utility>
+
 namespace airis::scenes {
 
 using engine::InvalidField;
@@ -55,8 +58,15 @@ void LightingConfig::Validate() const {
     Require(*time_of_day_h >= 0.0 && *time_of_day_h < 24.0, "time_of_day_h",
             "must be in [0, 24) (got " + engine::FormatNumber(*time_of_day_h) + ")");
   }
-  RequireFinite("sun_azimuth_deg", sun_azimuth_deg);
-  RequireInRange("sun_elevation_deg", sun_elevation_deg, -90.0, 90.0);
+  if (sun_azimuth_deg) RequireFinite("sun_azimuth_deg", *sun_azimuth_deg);
+  if (sun_elevation_deg) RequireInRange("sun_elevation_deg", *sun_elevation_deg, -90.0, 90.0);
+  // Two ways to place the sun: refuse the pair rather than silently prefer one.
+  for (const auto& [key, angle] : {std::pair{"sun_azimuth_deg", sun_azimuth_deg},
+                                   std::pair{"sun_elevation_deg", sun_elevation_deg}}) {
+    Require(!time_of_day_h || !angle, key,
+            std::string("give time_of_day_h or ") + key +
+                ", not both (time_of_day_h places the sun from the latitude and date)");
+  }
   RequireColor("sun_color", sun_color);
   RequireColor("sky_zenith_color", sky_zenith_color);
   RequireColor("sky_horizon_color", sky_horizon_color);

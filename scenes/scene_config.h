@@ -40,12 +40,16 @@ struct OriginConfig {
   void Validate() const;
 };
 
-/// Sun and sky for rendering. The sun comes from `time_of_day_h` (with the origin's latitude and
-/// the environment's date) when given, else from azimuth and elevation.
+/// Sun and sky for rendering. The sun comes from `time_of_day_h` (local solar time, with the
+/// origin's latitude and the environment's date: SolarAngles) when given, else from azimuth and
+/// elevation; giving both ways is an error.
 struct LightingConfig {
-  std::optional<double> time_of_day_h;  ///< local solar time (h), [0, 24)
-  double sun_azimuth_deg = 135.0;       ///< direction toward the sun, clockwise from north (deg)
-  double sun_elevation_deg = 50.0;      ///< sun above the horizon (deg)
+  static constexpr double kDefaultSunAzimuth_deg = 135.0;
+  static constexpr double kDefaultSunElevation_deg = 50.0;
+
+  std::optional<double> time_of_day_h;      ///< local solar time (h), [0, 24)
+  std::optional<double> sun_azimuth_deg;    ///< toward the sun, clockwise from north (deg)
+  std::optional<double> sun_elevation_deg;  ///< sun above the horizon (deg)
   Eigen::Vector3d sun_color = Eigen::Vector3d(1.0, 0.96, 0.9);
   Eigen::Vector3d sky_zenith_color = Eigen::Vector3d(0.25, 0.45, 0.85);
   Eigen::Vector3d sky_horizon_color = Eigen::Vector3d(0.75, 0.85, 0.95);
@@ -55,17 +59,21 @@ struct LightingConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("time_of_day_h", time_of_day_h,
-            "local solar time (h, 0 to 24); sets the sun from latitude and date when given");
+            "local solar time (h, 0 to 24); places the sun from the origin's latitude and the "
+            "date; not with sun_azimuth_deg or sun_elevation_deg");
     v.Field("sun_azimuth_deg", sun_azimuth_deg,
-            "direction toward the sun, clockwise from north (deg)");
+            "direction toward the sun, clockwise from north (deg); default 135 without "
+            "time_of_day_h");
     v.Field("sun_elevation_deg", sun_elevation_deg,
-            "sun elevation above the horizon (deg, -90 to 90)");
+            "sun elevation above the horizon (deg, -90 to 90); default 50 without time_of_day_h");
     v.Field("sun_color", sun_color, "sun light colour, linear RGB 0..1");
     v.Field("sky_zenith_color", sky_zenith_color, "sky colour overhead, linear RGB 0..1");
     v.Field("sky_horizon_color", sky_horizon_color, "sky colour at the horizon, linear RGB 0..1");
     v.Field("ambient", ambient, "sky (ambient) light fraction, 0..1");
     v.Field("fog_distance_m", fog_distance_m, "distance at which fog reaches 63% (m); 0 = no fog");
   }
+  /// Throws InvalidField on a value out of range, or on time_of_day_h given with a sun angle (the
+  /// message names both keys).
   void Validate() const;
 };
 

@@ -17,6 +17,7 @@
 #include "engine/world/world.h"
 #include "scenes/scene_config.h"
 #include "scenes/sensor_kinds.h"
+#include "scenes/vehicle_body.h"
 #include "scenes/yaml_reader.h"
 
 namespace airis::scenes {
@@ -31,6 +32,7 @@ struct VehicleEntryConfig {
   YAML::Node overrides;
   std::vector<SensorEntry> sensors;
   engine::mavlink::AutopilotConfig autopilot;
+  BodyConfig body;
 
   template <class V>
   void Visit(V& v) {
@@ -45,6 +47,9 @@ struct VehicleEntryConfig {
     v.Field("sensors", sensors, "sensors with their configs and mounts");
     v.Field("autopilot", autopilot,
             "who flies it: the built-in flight controller (default) or PX4 (docs/px4.md)");
+    v.Field("body", body,
+            "how cameras see it: a mesh file, or generated from the airframe (default), and its "
+            "class");
   }
   void Validate() const;
 };

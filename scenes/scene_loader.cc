@@ -8,11 +8,13 @@
 
 #include "engine/core/random.h"
 #include "engine/scene/static_scene_builder.h"
+#include "engine/world/image_sensor.h"
 #include "scenes/builtin_classes.h"
 #include "scenes/generators.h"
 #include "scenes/mesh_loader.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/vehicle_kinds.h"
 
 namespace airis::scenes {
@@ -61,6 +63,7 @@ class SceneAssembler {
 
     for (const auto& c : doc_.classes) DefineClass(c);
     builder_.scene().lighting = MakeLighting(settings, s.origin.latitude_rad);
+    s.sun = sun_;
     GroundConfig ground;
     if (doc_.ground) ground = doc_.ground->config;
     if (ground.enabled) AddGround(ground);
@@ -70,6 +73,10 @@ class SceneAssembler {
     CheckObjects();
     for (const auto& v : doc_.vehicles)
       s.vehicles.push_back(AddVehicle(v, s.vehicles, ground.enabled));
+    CheckDatasetCameraNames(s.vehicles);
+    // The vehicles' looks take the instance ids after every object's, in vehicle order.
+    for (std::size_t i = 0; i < s.vehicles.size(); ++i)
+      AddVehicleBody(doc_.vehicles[i], s.vehicles[i]);
     s.static_scene = builder_.Finish();
     s.files.insert(s.files.end(), inputs_.begin(), inputs_.end());
     return s;
@@ -91,17 +98,18 @@ class SceneAssembler {
     c.Fail("name", "no free class id left (255 classes at most)");
   }
 
-  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings,
-                                     double latitude_rad) const {
+  engine::SceneLighting MakeLighting(const SceneSettingsConfig& settings, double latitude_rad) {
     const LightingConfig& c = settings.lighting;
     engine::SceneLighting out;
-    double azimuth = DegToRad(c.sun_azimuth_deg);
-    double elevation = DegToRad(c.sun_elevation_deg);
+    sun_.time_of_day_h = c.time_of_day_h;
+    sun_.azimuth_rad = DegToRad(c.sun_azimuth_deg.value_or(LightingConfig::kDefaultSunAzimuth_deg));
+    sun_.elevation_rad =
+        DegToRad(c.sun_elevation_deg.value_or(LightingConfig::kDefaultSunElevation_deg));
     if (c.time_of_day_h) {
-      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h, &azimuth,
-                  &elevation);
+      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h,
+                  &sun_.azimuth_rad, &sun_.elevation_rad);
     }
-    out.sun_direction_W = SunDirectionFromAngles(azimuth, elevation);
+    out.sun_direction_W = SunDirectionFromAngles(sun_.azimuth_rad, sun_.elevation_rad);
     out.sun_color_rgb = c.sun_color.cast<float>();
     out.sky_zenith_rgb = c.sky_zenith_color.cast<float>();
     out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
@@ -270,6 +278,48 @@ class SceneAssembler {
     }
   }
 
+  /// The names datasets give image streams (engine::CalcDatasetNamePrefixes: a name another
+  /// vehicle also uses is prefixed with the vehicle's) are unique in the scene.
+  void CheckDatasetCameraNames(const std::vector<VehicleDescription>& vehicles) const {
+    struct Owner {
+      std::size_t vehicle = 0;
+      std::size_t sensor = 0;
+    };
+    std::vector<engine::ImageSensorNames> sensors;
+    std::vector<Owner> owners;
+    for (std::size_t v = 0; v < vehicles.size(); ++v) {
+      for (std::size_t i = 0; i < vehicles[v].sensors.size(); ++i) {
+        const SensorDescription& s = vehicles[v].sensors[i];
+        std::vector<std::string> streams = s.spec->ImageStreamNames(s.name);
+        if (streams.empty()) continue;
+        sensors.push_back({vehicles[v].name, s.name, std::move(streams)});
+        owners.push_back({v, i});
+      }
+    }
+    const std::vector<std::string> prefixes = engine::CalcDatasetNamePrefixes(sensors);
+    struct Taken {
+      std::string name;    // in datasets
+      std::string stream;  // on its vehicle
+      std::size_t sensor;  // index in `sensors`
+    };
+    std::vector<Taken> taken;
+    for (std::size_t k = 0; k < sensors.size(); ++k) {
+      for (const std::string& stream : sensors[k].streams) {
+        const std::string name = prefixes[k] + stream;
+        for (const Taken& t : taken) {
+          if (t.name != name) continue;
+          doc_.vehicles[owners[k].vehicle].Fail(
+              "sensors[" + std::to_string(owners[k].sensor) + "].name",
+              "camera '" + stream + "' and camera '" + t.stream + "' of vehicle '" +
+                  sensors[t.sensor].vehicle + "' would share the dataset name '" + name +
+                  "' (a camera name that several vehicles use becomes <vehicle>_<camera>); "
+                  "rename one");
+        }
+        taken.push_back({name, stream, k});
+      }
+    }
+  }
+
   VehicleDescription AddVehicle(const Sourced<VehicleEntryConfig>& entry,
                                 const std::vector<VehicleDescription>& earlier,
                                 bool has_ground) const {
@@ -306,24 +356,14 @@ class SceneAssembler {
         }
       }
       v.sensors.push_back({e.name, e.spec});
-      // Image streams become dataset folders: their names are unique in the scene and are none
-      // of the dataset's own folders.
+      // Image streams become dataset folders: their names are unique on the vehicle and are none
+      // of the dataset's own folders (CheckDatasetCameraNames: and unique in the scene).
       for (const std::string& stream : e.spec->ImageStreamNames(e.name)) {
         const std::string key = "sensors[" + std::to_string(i) + "].name";
         for (const char* reserved : kReservedStreamNames) {
           if (stream == reserved) {
             entry.Fail(key, "camera '" + stream + "' would share its folder with the dataset's '" +
                                 reserved + "/' (name it otherwise)");
-          }
-        }
-        for (const auto& other : earlier) {
-          for (const auto& s : other.sensors) {
-            for (const std::string& taken : s.spec->ImageStreamNames(s.name)) {
-              if (taken == stream) {
-                entry.Fail(key, "camera '" + stream + "' is also a camera of vehicle '" +
-                                    other.name + "': dataset cameras need unique names");
-              }
-            }
           }
         }
         for (const auto& s : v.sensors) {
@@ -355,6 +395,36 @@ class SceneAssembler {
                                              ", instance " + std::to_string(o.instance_id) + ")");
     }
     return v;
+  }
+
+  /// The look of vehicle `v` (its `body` block): its mesh file, or a body generated from its
+  /// airframe.
+  void AddVehicleBody(const Sourced<VehicleEntryConfig>& entry, const VehicleDescription& v) {
+    const BodyConfig& c = entry.config.body;
+    const std::uint8_t cls = ClassOf(entry, "body.class", c.class_name);
+    std::int32_t material = -1;
+    std::uint32_t model = 0;
+    if (!c.mesh.empty()) {
+      model = MeshModel(entry, "body.mesh", c.mesh, c.mesh_axes);
+      if (c.color) {
+        engine::Material m;
+        m.base_color_rgb = c.color->cast<float>();
+        material = static_cast<std::int32_t>(builder_.Material(m));
+      }
+    } else {
+      std::unique_ptr<engine::Vehicle> vehicle;
+      try {
+        vehicle = v.spec->Build(v.name);
+      } catch (const engine::InvalidField& e) {
+        entry.Fail(e.field(), e.problem());
+      }
+      model = GenerateBodyModel(*vehicle, c.color.value_or(kDefaultBodyColor),
+                                c.rotor_color.value_or(kDefaultRotorColor), builder_);
+    }
+    if (!builder_.AddVehicleBody(model, c.CalcModelPose(), cls, v.name, material)) {
+      entry.Fail("body", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
+                             " objects and vehicles (instance ids are 16-bit)");
+    }
   }
 
   /// An `autopilot:` block that fits its vehicle (a channel per actuator) and uses its own PX4
@@ -425,6 +495,7 @@ class SceneAssembler {
   engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
   std::uint32_t ground_instance_ = engine::kNoInstance;
+  SunPosition sun_;  // set by MakeLighting
 };
 
 }  // namespace
@@ -451,13 +522,30 @@ void SolarAngles(double latitude_rad, double decimal_year, double hours, double*
   *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
 }
 
+namespace {
+
+// The document with the options' overrides applied, assembled; an error that an override's value
+// causes while assembling (a vehicle moved into a building) names the override.
+Scene Load(SceneDocument doc, const SceneLoadOptions& options) {
+  const AppliedSceneOverrides applied = ApplySceneOverrides(&doc, options.overrides);
+  try {
+    Scene s = SceneAssembler(std::move(doc), options).Assemble();
+    s.overrides = options.overrides;
+    return s;
+  } catch (const engine::ConfigError& e) {
+    applied.Rethrow(e);
+  }
+}
+
+}  // namespace
+
 Scene LoadScene(const std::string& path, const SceneLoadOptions& options) {
-  return SceneAssembler(ReadSceneDocument(path), options).Assemble();
+  return Load(ReadSceneDocument(path), options);
 }
 
 Scene LoadSceneFromString(const std::string& text, const std::string& path,
                           const SceneLoadOptions& options) {
-  return SceneAssembler(ReadSceneDocumentFromString(text, path), options).Assemble();
+  return Load(ReadSceneDocumentFromString(text, path), options);
 }
 
 }  // namespace airis::scenes

@@ -20,7 +20,8 @@ std::size_t StringBytes(const std::string& s) {
 
 std::size_t EstimateMemoryBytes(const engine::StaticScene& s) {
   std::size_t bytes = VectorBytes(s.meshes) + VectorBytes(s.materials) + VectorBytes(s.models) +
-                      VectorBytes(s.objects) + VectorBytes(s.classes);
+                      VectorBytes(s.objects) + VectorBytes(s.vehicle_bodies) +
+                      VectorBytes(s.classes);
   for (const auto& m : s.meshes) {
     bytes += VectorBytes(m.positions) + VectorBytes(m.normals) + VectorBytes(m.uvs) +
              VectorBytes(m.indices) + StringBytes(m.name);
@@ -28,6 +29,7 @@ std::size_t EstimateMemoryBytes(const engine::StaticScene& s) {
   for (const auto& m : s.materials) bytes += StringBytes(m.name) + StringBytes(m.texture_path);
   for (const auto& m : s.models) bytes += VectorBytes(m.parts) + StringBytes(m.name);
   for (const auto& o : s.objects) bytes += StringBytes(o.name);
+  for (const auto& b : s.vehicle_bodies) bytes += StringBytes(b.name);
   for (const auto& c : s.classes) bytes += StringBytes(c.name);
   return bytes;
 }

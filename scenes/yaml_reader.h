@@ -127,6 +127,10 @@ class YamlReader {
     }
   }
 
+  /// Finds `key` in map `node`: sets its value and its key's mark; false when absent.
+  static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
+                      YAML::Mark* mark);
+
   /// Short description of a node's kind for "got ..." ("a list", "a map", "nothing", "'text'").
   static std::string Describe(const YAML::Node& node);
 
@@ -162,10 +166,6 @@ class YamlReader {
   void RejectUnknownKeys(
       const YAML::Node& node, const std::string& key_path, const std::vector<std::string>& known,
       const std::vector<std::pair<std::string, std::string>>& renamed = {}) const;
-  /// Index of `key` in map `node` and its key mark, or false.
-  static bool FindKey(const YAML::Node& node, const std::string& key, YAML::Node* value,
-                      YAML::Mark* mark);
-
   std::string file_;
 };
 

@@ -129,7 +129,7 @@ TelemetryRecorder::TelemetryRecorder(World& world, const std::filesystem::path& 
     collisions_->EndRow();
   });
   events_ = std::make_unique<CsvWriter>(dir / "mission_events.csv",
-                                        TimeColumns({"step", "kind", "event"}));
+                                        TimeColumns({"vehicle", "step", "kind", "event"}));
 }
 
 void TelemetryRecorder::OnTick(TimeNs now_ns) {
@@ -180,9 +180,10 @@ void TelemetryRecorder::WriteCommandRow(std::size_t v, TimeNs now_ns) {
   commands_[v]->AddRow(now_ns, row_);
 }
 
-void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, int step_index,
-                                           const std::string& step_kind, const std::string& what) {
-  events_->Add(static_cast<std::int64_t>(time_ns)).Add(ToSeconds(time_ns));
+void TelemetryRecorder::RecordMissionEvent(TimeNs time_ns, const std::string& vehicle,
+                                           int step_index, const std::string& step_kind,
+                                           const std::string& what) {
+  events_->Add(static_cast<std::int64_t>(time_ns)).Add(ToSeconds(time_ns)).Add(vehicle);
   events_->Add(static_cast<std::int64_t>(step_index + 1)).Add(step_kind).Add(what);
   events_->EndRow();
 }

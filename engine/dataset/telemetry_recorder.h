@@ -28,8 +28,8 @@ struct TelemetryOptions {
 ///   <vehicle>.commands.<ext>  the command each vehicle follows (mode, setpoints) and its
 ///                             actuator commands, at `truth_rate_hz`
 ///   <vehicle>.<sensor>.<ext>  every sample of every sensor but image sensors, at its own rate
-///   collisions.csv            every collision event
-///   mission_events.csv        every mission step start / finish / failure
+///   collisions.csv            every contact that begins (a touch of any vehicle with anything)
+///   mission_events.csv        every mission step start / finish / failure and contact, by vehicle
 /// Every row starts with the simulated time in integer nanoseconds (CSV: and in seconds). Units
 /// are in the column names; readings are float32, positions float64 (LogType).
 class TelemetryRecorder {
@@ -43,13 +43,15 @@ class TelemetryRecorder {
 
   /// Writes the ground-truth rows due at `now_ns` (call after every tick, and once at the start).
   void OnTick(TimeNs now_ns);
-  /// Appends a mission event row.
-  void RecordMissionEvent(TimeNs time_ns, int step_index, const std::string& step_kind,
-                          const std::string& what);
+  /// Appends a mission event row: `vehicle`'s track, its step `step_index` (0-based; written
+  /// 1-based) of kind `step_kind`, and what happened.
+  void RecordMissionEvent(TimeNs time_ns, const std::string& vehicle, int step_index,
+                          const std::string& step_kind, const std::string& what);
   /// Flushes and renames every file into place. Throws DatasetIoError (disk full).
   void Close();
 
-  std::int64_t collision_count() const { return collisions_->rows(); }
+  /// Rows of collisions.csv so far: contacts of every vehicle.
+  std::int64_t contact_count() const { return collisions_->rows(); }
 
   /// The files a recorder writes for `world`, in a stable order.
   static std::vector<std::string> FileNames(const World& world, StreamFormat format);

@@ -2,11 +2,11 @@
 
 namespace airis::engine {
 
-double EstimateMissionDuration_s(const Mission& mission, const Vec3& start_W,
-                                 const LocalNedFrame& frame) {
+double EstimateTrackDuration_s(const MissionTrack& track, const Vec3& start_W,
+                               const LocalNedFrame& frame) {
   StepPlan plan{start_W, start_W, &frame};
   double total_s = 0.0;
-  for (const MissionStep& step : mission.steps) total_s += step.spec->EstimateDuration_s(plan);
+  for (const MissionStep& step : track.steps) total_s += step.spec->EstimateDuration_s(plan);
   return total_s;
 }
 

@@ -18,51 +18,66 @@ double AutomaticTimeout(double nominal_s) { return 3.0 * nominal_s + 30.0; }
 
 }  // namespace
 
-MissionRunner::MissionRunner(Mission mission, const LocalNedFrame& frame, RandomStream stream,
+MissionRunner::MissionRunner(MissionTrack track, const LocalNedFrame& frame, RandomStream stream,
                              MissionHost* host)
-    : mission_(std::move(mission)), frame_(frame), stream_(stream), host_(host) {
-  for (const auto& step : mission_.steps) {
+    : track_(std::move(track)), frame_(frame), stream_(stream), host_(host) {
+  AIRIS_DEMAND(!track_.steps.empty());
+  for (const auto& step : track_.steps) {
     AIRIS_DEMAND(step.spec != nullptr);
     AIRIS_DEMAND(!step.spec->needs_host() || host_ != nullptr);
   }
 }
 
 std::string MissionRunner::StepLabel(int index) const {
-  const MissionStep& step = mission_.steps[static_cast<std::size_t>(index)];
-  std::string where = step.where.file.empty() ? mission_.file : step.where.file;
+  const MissionStep& step = track_.steps[static_cast<std::size_t>(index)];
+  std::string where = step.where.file.empty() ? track_.file : step.where.file;
   if (!where.empty() && step.where.line > 0) where += ":" + std::to_string(step.where.line);
   std::string label = where.empty() ? "" : where + ": ";
+  if (!track_.vehicle.empty()) label += "vehicle '" + track_.vehicle + "' ";
   label += "step " + std::to_string(index + 1) + " (" + std::string(step.kind()) + ")";
   return label;
 }
 
 std::string MissionRunner::DescribeCurrentStep() const {
-  const int last = static_cast<int>(mission_.steps.size()) - 1;
-  return StepLabel(std::min(step_index_, last));
+  return StepLabel(std::min(step_index_, static_cast<int>(track_.steps.size()) - 1));
+}
+
+void MissionRunner::AddEvent(TimeNs time_ns, int index, std::string what) {
+  events_.push_back({time_ns, track_.vehicle, index,
+                     std::string(track_.steps[static_cast<std::size_t>(index)].kind()),
+                     std::move(what)});
 }
 
 void MissionRunner::Fail(TimeNs now_ns, const std::string& why) {
   state_ = State::kFailed;
   failure_ = StepLabel(step_index_) + ": " + why;
-  events_.push_back({now_ns, step_index_,
-                     std::string(mission_.steps[static_cast<std::size_t>(step_index_)].kind()),
-                     "failed: " + why});
+  failure_time_ns_ = now_ns;
+  AddEvent(now_ns, step_index_, "failed: " + why);
 }
 
 void MissionRunner::Abort(TimeNs now_ns, const std::string& why) {
-  if (state_ == State::kRunning && step_index_ < static_cast<int>(mission_.steps.size())) {
+  if (state_ == State::kRunning && step_index_ < static_cast<int>(track_.steps.size())) {
     Fail(now_ns, why);
   }
 }
 
-void MissionRunner::ReportCollision(TimeNs time_ns, const std::string& what, bool from_below) {
-  if (state_ != State::kRunning || step_index_ >= static_cast<int>(mission_.steps.size())) return;
-  const MissionStep& step = mission_.steps[static_cast<std::size_t>(step_index_)];
-  const bool on_ground_step = step.As<TakeoffStep>() || step.As<LandStep>();
-  if (from_below && on_ground_step) return;  // standing on or touching down onto a surface
-  if (mission_.abort_on_collision) {
-    Fail(time_ns, "collided with " + what + Format(" at t = %.3f s", ToSeconds(time_ns)));
+bool MissionRunner::ReportContact(const MissionContact& contact) {
+  // After the last step the vehicle is judged as in that step (a track ends landed).
+  const int index = std::min(step_index_, static_cast<int>(track_.steps.size()) - 1);
+  const MissionStep& step = track_.steps[static_cast<std::size_t>(index)];
+  const bool ground_step = step.As<TakeoffStep>() || step.As<LandStep>();
+  const bool touchdown = contact.from_below && !contact.with_vehicle && ground_step &&
+                         contact.speed_change_m_s <= kMaxTouchdownSpeed_m_s;
+  ++contacts_;
+  collisions_ += touchdown ? 0 : 1;
+  AddEvent(contact.time_ns, index, (touchdown ? "contact: " : "collision: ") + contact.what);
+  if (!touchdown && state_ == State::kRunning && track_.abort_on_collision) {
+    Fail(contact.time_ns, "collided with " + contact.what +
+                              Format(" at t = %.3f s (impact %.2f m/s)", ToSeconds(contact.time_ns),
+                                     contact.speed_change_m_s));
+    ended_by_collision_ = true;
   }
+  return !touchdown;
 }
 
 StepContext MissionRunner::Context(const MissionInput& input) {
@@ -80,10 +95,10 @@ StepContext MissionRunner::Context(const MissionInput& input) {
 }
 
 void MissionRunner::StartStep(const MissionInput& input) {
-  const MissionStep& step = mission_.steps[static_cast<std::size_t>(step_index_)];
+  const MissionStep& step = track_.steps[static_cast<std::size_t>(step_index_)];
   step_start_ns_ = input.now_ns;
   last_ns_ = input.now_ns;
-  events_.push_back({input.now_ns, step_index_, std::string(step.kind()), "started"});
+  AddEvent(input.now_ns, step_index_, "started");
   // A step that holds keeps the previous target (a goto's point, a path's end), at rest.
   const bool had_target = last_command_.mode == CommandMode::kPosition;
   VehicleCommand hold =
@@ -97,9 +112,7 @@ void MissionRunner::StartStep(const MissionInput& input) {
 }
 
 void MissionRunner::FinishStep(TimeNs now_ns) {
-  events_.push_back({now_ns, step_index_,
-                     std::string(mission_.steps[static_cast<std::size_t>(step_index_)].kind()),
-                     "done"});
+  AddEvent(now_ns, step_index_, "done");
   ++step_index_;
   active_.reset();
 }
@@ -114,16 +127,15 @@ MissionRunner::State MissionRunner::Update(const MissionInput& input, VehicleCom
   // Instant steps (capture, set_wind, zero-length waits) complete within one tick; others end the
   // loop.
   while (state_ == State::kRunning) {
-    if (step_index_ >= static_cast<int>(mission_.steps.size())) {
+    if (step_index_ >= static_cast<int>(track_.steps.size())) {
       state_ = State::kSucceeded;
       break;
     }
     if (!active_) StartStep(input);
     const double elapsed_s = ToSeconds(input.now_ns - step_start_ns_);
     if (step_timeout_s_ > 0.0 && elapsed_s > step_timeout_s_) {
-      const double distance = (input.state.p_W - active_->target_W).norm();
-      Fail(input.now_ns,
-           Format("timed out after %.1f s, %.2f m from its target", elapsed_s, distance));
+      Fail(input.now_ns, Format("timed out after %.1f s, ", elapsed_s) +
+                             active_->DescribeUnfinished(input.state));
       break;
     }
     const bool done = active_->Update(Context(input), command);

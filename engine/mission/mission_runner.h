@@ -20,17 +20,34 @@ struct MissionInput {
   bool landed = false;   ///< the vehicle's controller detected touchdown and disarmed
 };
 
-/// A step starting, finishing or failing.
+/// A step starting, finishing or failing, or a contact of the vehicle during a step.
 struct MissionEvent {
   TimeNs time_ns = 0;
-  int step_index = 0;     ///< 0-based
+  std::string vehicle;    ///< the track's vehicle (empty when the track names none)
+  int step_index = 0;     ///< 0-based, in the vehicle's track
   std::string step_kind;  ///< "goto", ...
-  std::string what;       ///< "started", "done" or "failed: ..."
+  /// "started", "done", "failed: ...", "contact: ground 'ground'" or "collision: building 'x'"
+  std::string what;
 };
 
-/// Runs a Mission: one step at a time (each kind flies itself: MissionStepSpec), turning each into
-/// VehicleCommands for the next tick, checking for completion, timeouts and collisions.
-/// Deterministic: its only randomness is the stream it is given.
+/// A touch that began between the track's vehicle and something else (a World CollisionEvent).
+struct MissionContact {
+  TimeNs time_ns = 0;
+  std::string what;             ///< "building 'tower_3'", "vehicle 'drone2'"
+  bool from_below = false;      ///< the surface faces up (ground, a roof, a pad): normal_W.z < -0.7
+  bool with_vehicle = false;    ///< the other body is a vehicle
+  double speed_change_m_s = 0;  ///< contact impulse / vehicle mass: the approach speed it stopped
+};
+
+/// Fastest touchdown that is still a landing, not a collision (m/s of speed change at the first
+/// contact tick). The controllers land at 0.6 m/s (flight_controller.h); 2 m/s is a hard landing
+/// that a multirotor's legs survive, three times that.
+inline constexpr double kMaxTouchdownSpeed_m_s = 2.0;
+
+/// Runs one vehicle's track of a Mission: one step at a time (each kind flies itself:
+/// MissionStepSpec), turning each into VehicleCommands for the next tick, checking for completion,
+/// timeouts and collisions. Deterministic: its only randomness is the stream it is given. Messages
+/// name the mission file, the step's line, the track's vehicle (when it names one) and the step.
 ///
 /// Automatic timeouts (step `timeout_s: 0`): 3x the step's nominal duration (distance / speed,
 /// turns x circle / speed, ...) plus 30 s. Takeoff and land assume 1 m/s vertical for their nominal
@@ -41,18 +58,20 @@ class MissionRunner {
   enum class State { kRunning, kSucceeded, kFailed };
 
   /// @param frame the world's geodetic frame (for geodetic goto). @param host may be null when the
-  /// mission has no capture, set_wind or random_poses step (AIRIS_DEMAND otherwise).
-  MissionRunner(Mission mission, const LocalNedFrame& frame, RandomStream stream,
+  /// track has no capture, set_wind, random_poses or barrier step (AIRIS_DEMAND otherwise).
+  MissionRunner(MissionTrack track, const LocalNedFrame& frame, RandomStream stream,
                 MissionHost* host);
 
   /// Advances the mission to `input.now_ns` and writes the command the vehicle should follow from
   /// now on.
   State Update(const MissionInput& input, VehicleCommand* command);
 
-  /// Tells the runner of a collision; with abort_on_collision the mission fails naming the step. A
-  /// contact from below (`from_below`: the surface faces up, like the ground or a roof) during
-  /// takeoff or land is the vehicle standing or touching down, not a collision.
-  void ReportCollision(TimeNs time_ns, const std::string& what, bool from_below = false);
+  /// Tells the runner of a contact of its vehicle and judges it (docs/mission-format.md, "Contacts
+  /// and collisions"): every contact is counted; it is a collision unless it is a touchdown (a
+  /// static surface from below, during takeoff or land or after the last step, at most
+  /// kMaxTouchdownSpeed_m_s). A collision while the track runs with abort_on_collision fails the
+  /// mission naming the step. Returns true for a collision.
+  bool ReportContact(const MissionContact& contact);
 
   /// Fails the running mission for a reason outside it (its autopilot refused to arm), naming the
   /// current step. Does nothing once the mission ended.
@@ -61,12 +80,21 @@ class MissionRunner {
   /// Why the mission failed: "missions/x.yaml:12: step 3 (goto): timed out after 40 s, 12.3 m from
   /// target".
   const std::string& failure() const { return failure_; }
+  /// When the mission failed (the failure's time).
+  TimeNs failure_time_ns() const { return failure_time_ns_; }
   int current_step() const { return step_index_; }
   /// "missions/x.yaml:12: step 3 (goto)" for the step running now (the last one once the mission
   /// ended).
   std::string DescribeCurrentStep() const;
-  const Mission& mission() const { return mission_; }
+  const MissionTrack& track() const { return track_; }
   const std::vector<MissionEvent>& events() const { return events_; }
+  /// Steps finished so far.
+  int steps_done() const { return step_index_; }
+  /// Contacts of the vehicle reported so far, and how many of them were collisions.
+  int contacts() const { return contacts_; }
+  int collisions() const { return collisions_; }
+  /// True when a collision failed the mission.
+  bool ended_by_collision() const { return ended_by_collision_; }
   /// Largest distance between the vehicle and the reference point of path-following steps (path,
   /// survey, orbit), once the reference started moving (m).
   double max_tracking_error_m() const { return max_tracking_error_m_; }
@@ -76,15 +104,17 @@ class MissionRunner {
   void FinishStep(TimeNs now_ns);
   void Fail(TimeNs now_ns, const std::string& why);
   std::string StepLabel(int index) const;
+  void AddEvent(TimeNs time_ns, int index, std::string what);
   StepContext Context(const MissionInput& input);
 
-  Mission mission_;
+  MissionTrack track_;
   const LocalNedFrame& frame_;
   RandomStream stream_;
   MissionHost* host_;
 
   State state_ = State::kRunning;
   std::string failure_;
+  TimeNs failure_time_ns_ = 0;
   std::vector<MissionEvent> events_;
   int step_index_ = 0;
   bool have_home_ = false;
@@ -93,6 +123,9 @@ class MissionRunner {
   TimeNs last_ns_ = 0;
   double step_timeout_s_ = 0.0;  // 0: the step never times out
   double max_tracking_error_m_ = 0.0;
+  int contacts_ = 0;
+  int collisions_ = 0;
+  bool ended_by_collision_ = false;
   std::unique_ptr<ActiveStep> active_;  // the step being flown; null between steps
   VehicleCommand last_command_;  // what the vehicle was last told (a new step holds its target)
 };

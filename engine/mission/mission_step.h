@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "engine/core/clock.h"
@@ -15,12 +16,13 @@ namespace airis::engine {
 
 struct CaptureStep;
 
-/// What steps act on outside the vehicle's controller: recording, wind, teleporting. Implemented by
-/// the program running the mission (a job's MissionSession).
+/// What steps act on outside the vehicle's controller: recording, wind, teleporting, the other
+/// tracks of the mission. Implemented by the program running the mission (a MissionSession gives
+/// each track its own).
 class MissionHost {
  public:
   virtual ~MissionHost() = default;
-  /// Starts or stops recording (capture step).
+  /// Starts or stops recording of this track's vehicle's cameras (capture step).
   virtual void SetCapture(const CaptureStep& capture) = 0;
   /// Replaces the mean wind (set_wind step).
   virtual void SetWind(const Vec3& velocity_ned_m_s) = 0;
@@ -30,6 +32,10 @@ class MissionHost {
   virtual void HoldVehicleAt(const RigidBodyState& pose, int frame_index) = 0;
   /// Ends HoldVehicleAt: the vehicle is simulated again.
   virtual void ReleaseVehicle() = 0;
+  /// This track waits at barrier `label` (barrier step): true once every track the barrier names
+  /// has reached it (they are released on the same tick); until then `waiting_for` is set to the
+  /// vehicles not there yet ("drone2, drone3").
+  virtual bool ArriveAtBarrier(const std::string& label, std::string* waiting_for) = 0;
 };
 
 /// Where a step begins, for planning before the flight (duration estimates). A step moves
@@ -62,6 +68,9 @@ class ActiveStep {
   /// Distance between the vehicle and a moving reference (path, survey, orbit), once it moved; 0
   /// for steps without one. The runner reports the largest as the mission's tracking error.
   virtual double tracking_error_m() const { return 0.0; }
+  /// What is left undone, for the message when the step times out with the vehicle at `state`
+  /// (default: "12.31 m from its target", the distance to target_W).
+  virtual std::string DescribeUnfinished(const RigidBodyState& state) const;
 
   /// Nominal duration from where the step began (distance / speed, ...), for the automatic timeout.
   double nominal_s = 0.0;

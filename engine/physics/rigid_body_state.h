@@ -10,6 +10,14 @@ struct RigidBodyState {
   Vec3 v_W = Vec3::Zero();       ///< velocity, world NED (m/s)
   Quat q_WB = Quat::Identity();  ///< attitude: body FRD -> world NED
   Vec3 w_B = Vec3::Zero();       ///< angular velocity of B in W, body axes (rad/s)
+
+  /// The pose T_WB: body FRD -> world NED (the attitude normalised).
+  Eigen::Isometry3d CalcPose() const {
+    Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
+    T_WB.linear() = q_WB.normalized().toRotationMatrix();
+    T_WB.translation() = p_W;
+    return T_WB;
+  }
 };
 
 /// Accelerations over the last physics step, every force included (rotors, drag, gravity,

@@ -205,6 +205,10 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
     r.type = preferred ? kPreferredType[t] : kFallbackType[t];
     r.bytes_per_pixel = preferred ? kPreferredBytes[t] : 16;
     r.direct = preferred && t != kNormal;
+    // Each image starts on a 16-byte boundary: glReadPixels into a buffer needs an offset that is
+    // a multiple of the type's size (a 16-bit instance image after an odd-sized 8-bit class image
+    // would be refused).
+    pbo_bytes = (pbo_bytes + 15) / 16 * 16;
     for (auto& slot : slots_) slot.offset[t] = pbo_bytes;
     pbo_bytes += pixels * r.bytes_per_pixel;
   }
@@ -278,14 +282,15 @@ void CameraRenderer::DestroyTarget(RenderTarget& target) const {
   target = RenderTarget{};
 }
 
-void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC) {
+void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
+                               const BodyPoses& bodies) {
   const CameraIntrinsics& k = render_intrinsics_;
   const Eigen::Matrix3d R_CW = T_WC.linear().transpose();
   const SceneLighting& light = scene.lighting();
   const Eigen::Vector3f to_sun_C = (R_CW * -light.sun_direction_W.normalized()).cast<float>();
   const Eigen::Vector3f up_C = (R_CW * Eigen::Vector3d(0.0, 0.0, -1.0)).cast<float>();
 
-  scene.CollectVisible(T_WC, planes_C_, visible_);
+  scene.CollectVisible(T_WC, planes_C_, bodies, visible_);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
   const std::size_t bytes = visible_.instances.size() * sizeof(GpuInstance);
   if (bytes > instance_capacity_) {
@@ -455,9 +460,9 @@ void CameraRenderer::DeliverFromBytes(int target, const void* bytes, CameraFrame
 }
 
 void CameraRenderer::Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
-                            CameraFrame& out) {
+                            CameraFrame& out, const BodyPoses& bodies) {
   context_.MakeCurrent();
-  DrawFrame(scene, T_WC);
+  DrawFrame(scene, T_WC, bodies);
   PrepareFrame(out, time_ns, T_WC);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, output_target_.fbo);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
@@ -478,10 +483,11 @@ void CameraRenderer::Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC
   CheckGl("camera readback");
 }
 
-void CameraRenderer::Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns) {
+void CameraRenderer::Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
+                            const BodyPoses& bodies) {
   AIRIS_DEMAND(in_flight_ < kMaxInFlight);
   context_.MakeCurrent();
-  DrawFrame(scene, T_WC);
+  DrawFrame(scene, T_WC, bodies);
   Slot& slot = slots_[(next_slot_ + in_flight_) % kMaxInFlight];
   glBindFramebuffer(GL_READ_FRAMEBUFFER, output_target_.fbo);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.pbo);

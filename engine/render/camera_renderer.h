@@ -44,13 +44,15 @@ class CameraRenderer {
   CameraRenderer(const CameraRenderer&) = delete;
   CameraRenderer& operator=(const CameraRenderer&) = delete;
 
-  /// Renders `scene` seen from T_WC (optical frame C -> world NED) at simulated time `time_ns` and
-  /// reads the enabled outputs into `out` (reusing its buffers).
+  /// Renders `scene` seen from T_WC (optical frame C -> world NED) at simulated time `time_ns`,
+  /// its vehicle bodies where `bodies` puts them (none by default), and reads the enabled outputs
+  /// into `out` (reusing its buffers).
   void Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
-              CameraFrame& out);
+              CameraFrame& out, const BodyPoses& bodies = {});
 
   /// Renders and starts an asynchronous readback. Requires frames_in_flight() < kMaxInFlight.
-  void Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns);
+  void Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
+              const BodyPoses& bodies = {});
   /// Completes the oldest submitted frame into `out` (waiting for it if needed). Returns false when
   /// none is in flight.
   bool Collect(CameraFrame& out);
@@ -91,7 +93,7 @@ class CameraRenderer {
   bool Enabled(int target) const;
   RenderTarget CreateTarget(int width, int height, bool sampled, bool with_depth) const;
   void DestroyTarget(RenderTarget& target) const;
-  void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC);
+  void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies);
   void PrepareFrame(CameraFrame& out, TimeNs time_ns, const Eigen::Isometry3d& T_WC) const;
   void DeliverFromBytes(int target, const void* bytes, CameraFrame& out) const;
   void* FrameBuffer(int target, CameraFrame& out) const;

@@ -108,50 +108,68 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     materials_.push_back(gpu);
   }
 
-  // Group every placed part by (mesh, texture): one instanced draw each.
+  // Group every placed part by (mesh, texture): one instanced draw each. Static batches first
+  // (large ones last among them), then the batches of the vehicle bodies.
   std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t> batch_of;
   for (const StaticObject& object : scene.objects) {
-    const Model& model = scene.models[object.model];
-    for (const ModelPart& part : model.parts) {
-      const std::uint32_t material = object.material_override >= 0
-                                         ? static_cast<std::uint32_t>(object.material_override)
-                                         : part.material;
-      AIRIS_DEMAND(part.mesh < meshes_.size() && material < materials_.size());
-      const std::int32_t textured =
-          materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
-      auto [it, inserted] =
-          batch_of.try_emplace({part.mesh, textured}, static_cast<std::uint32_t>(batches_.size()));
-      if (inserted) {
-        batches_.emplace_back();
-        batches_.back().mesh = part.mesh;
-        batches_.back().textured_material = textured;
-      }
-      Batch& batch = batches_[it->second];
-      const Eigen::Affine3d T_WP = object.T_WO * part.T_MP.cast<double>();
-      const Eigen::AlignedBox3f& b = scene.meshes[part.mesh].bounds;
-      Eigen::Vector4d sphere = Eigen::Vector4d::Zero();
-      if (!b.isEmpty()) {
-        const Eigen::Vector3d centre_P = b.center().cast<double>();
-        const Eigen::Vector3d centre_W = T_WP * centre_P;
-        double radius = 0.0;
-        for (int c = 0; c < 8; ++c) {
-          const Eigen::Vector3d corner =
-              T_WP * b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c)).cast<double>();
-          radius = std::max(radius, (corner - centre_W).norm());
-        }
-        sphere << centre_W, radius;
-      }
-      batch.large = batch.large || sphere.w() > kLargePartRadiusM;
-      batch.T_WP.push_back(T_WP);
-      batch.sphere_W.push_back(sphere);
-      batch.class_id.push_back(object.class_id);
-      batch.instance_id.push_back(object.instance_id);
-      batch.material.push_back(material);
-      ++part_count_;
-    }
+    AddModelParts(scene, scene.models[object.model], object.T_WO, object.class_id,
+                  object.instance_id, object.material_override, -1, batch_of);
   }
   std::stable_sort(batches_.begin(), batches_.end(),
                    [](const Batch& a, const Batch& b) { return !a.large && b.large; });
+  batch_of.clear();
+  for (std::size_t k = 0; k < scene.vehicle_bodies.size(); ++k) {
+    const VehicleBody& body = scene.vehicle_bodies[k];
+    AIRIS_DEMAND(body.model < scene.models.size());
+    AddModelParts(scene, scene.models[body.model], body.T_BM, body.class_id, body.instance_id,
+                  body.material_override, static_cast<int>(k), batch_of);
+  }
+  body_count_ = scene.vehicle_bodies.size();
+}
+
+void GpuScene::AddModelParts(
+    const StaticScene& scene, const Model& model, const Eigen::Affine3d& T_FM,
+    std::uint8_t class_id, std::uint32_t instance_id, std::int32_t material_override, int body,
+    std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of) {
+  for (const ModelPart& part : model.parts) {
+    const std::uint32_t material =
+        material_override >= 0 ? static_cast<std::uint32_t>(material_override) : part.material;
+    AIRIS_DEMAND(part.mesh < meshes_.size() && material < materials_.size());
+    const std::int32_t textured =
+        materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
+    auto [it, inserted] =
+        batch_of.try_emplace({part.mesh, textured}, static_cast<std::uint32_t>(batches_.size()));
+    if (inserted) {
+      batches_.emplace_back();
+      batches_.back().mesh = part.mesh;
+      batches_.back().textured_material = textured;
+    }
+    Batch& batch = batches_[it->second];
+    const Eigen::Affine3d T_FP = T_FM * part.T_MP.cast<double>();
+    const Eigen::AlignedBox3f& b = scene.meshes[part.mesh].bounds;
+    Eigen::Vector4d sphere = Eigen::Vector4d::Zero();
+    if (!b.isEmpty()) {
+      const Eigen::Vector3d centre_F = T_FP * b.center().cast<double>();
+      double radius = 0.0;
+      for (int c = 0; c < 8; ++c) {
+        const Eigen::Vector3d corner =
+            T_FP * b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c)).cast<double>();
+        radius = std::max(radius, (corner - centre_F).norm());
+      }
+      sphere << centre_F, radius;
+    }
+    if (body >= 0) {
+      batch.body.push_back(static_cast<std::uint32_t>(body));
+    } else {
+      batch.large = batch.large || sphere.w() > kLargePartRadiusM;
+      ++part_count_;
+    }
+    batch.T_FP.push_back(T_FP);
+    batch.sphere_F.push_back(sphere);
+    batch.class_id.push_back(class_id);
+    batch.instance_id.push_back(instance_id);
+    batch.material.push_back(material);
+  }
 }
 
 GpuScene::~GpuScene() {
@@ -165,45 +183,72 @@ GpuScene::~GpuScene() {
   }
 }
 
+template <class FrameOf>
+void GpuScene::AppendVisible(std::uint32_t b, const std::vector<Eigen::Vector4d>& planes_C,
+                             const FrameOf& T_CF_of,
+                             std::vector<std::pair<double, std::uint32_t>>& order,
+                             VisibleSet& out) const {
+  const Batch& batch = batches_[b];
+  order.clear();  // (depth of the centre, part index)
+  for (std::uint32_t i = 0; i < batch.T_FP.size(); ++i) {
+    const Eigen::Isometry3d* T_CF = T_CF_of(i);
+    if (T_CF == nullptr) continue;
+    const Eigen::Vector4d& s = batch.sphere_F[i];
+    const Eigen::Vector3d centre_C = *T_CF * s.head<3>();
+    bool inside = true;
+    for (const Eigen::Vector4d& plane : planes_C) {
+      if (plane.head<3>().dot(centre_C) + plane.w() < -s.w()) {
+        inside = false;
+        break;
+      }
+    }
+    if (inside) order.emplace_back(centre_C.z(), i);
+  }
+  if (order.empty()) return;
+  std::sort(order.begin(), order.end());
+  const auto first = static_cast<std::uint32_t>(out.instances.size());
+  for (const auto& [depth, i] : order) {
+    const Eigen::Matrix4d T_CP = (*T_CF_of(i) * batch.T_FP[i]).matrix();
+    GpuInstance instance;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 4; ++c) instance.T_CO_rows[r * 4 + c] = static_cast<float>(T_CP(r, c));
+    }
+    instance.class_id = batch.class_id[i];
+    instance.instance_id = batch.instance_id[i];
+    std::memcpy(instance.base_color_rgba, materials_[batch.material[i]].base_color_rgba, 4);
+    out.instances.push_back(instance);
+  }
+  const auto count = static_cast<std::uint32_t>(order.size());
+  out.draws.push_back({b, first, count});
+  out.triangles += static_cast<std::size_t>(count) * meshes_[batch.mesh].index_count / 3;
+}
+
 void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
-                              const std::vector<Eigen::Vector4d>& planes_C, VisibleSet& out) const {
+                              const std::vector<Eigen::Vector4d>& planes_C, const BodyPoses& bodies,
+                              VisibleSet& out) const {
   out.instances.clear();
   out.draws.clear();
   out.triangles = 0;
   const Eigen::Isometry3d T_CW = T_WC.inverse();
-  std::vector<std::pair<double, std::uint32_t>> order;  // (depth of the centre, part index)
+  // Camera <- body of each body drawn this frame; the others stay out (null).
+  std::vector<Eigen::Isometry3d> T_CB(std::min(bodies.T_WB.size(), body_count_));
+  for (std::size_t k = 0; k < T_CB.size(); ++k) T_CB[k] = T_CW * bodies.T_WB[k];
+  std::vector<std::pair<double, std::uint32_t>> order;
   for (std::uint32_t b = 0; b < batches_.size(); ++b) {
     const Batch& batch = batches_[b];
-    order.clear();
-    for (std::uint32_t i = 0; i < batch.T_WP.size(); ++i) {
-      const Eigen::Vector4d& s = batch.sphere_W[i];
-      const Eigen::Vector3d centre_C = T_CW * s.head<3>();
-      bool inside = true;
-      for (const Eigen::Vector4d& plane : planes_C) {
-        if (plane.head<3>().dot(centre_C) + plane.w() < -s.w()) {
-          inside = false;
-          break;
-        }
-      }
-      if (inside) order.emplace_back(centre_C.z(), i);
+    if (batch.body.empty()) {
+      AppendVisible(
+          b, planes_C, [&](std::uint32_t) { return &T_CW; }, order, out);
+      continue;
     }
-    if (order.empty()) continue;
-    std::sort(order.begin(), order.end());
-    const auto first = static_cast<std::uint32_t>(out.instances.size());
-    for (const auto& [depth, i] : order) {
-      const Eigen::Matrix4d T_CP = (T_CW * batch.T_WP[i]).matrix();
-      GpuInstance instance;
-      for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) instance.T_CO_rows[r * 4 + c] = static_cast<float>(T_CP(r, c));
-      }
-      instance.class_id = batch.class_id[i];
-      instance.instance_id = batch.instance_id[i];
-      std::memcpy(instance.base_color_rgba, materials_[batch.material[i]].base_color_rgba, 4);
-      out.instances.push_back(instance);
-    }
-    const auto count = static_cast<std::uint32_t>(order.size());
-    out.draws.push_back({b, first, count});
-    out.triangles += static_cast<std::size_t>(count) * meshes_[batch.mesh].index_count / 3;
+    AppendVisible(
+        b, planes_C,
+        [&](std::uint32_t i) -> const Eigen::Isometry3d* {
+          const std::uint32_t k = batch.body[i];
+          const bool drawn = k < T_CB.size() && static_cast<int>(k) != bodies.hidden;
+          return drawn ? &T_CB[k] : nullptr;
+        },
+        order, out);
   }
 }
 

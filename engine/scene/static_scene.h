@@ -96,6 +96,18 @@ struct StaticObject {
   std::string name;  ///< instance name (user's, or generated)
 };
 
+/// The look of a vehicle: a model of the scene drawn at the vehicle's pose in every frame, labelled
+/// like an object. It is never collided or hit by rays (the vehicle's physics shape is its box).
+struct VehicleBody {
+  std::uint32_t model = 0;  ///< index into StaticScene::models
+  /// Model -> body FRD (centre of mass): rotation, translation and scale of the model frame.
+  Eigen::Affine3d T_BM = Eigen::Affine3d::Identity();
+  std::uint8_t class_id = kNoClass;         ///< semantic class, 1..255
+  std::uint32_t instance_id = kNoInstance;  ///< unique among objects and bodies, 1..65535
+  std::int32_t material_override = -1;      ///< material index replacing every part's, or -1
+  std::string name;                         ///< the vehicle's name
+};
+
 /// Lighting and sky of a scene, for the renderer.
 struct SceneLighting {
   Vec3 sun_direction_W =
@@ -109,13 +121,17 @@ struct SceneLighting {
 };
 
 /// Everything that does not move: meshes (each stored once), materials, models, placed objects, the
-/// class table and lighting. Built by scenes/, read by collision (Bullet), ray casting (Embree) and
-/// rendering.
+/// class table and lighting; and the looks of the vehicles, which the renderer draws where the
+/// vehicles are. Built by scenes/, read by collision (Bullet) and ray casting (Embree), which use
+/// only the objects, and by rendering.
 struct StaticScene {
   std::vector<TriangleMesh> meshes;
   std::vector<Material> materials;
   std::vector<Model> models;
   std::vector<StaticObject> objects;
+  /// Body k is the look of the world's vehicle k (a world built from a scene adds its vehicles in
+  /// the scene's order).
+  std::vector<VehicleBody> vehicle_bodies;
   std::vector<SemanticClass> classes;  ///< indexed by nothing: look up by id with FindClass
   SceneLighting lighting;
 

@@ -125,16 +125,31 @@ std::vector<std::string> StaticSceneBuilder::ClassNames() const {
 bool StaticSceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO,
                                    std::uint8_t class_id, CollisionShape collision,
                                    std::string name, std::int32_t material_override) {
-  if (scene_.objects.size() >= kMaxInstances) return false;
+  if (instances_ >= kMaxInstances) return false;
   StaticObject o;
   o.model = model;
   o.T_WO = T_WO;
   o.class_id = class_id;
-  o.instance_id = static_cast<std::uint32_t>(scene_.objects.size() + 1);
+  o.instance_id = ++instances_;
   o.material_override = material_override;
   o.collision = collision;
   o.name = std::move(name);
   scene_.objects.push_back(std::move(o));
+  return true;
+}
+
+bool StaticSceneBuilder::AddVehicleBody(std::uint32_t model, const Eigen::Affine3d& T_BM,
+                                        std::uint8_t class_id, std::string name,
+                                        std::int32_t material_override) {
+  if (instances_ >= kMaxInstances) return false;
+  VehicleBody body;
+  body.model = model;
+  body.T_BM = T_BM;
+  body.class_id = class_id;
+  body.instance_id = ++instances_;
+  body.material_override = material_override;
+  body.name = std::move(name);
+  scene_.vehicle_bodies.push_back(std::move(body));
   return true;
 }
 

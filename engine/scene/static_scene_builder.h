@@ -12,8 +12,8 @@
 namespace airis::engine {
 
 /// Assembles a StaticScene: each mesh stored once, identical materials merged, models shared by
-/// every object that uses them, instance ids assigned in insertion order (so stable for a given
-/// scene and seed).
+/// every object that uses them, instance ids assigned in insertion order to objects and vehicle
+/// bodies alike (so stable for a given scene and seed).
 class StaticSceneBuilder {
  public:
   explicit StaticSceneBuilder(std::vector<SemanticClass> classes = {});
@@ -45,6 +45,11 @@ class StaticSceneBuilder {
   bool AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
                  CollisionShape collision, std::string name, std::int32_t material_override = -1);
 
+  /// Adds the look of the next vehicle (StaticScene::vehicle_bodies, in vehicle order) with the
+  /// next instance id. Returns false when the 65535 instance ids are used up.
+  bool AddVehicleBody(std::uint32_t model, const Eigen::Affine3d& T_BM, std::uint8_t class_id,
+                      std::string name, std::int32_t material_override = -1);
+
   /// Reserves room for `n` more objects (generators call this before a batch).
   void ReserveObjects(std::size_t n) { scene_.objects.reserve(scene_.objects.size() + n); }
 
@@ -55,6 +60,7 @@ class StaticSceneBuilder {
 
  private:
   StaticScene scene_;
+  std::uint32_t instances_ = 0;  // instance ids given so far (to objects and vehicle bodies)
   std::int32_t primitive_mesh_[6] = {-1, -1, -1, -1, -1, -1};
   std::int32_t primitive_model_[6] = {-1, -1, -1, -1, -1, -1};
   std::map<std::tuple<float, float, float, std::string, float, float>, std::uint32_t>

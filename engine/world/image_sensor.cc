@@ -1,5 +1,7 @@
 #include "engine/world/image_sensor.h"
 
+#include <algorithm>
+
 #include "engine/core/error.h"
 
 namespace airis::engine {
@@ -13,13 +15,35 @@ Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBody
   Eigen::Isometry3d T_WC = T_XS * T_SC;
   if (!stream.world_fixed) {
     AIRIS_DEMAND(state != nullptr);
-    Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
-    T_WB.linear() = state->q_WB.normalized().toRotationMatrix();
-    T_WB.translation() = state->p_W;
-    T_WC = T_WB * T_XS * T_SC;
+    T_WC = state->CalcPose() * T_XS * T_SC;
   }
   if (stream.offset_x_m != 0.0) T_WC = T_WC * Eigen::Translation3d(stream.offset_x_m, 0.0, 0.0);
   return T_WC;
+}
+
+std::vector<std::string> CalcDatasetNamePrefixes(std::span<const ImageSensorNames> sensors) {
+  const auto names = [](const ImageSensorNames& s) {
+    std::vector<std::string> all = s.streams;
+    all.push_back(s.sensor);
+    return all;
+  };
+  std::vector<std::string> prefixes;
+  for (const ImageSensorNames& s : sensors) {
+    const std::vector<std::string> own = names(s);
+    bool shared = false;
+    for (const ImageSensorNames& other : sensors) {
+      if (other.vehicle == s.vehicle) continue;
+      for (const std::string& name : names(other)) {
+        shared = shared || std::find(own.begin(), own.end(), name) != own.end();
+      }
+    }
+    prefixes.push_back(shared ? s.vehicle + "_" : "");
+  }
+  return prefixes;
+}
+
+int CalcHiddenVehicle(const ImageStream& stream, std::size_t vehicle) {
+  return stream.world_fixed || stream.sees_own_body ? -1 : static_cast<int>(vehicle);
 }
 
 }  // namespace airis::engine

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "engine/core/camera_frame.h"
 #include "engine/core/camera_model.h"
@@ -15,13 +16,16 @@ namespace airis::engine {
 /// One image stream of an image sensor, constant over a run. A camera has one stream, named as the
 /// sensor; a stereo pair has two, `<name>_left` and `<name>_right`, sampled at the same instant.
 struct ImageStream {
-  std::string name;             ///< unique among a world's image streams (datasets, Python)
+  std::string name;             ///< unique among its vehicle's image streams
   std::string rig;              ///< the sensor it belongs to (a stereo pair's name)
   std::string side = "left";    ///< "left" for a mono camera or the left eye, "right" for the right
   CameraIntrinsics intrinsics;  ///< pinhole model, clip planes and distortion of its images
   RenderOutputs outputs;        ///< the image planes its frames carry
   MountConfig mount;            ///< the sensor's mount on its vehicle (or in the world)
   bool world_fixed = false;     ///< the mount is in the world frame, not on the vehicle's body
+  /// Its images show its own vehicle's body (a camera on a vehicle leaves it out unless its mount
+  /// is set to see it; a world-fixed camera sees every vehicle).
+  bool sees_own_body = false;
   /// Offset of this eye from the mount along the left eye's image x axis (m): 0 for a mono camera
   /// and the left eye, the baseline for the right eye.
   double offset_x_m = 0.0;
@@ -34,6 +38,24 @@ struct ImageStream {
 /// mount, C the optical frame (x right, y down, z forward; CalcR_SC) and T_offset the eye's offset
 /// along C's x. Requires `state` unless the mount is world-fixed.
 Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBodyState* state);
+
+/// The names of one image sensor of a vehicle (for CalcDatasetNamePrefixes).
+struct ImageSensorNames {
+  std::string vehicle;
+  std::string sensor;                ///< the sensor's own name (a stereo rig's)
+  std::vector<std::string> streams;  ///< its streams' own names
+};
+
+/// The prefix a dataset puts before the names of each of `sensors` and of its streams (dataset
+/// camera folders, manifests, `--cameras`; docs/dataset-format.md): "<vehicle>_" when an image
+/// sensor of another vehicle has a name (sensor or stream) the same as one of this sensor's, else
+/// "". Two drones with a camera 'front' record 'drone1_front' and 'drone2_front'; a camera whose
+/// name no other vehicle uses keeps it.
+std::vector<std::string> CalcDatasetNamePrefixes(std::span<const ImageSensorNames> sensors);
+
+/// The vehicle whose body stream `stream` of vehicle `vehicle` leaves out of its images: its own,
+/// unless the stream is world-fixed or sees its own body; -1 for none.
+int CalcHiddenVehicle(const ImageStream& stream, std::size_t vehicle);
 
 /// The GL implementation an image sensor renders with (for manifests and reports).
 struct RendererInfo {

@@ -15,6 +15,7 @@
 namespace airis::engine {
 
 class ImageSensor;
+class World;
 
 /// The truth a sensor may read when it samples: its vehicle after this tick's integration and
 /// contacts.
@@ -24,6 +25,10 @@ struct SensorContext {
   const RigidBodyAccelerations* accelerations = nullptr;  ///< over the last step, contacts included
   const Environment* environment = nullptr;
   const RayCaster* rays = nullptr;  ///< null when the world has no ray caster
+  /// The world with every vehicle at this tick (cameras draw the other vehicles' bodies); null
+  /// where a sensor samples without one (unit tests).
+  const World* world = nullptr;
+  std::size_t vehicle = 0;  ///< index of the sensor's own vehicle in `world`
 };
 
 /// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete

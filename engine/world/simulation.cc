@@ -50,8 +50,13 @@ void Simulation::Step() {
 void Simulation::UpdateSensors(TimeNs now_ns) {
   const std::size_t n = world_->vehicle_count();
   const auto sensor_context = [&](std::size_t i) {
-    return SensorContext{now_ns, &world_->vehicle(i).state(), &world_->accelerations(i),
-                         &world_->environment(), world_->ray_caster()};
+    return SensorContext{now_ns,
+                         &world_->vehicle(i).state(),
+                         &world_->accelerations(i),
+                         &world_->environment(),
+                         world_->ray_caster(),
+                         world_.get(),
+                         i};
   };
   ParallelFor(pool_.get(), n, [&](std::size_t i) {
     const auto sensors = world_->sensors(i);

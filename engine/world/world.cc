@@ -167,6 +167,11 @@ void World::CalcLocalConditions(std::size_t i, double* air_density_kg_m3,
   *gravity_m_s2 = local.gravity_m_s2 + local.gravity_slope_1_s2 * dh;
 }
 
+void World::CalcVehiclePoses(std::vector<Eigen::Isometry3d>& T_WB) const {
+  T_WB.resize(slots_.size());
+  for (std::size_t i = 0; i < slots_.size(); ++i) T_WB[i] = slots_[i].vehicle->state().CalcPose();
+}
+
 void World::SetHeld(std::size_t i, bool held) {
   Slot& slot = slots_[i];
   slot.held = held;

@@ -98,6 +98,8 @@ class World {
   std::size_t vehicle_count() const { return slots_.size(); }
   Vehicle& vehicle(std::size_t i) { return *slots_[i].vehicle; }
   const Vehicle& vehicle(std::size_t i) const { return *slots_[i].vehicle; }
+  /// Writes T_WB (body FRD -> world NED) of every vehicle, in vehicle order, into `T_WB` (resized).
+  void CalcVehiclePoses(std::vector<Eigen::Isometry3d>& T_WB) const;
   /// Holds vehicle `i` kinematically where its state puts it (true) or simulates it again (false).
   /// A held vehicle is not moved, pushed or collided by StepPhysics; its velocities are zeroed and
   /// its accelerations read as at rest (gravity only). For placing cameras at chosen poses (mission

@@ -34,6 +34,8 @@ void CameraConfig::Validate() const {
   CalcIntrinsics().Validate();
   WithPrefix("outputs.", [&] { outputs.Validate(); });
   WithPrefix("mount.", [&] { mount.Validate(); });
+  engine::Require(!sees_own_body || attachment == CameraAttachment::kVehicle, "sees_own_body",
+                  "applies to a camera on a vehicle; a world-attached camera sees every vehicle");
 }
 
 engine::CameraIntrinsics CameraConfig::CalcIntrinsics() const {

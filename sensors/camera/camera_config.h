@@ -39,6 +39,10 @@ struct CameraConfig {
   engine::RenderOutputs outputs;
   CameraAttachment attachment = CameraAttachment::kVehicle;
   engine::MountConfig mount;
+  /// Its images show its own vehicle's body (a camera that looks at its own airframe: landing gear,
+  /// a gimbal looking down past the arms). Off by default; for vehicle-attached cameras only (a
+  /// world-attached camera sees every vehicle).
+  bool sees_own_body = false;
 
   template <class V>
   void Visit(V& v) {
@@ -57,8 +61,12 @@ struct CameraConfig {
     v.Field("outputs", outputs, "images to produce");
     v.Field("attachment", attachment, "mount relative to the vehicle or to the world");
     v.Field("mount", mount, "pose of the camera's sensor frame (x forward, y right, z down)");
+    v.Field("sees_own_body", sees_own_body,
+            "true: its images show its own vehicle's body (default: left out; a world-attached "
+            "camera sees every vehicle)");
   }
-  /// Throws InvalidField naming the field (e.g. `hfov_deg`, `distortion.k1`, `mount.pitch_deg`).
+  /// Throws InvalidField naming the field (e.g. `hfov_deg`, `distortion.k1`, `mount.pitch_deg`,
+  /// `sees_own_body` on a world-attached camera).
   void Validate() const;
 
   /// The intrinsics this config describes (no validation).

@@ -1,6 +1,7 @@
 #include "sensors/camera/camera_sensor.h"
 
 #include "engine/core/error.h"
+#include "engine/world/world.h"
 
 namespace airis::sensors {
 
@@ -60,16 +61,25 @@ void CameraSensor::CopyLatestRow(std::span<double> out) const {
   CopyPose(frame_.T_WC, out);
 }
 
-void CameraSensor::Sample(const engine::SensorContext& context) {
+void CameraSensor::Render(const engine::SensorContext& context, engine::CameraFrame& out) {
   renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
-                   context.now_ns, frame_);
+                   context.now_ns, out, CalcBodyPoses(context, stream_, body_poses_W_));
 }
+
+void CameraSensor::Sample(const engine::SensorContext& context) { Render(context, frame_); }
 
 void CameraSensor::Capture(const engine::SensorContext& context,
                            std::span<engine::CameraFrame> frames) {
   AIRIS_DEMAND(frames.size() == 1);
-  renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
-                   context.now_ns, frames[0]);
+  Render(context, frames[0]);
+}
+
+engine::BodyPoses CalcBodyPoses(const engine::SensorContext& context,
+                                const engine::ImageStream& stream,
+                                std::vector<Eigen::Isometry3d>& T_WB) {
+  if (context.world == nullptr) return {};
+  context.world->CalcVehiclePoses(T_WB);
+  return {T_WB, engine::CalcHiddenVehicle(stream, context.vehicle)};
 }
 
 engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig& config,
@@ -81,6 +91,7 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
   s.outputs = config.outputs;
   s.mount = config.mount;
   s.world_fixed = config.attachment == CameraAttachment::kWorld;
+  s.sees_own_body = config.sees_own_body;
   s.rate_hz = config.rate_hz;
   return s;
 }

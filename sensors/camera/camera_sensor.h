@@ -40,16 +40,24 @@ class CameraSensor : public engine::ImageSensor {
   void Sample(const engine::SensorContext& context) override;
 
  private:
+  void Render(const engine::SensorContext& context, engine::CameraFrame& out);
+
   CameraConfig config_;
   std::shared_ptr<const engine::RenderScene> scene_;
   engine::CameraRenderer renderer_;
   engine::ImageStream stream_;
   engine::CameraFrame frame_;
+  std::vector<Eigen::Isometry3d> body_poses_W_;  // scratch: T_WB of every vehicle
 };
 
 /// The stream of a camera with `config` named `name` (a stereo eye adds its side and offset).
 engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig& config,
                                     const engine::CameraIntrinsics& intrinsics);
+/// The vehicle bodies stream `stream` shows in `context`: every vehicle of context.world at its
+/// pose (written into `T_WB`), its own left out unless the stream sees it; none without a world.
+engine::BodyPoses CalcBodyPoses(const engine::SensorContext& context,
+                                const engine::ImageStream& stream,
+                                std::vector<Eigen::Isometry3d>& T_WB);
 /// The GL strings of `scene`'s context.
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene);
 

@@ -52,24 +52,26 @@ void StereoCameraSensor::CopyLatestRow(std::span<double> out) const {
   CopyPose(right_.T_WC, out.subspan(7, 7));
 }
 
-void StereoCameraSensor::Sample(const engine::SensorContext& context) {
+void StereoCameraSensor::Render(const engine::SensorContext& context, engine::CameraFrame& left,
+                                engine::CameraFrame& right) {
+  // Both eyes see the same bodies: one mount, one vehicle.
+  const engine::BodyPoses bodies = CalcBodyPoses(context, streams_[0], body_poses_W_);
   const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
   const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);
-  renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns);
-  renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns);
-  renderer_.Collect(left_);
-  renderer_.Collect(right_);
+  renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns, bodies);
+  renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns, bodies);
+  renderer_.Collect(left);
+  renderer_.Collect(right);
+}
+
+void StereoCameraSensor::Sample(const engine::SensorContext& context) {
+  Render(context, left_, right_);
 }
 
 void StereoCameraSensor::Capture(const engine::SensorContext& context,
                                  std::span<engine::CameraFrame> frames) {
   AIRIS_DEMAND(frames.size() == 2);
-  const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
-  const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);
-  renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns);
-  renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns);
-  renderer_.Collect(frames[0]);
-  renderer_.Collect(frames[1]);
+  Render(context, frames[0], frames[1]);
 }
 
 }  // namespace airis::sensors

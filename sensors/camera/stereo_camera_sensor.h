@@ -3,6 +3,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "sensors/camera/camera_sensor.h"
 
@@ -46,8 +47,13 @@ class StereoCameraSensor : public engine::ImageSensor {
   std::shared_ptr<const engine::RenderScene> scene_;
   engine::CameraRenderer renderer_;  // one renderer, two frames in flight
   std::array<engine::ImageStream, 2> streams_;
+  // Renders both eyes at `context`'s instant into `left` and `right`.
+  void Render(const engine::SensorContext& context, engine::CameraFrame& left,
+              engine::CameraFrame& right);
+
   engine::CameraFrame left_;
   engine::CameraFrame right_;
+  std::vector<Eigen::Isometry3d> body_poses_W_;  // scratch: T_WB of every vehicle
 };
 
 }  // namespace airis::sensors

@@ -7,8 +7,10 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/render/camera_renderer.h"
+#include "tools/bench/bench_render.h"
 #include "tools/bench/synthetic_scenes.h"
 #ifdef AIRIS_BENCH_SCENES_DIR
 #include "scenes/scene.h"
@@ -67,10 +69,17 @@ void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& fli
                                           static_cast<int>(state.range(1)), 90.0, 0.1, 2000.0),
       outputs);
   CameraFrame frame;
-  for (int k = 0; k < 3; ++k) renderer.Render(scene, DronePose(k, flight), 0, frame);  // warm-up
+  std::vector<Eigen::Isometry3d> T_WB;
+  // The scene's vehicles fly ahead of the camera in every frame (as airis bench render).
+  const auto render = [&](int k) {
+    const Eigen::Isometry3d T_WC = DronePose(k, flight);
+    renderer.Render(scene, T_WC, 0, frame,
+                    tools::CalcVehiclesAhead(T_WC, scene.body_count(), T_WB));
+  };
+  for (int k = 0; k < 3; ++k) render(k);  // warm-up
   int k = 0;
   for (auto _ : state) {
-    renderer.Render(scene, DronePose(k++, flight), 0, frame);
+    render(k++);
     benchmark::DoNotOptimize(frame.rgba.pixels.data());
   }
   state.SetItemsProcessed(state.iterations());
@@ -140,7 +149,7 @@ void BM_CollectVisibleCity(benchmark::State& state) {
   VisibleSet visible;
   int i = 0;
   for (auto _ : state) {
-    scene.CollectVisible(DronePose(i++, kCityFlight), planes, visible);
+    scene.CollectVisible(DronePose(i++, kCityFlight), planes, {}, visible);
     benchmark::DoNotOptimize(visible.instances.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.part_count()));

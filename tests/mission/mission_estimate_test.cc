@@ -19,9 +19,9 @@ const LocalNedFrame kFrame(GeodeticPosition{DegToRad(47.0), DegToRad(8.0), 400.0
 // THEN it is the sum of the legs' closed forms: climbs and descents at 1 m/s, distance / speed,
 // circumference x turns / speed, the hold times.
 TEST(MissionEstimateTest, SumsTheClosedFormOfEachLeg) {
-  Mission m;
+  MissionTrack m;
   TakeoffStep takeoff;
-  takeoff.altitude_m = 10.0;  // 10 s at 1 m/s
+  takeoff.height_above_start_m = 10.0;  // 10 s at 1 m/s
   GotoStep go;
   go.position_ned_m = Vec3(30.0, 40.0, -10.0);  // 50 m at 5 m/s: 10 s
   go.speed_m_s = 5.0;
@@ -39,22 +39,23 @@ TEST(MissionEstimateTest, SumsTheClosedFormOfEachLeg) {
   m.steps = {Step(takeoff), Step(go),   Step(hover),     Step(orbit),
              Step(path),    Step(wait), Step(LandStep{})};
   constexpr double kExpected_s = 10 + 10 + 3 + 15 + 5 + 2 + 10;  // land: 10 m down at 1 m/s
-  EXPECT_NEAR(EstimateMissionDuration_s(m, Vec3::Zero(), kFrame), kExpected_s, 1e-9);
+  EXPECT_NEAR(EstimateTrackDuration_s(m, Vec3::Zero(), kFrame), kExpected_s, 1e-9);
 }
 
 // GIVEN a goto to a geodetic target WHEN estimated THEN the leg is its local NED distance over the
 // speed.
 TEST(MissionEstimateTest, GeodeticTargetsAreFlownInTheLocalFrame) {
-  Mission m;
+  MissionTrack m;
   GotoStep go;
   const GeodeticPosition target = kFrame.ToGeodetic(Vec3(0.0, 100.0, -20.0));
-  go.geodetic =
-      Vec3(RadToDeg(target.latitude_rad), RadToDeg(target.longitude_rad), target.altitude_m);
+  go.latitude_deg = RadToDeg(target.latitude_rad);
+  go.longitude_deg = RadToDeg(target.longitude_rad);
+  go.altitude_m = target.altitude_m;
   go.speed_m_s = 10.0;
   m.steps = {Step(go)};
   // 100 m east and 20 m up from a start at the origin: sqrt(100^2 + 20^2) / 10; the geodetic round
   // trip is good to micrometres.
-  EXPECT_NEAR(EstimateMissionDuration_s(m, Vec3::Zero(), kFrame), std::hypot(100.0, 20.0) / 10.0,
+  EXPECT_NEAR(EstimateTrackDuration_s(m, Vec3::Zero(), kFrame), std::hypot(100.0, 20.0) / 10.0,
               1e-6);
 }
 

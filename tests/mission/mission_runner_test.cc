@@ -48,7 +48,14 @@ class RecordingHost : public MissionHost {
     indices.push_back(index);
   }
   void ReleaseVehicle() override { ++releases; }
+  bool ArriveAtBarrier(const std::string& label, std::string* waiting_for) override {
+    barriers.push_back(label);
+    *waiting_for = "drone2";
+    return open;
+  }
   std::vector<bool> captures;
+  std::vector<std::string> barriers;
+  bool open = false;
   Vec3 wind = Vec3::Zero();
   std::vector<RigidBodyState> poses;
   std::vector<int> indices;
@@ -92,7 +99,7 @@ const LocalNedFrame& Frame() {
 
 TEST(MissionRunnerTest, HoverHoldsThePositionWhereItBegan) {
   // GIVEN a takeoff (done within 0.3 m of its target) followed by a hover
-  Mission m;
+  MissionTrack m;
   m.steps = {Step(TakeoffStep{20.0}, 3), Step(HoverStep{1.0}, 4)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   PointVehicle v;
@@ -112,7 +119,7 @@ TEST(MissionRunnerTest, HoverHoldsThePositionWhereItBegan) {
 }
 
 TEST(MissionRunnerTest, TakeoffGotoHoverLandRunsInOrderAndSucceeds) {
-  Mission m;
+  MissionTrack m;
   m.steps = {Step(TakeoffStep{20.0}, 3), Step(GotoAt(Vec3(30, 40, -20), 5.0), 4),
              Step(HoverStep{2.0}, 5), Step(LandStep{}, 6)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
@@ -137,7 +144,7 @@ TEST(MissionRunnerTest, TakeoffGotoHoverLandRunsInOrderAndSucceeds) {
 }
 
 TEST(MissionRunnerTest, GotoFacesTheDirectionOfTravel) {
-  Mission m;
+  MissionTrack m;
   m.steps = {Step(GotoAt(Vec3(0, 50, 0), 5.0), 2)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   PointVehicle v;
@@ -151,8 +158,10 @@ TEST(MissionRunnerTest, GeodeticGotoGoesToTheSameNedPoint) {
   const Vec3 target_W(120.0, -80.0, -30.0);
   const GeodeticPosition g = Frame().ToGeodetic(target_W);
   GotoStep step;
-  step.geodetic = Vec3(RadToDeg(g.latitude_rad), RadToDeg(g.longitude_rad), g.altitude_m);
-  Mission m;
+  step.latitude_deg = RadToDeg(g.latitude_rad);
+  step.longitude_deg = RadToDeg(g.longitude_rad);
+  step.altitude_m = g.altitude_m;
+  MissionTrack m;
   m.steps = {Step(step, 2)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   VehicleCommand c;
@@ -161,7 +170,7 @@ TEST(MissionRunnerTest, GeodeticGotoGoesToTheSameNedPoint) {
 }
 
 TEST(MissionRunnerTest, TimeoutFailsNamingFileLineStepAndDistance) {
-  Mission m;
+  MissionTrack m;
   m.file = "missions/test.yaml";
   GotoStep far = GotoAt(Vec3(1000, 0, -10), 5.0);
   far.timeout_s = 3.0;
@@ -180,7 +189,7 @@ TEST(MissionRunnerTest, TimeoutFailsNamingFileLineStepAndDistance) {
 TEST(MissionRunnerTest, AutomaticTimeoutScalesWithTheStep) {
   // A goto of 100 m at 5 m/s may take up to 3 x 20 s + 30 s = 90 s; a vehicle capped at 1 m/s needs
   // 100 s.
-  Mission m;
+  MissionTrack m;
   m.steps = {Step(GotoAt(Vec3(100, 0, 0), 5.0), 2)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   PointVehicle v;
@@ -197,64 +206,128 @@ TEST(MissionRunnerTest, AutomaticTimeoutScalesWithTheStep) {
 }
 
 TEST(MissionRunnerTest, DescribesTheCurrentStepWithItsLine) {
-  Mission m;
+  MissionTrack m;
   m.file = "missions/test.yaml";
   m.steps = {Step(TakeoffStep{10.0}, 7), Step(HoverStep{1.0}, 9)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   EXPECT_EQ(runner.DescribeCurrentStep(), "missions/test.yaml:7: step 1 (takeoff)");
+  m.vehicle = "drone2";  // a track that names its vehicle: messages name it
+  EXPECT_EQ(MissionRunner(m, Frame(), RandomStream(1), nullptr).DescribeCurrentStep(),
+            "missions/test.yaml:7: vehicle 'drone2' step 1 (takeoff)");
+}
+
+MissionContact Contact(double t_s, const std::string& what, bool from_below = false,
+                       double speed_m_s = 0.5) {
+  MissionContact c;
+  c.time_ns = SecondsToNs(t_s);
+  c.what = what;
+  c.from_below = from_below;
+  c.speed_change_m_s = speed_m_s;
+  return c;
 }
 
 TEST(MissionRunnerTest, CollisionFailsWhenAbortOnCollision) {
-  Mission m;
+  MissionTrack m;
+  m.vehicle = "drone1";
   m.steps = {Step(HoverStep{10.0}, 4)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   VehicleCommand c;
   runner.Update({0, RigidBodyState{}, false}, &c);
-  runner.ReportCollision(SecondsToNs(1.25), "building 'tower_3'");
+  EXPECT_TRUE(runner.ReportContact(Contact(1.25, "building 'tower_3'", false, 3.0)));
   EXPECT_EQ(runner.state(), MissionRunner::State::kFailed);
-  EXPECT_NE(
-      runner.failure().find("step 1 (hover): collided with building 'tower_3' at t = 1.250 s"),
-      std::string::npos)
-      << runner.failure();
+  EXPECT_TRUE(runner.ended_by_collision());
+  EXPECT_EQ(runner.failure(),
+            "missions/test.yaml:4: vehicle 'drone1' step 1 (hover): collided with building "
+            "'tower_3' at t = 1.250 s (impact 3.00 m/s)");
+  EXPECT_EQ(runner.contacts(), 1);
+  EXPECT_EQ(runner.collisions(), 1);
+  EXPECT_EQ(runner.events().back().what,
+            "failed: collided with building 'tower_3' at t = 1.250 s "
+            "(impact 3.00 m/s)");
 }
 
-TEST(MissionRunnerTest, TouchingDownDuringLandIsNotACollision) {
-  Mission m;
+TEST(MissionRunnerTest, TouchingDownDuringLandIsAContactNotACollision) {
+  MissionTrack m;
   m.steps = {Step(HoverStep{1.0}, 3), Step(LandStep{}, 4)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   PointVehicle v;
   VehicleCommand c;
   runner.Update({0, v.state, false}, &c);
   // During hover, even a contact from below (a roof) is a collision...
-  runner.ReportCollision(0, "roof", /*from_below=*/true);
+  EXPECT_TRUE(runner.ReportContact(Contact(0, "roof 'r'", true)));
   EXPECT_EQ(runner.state(), MissionRunner::State::kFailed);
-  // ...but during land it is the touchdown, while a side hit still fails.
+  // ...but during land it is the touchdown, while a side hit, another vehicle or a touchdown
+  // faster than kMaxTouchdownSpeed_m_s is a collision.
+  m.abort_on_collision = false;
   MissionRunner landing(m, Frame(), RandomStream(1), nullptr);
   TimeNs t = 0;
   while (landing.current_step() == 0) landing.Update({t += kTickNs, v.state, false}, &c);
-  landing.ReportCollision(t, "ground 'ground'", /*from_below=*/true);
+  EXPECT_FALSE(landing.ReportContact(Contact(1, "ground 'ground'", true)));
+  EXPECT_FALSE(landing.ReportContact(Contact(1, "ground 'ground'", true, kMaxTouchdownSpeed_m_s)));
+  EXPECT_EQ(landing.collisions(), 0);
+  EXPECT_TRUE(landing.ReportContact(Contact(1, "tree 'oak_12'", false)));
+  MissionContact drone = Contact(1, "vehicle 'drone2'", true);
+  drone.with_vehicle = true;
+  EXPECT_TRUE(landing.ReportContact(drone));
+  EXPECT_TRUE(landing.ReportContact(Contact(1, "ground 'ground'", true, 2.5)));
+  EXPECT_EQ(landing.contacts(), 5);
+  EXPECT_EQ(landing.collisions(), 3);
   EXPECT_EQ(landing.state(), MissionRunner::State::kRunning);
-  landing.ReportCollision(t, "tree 'oak_12'", /*from_below=*/false);
-  EXPECT_EQ(landing.state(), MissionRunner::State::kFailed);
+  EXPECT_EQ(landing.events().back().what, "collision: ground 'ground'");
 }
 
 TEST(MissionRunnerTest, CollisionIsToleratedWithoutAbortOnCollision) {
-  Mission m;
+  MissionTrack m;
   m.abort_on_collision = false;
   m.steps = {Step(HoverStep{0.5}, 4)};
   MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
   PointVehicle v;
   VehicleCommand c;
   runner.Update({0, v.state, false}, &c);
-  runner.ReportCollision(0, "ground");
+  EXPECT_TRUE(runner.ReportContact(Contact(0, "ground 'ground'")));
   EXPECT_EQ(Fly(runner, v, 5.0).state, MissionRunner::State::kSucceeded);
+  EXPECT_EQ(runner.collisions(), 1);
+  EXPECT_FALSE(runner.ended_by_collision());
+}
+
+TEST(MissionRunnerTest, ABarrierHoldsUntilTheHostOpensItAndItsTimeoutNamesWhoIsMissing) {
+  MissionTrack m;
+  m.vehicle = "drone1";
+  m.file = "missions/test.yaml";
+  BarrierStep open_barrier;
+  open_barrier.label = "go";
+  BarrierStep late;
+  late.label = "late";
+  late.timeout_s = 2.0;
+  m.steps = {Step(open_barrier, 3), Step(HoverStep{0.5}, 4), Step(late, 5)};
+  RecordingHost host;
+  MissionRunner runner(m, Frame(), RandomStream(1), &host);
+  PointVehicle v;
+  VehicleCommand c;
+  // Closed: the barrier waits however long (no timeout by default).
+  for (TimeNs t = 0; t < SecondsToNs(200.0); t += 100 * kTickNs)
+    runner.Update({t, v.state, false}, &c);
+  EXPECT_EQ(runner.current_step(), 0);
+  EXPECT_EQ(runner.state(), MissionRunner::State::kRunning);
+  host.open = true;
+  TimeNs t = SecondsToNs(200.0);
+  runner.Update({t, v.state, false}, &c);
+  EXPECT_EQ(runner.current_step(), 1);
+  host.open = false;
+  while (runner.Update({t += kTickNs, v.state, false}, &c) == MissionRunner::State::kRunning) {
+  }
+  EXPECT_EQ(runner.failure(),
+            "missions/test.yaml:5: vehicle 'drone1' step 3 (barrier): timed out after 2.0 s, "
+            "waiting at barrier 'late' for drone2");
+  EXPECT_EQ(host.barriers.front(), "go");
+  EXPECT_EQ(host.barriers.back(), "late");
 }
 
 TEST(MissionRunnerTest, SurveyCoversTheRectangleAndTracksTheReference) {
-  Mission m;
+  MissionTrack m;
   SurveyStep survey;
   survey.polygon_ne_m = {Eigen::Vector2d(0, 0), Eigen::Vector2d(60, 40)};
-  survey.altitude_m = 15;
+  survey.height_above_start_m = 15;
   survey.spacing_m = 20;
   survey.speed_m_s = 6;
   m.steps = {Step(TakeoffStep{15.0}, 2), Step(survey, 3)};
@@ -282,7 +355,7 @@ TEST(MissionRunnerTest, SurveyCoversTheRectangleAndTracksTheReference) {
 }
 
 TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
-  Mission m;
+  MissionTrack m;
   OrbitStep orbit;
   orbit.center_ned_m = Vec3(0, 0, -10);
   orbit.radius_m = 10;
@@ -311,9 +384,35 @@ TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
   EXPECT_NEAR(ToSeconds(t - orbit_start), 2 * M_PI * 10 / 5 + ramp_loss_s, 0.01);
 }
 
+// GIVEN a vehicle east of and below an orbit's centre WHEN the orbit starts THEN its reference is
+// the point of the circle on the bearing to the vehicle, at the centre's z; the vehicle flies there
+// first and the orbit ends where it began (docs/mission-format.md, "Where an orbit begins").
+TEST(MissionRunnerTest, AnOrbitBeginsOnItsCircleNearestTheVehicleAndEndsThere) {
+  MissionTrack m;
+  OrbitStep orbit;
+  orbit.center_ned_m = Vec3(0, 0, -10);
+  orbit.radius_m = 10;
+  orbit.speed_m_s = 5;
+  orbit.turns = 1;
+  m.steps = {Step(orbit, 3)};
+  MissionRunner runner(m, Frame(), RandomStream(1), nullptr);
+  PointVehicle v;
+  v.state.p_W = Vec3(0, 30, -2);  // due east of the centre, 8 m lower
+  VehicleCommand c;
+  TimeNs t = 0;
+  runner.Update({t, v.state, false}, &c);
+  EXPECT_LT((c.position_W - Vec3(0, 10, -10)).norm(), 1e-9);
+  while (runner.Update({t, v.state, false}, &c) == MissionRunner::State::kRunning) {
+    v.Apply(c, 1e-3);
+    t += kTickNs;
+  }
+  ASSERT_EQ(runner.state(), MissionRunner::State::kSucceeded) << runner.failure();
+  EXPECT_LT((c.position_W - Vec3(0, 10, -10)).norm(), 1e-6);  // one whole turn later
+}
+
 TEST(MissionRunnerTest, HostStepsReachTheHostAndRandomPosesAreSeeded) {
   auto run = [](std::uint64_t seed) {
-    Mission m;
+    MissionTrack m;
     RandomPosesStep poses;
     poses.count = 5;
     poses.dwell_s = 0.1;
@@ -345,8 +444,19 @@ TEST(MissionRunnerTest, HostStepsReachTheHostAndRandomPosesAreSeeded) {
 TEST(MissionStepTest, ValidationNamesTheField) {
   GotoStep both;
   both.position_ned_m = Vec3::Zero();
-  both.geodetic = Vec3(47, -122, 100);
+  both.latitude_deg = 47;
+  both.longitude_deg = -122;
+  both.altitude_m = 100;
   EXPECT_THROW(both.Validate(), InvalidField);
+  GotoStep partial;
+  partial.latitude_deg = 47;
+  partial.altitude_m = 100;
+  try {
+    partial.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "longitude_deg");
+  }
   GotoStep none;
   try {
     none.Validate();

@@ -121,6 +121,24 @@ def test_mission_flies_to_success(write):
     assert np.allclose(sim.vehicles["drone1"].state.position_ned_m, [2, 1, -3], atol=0.3)
 
 
+def test_run_mission_flies_a_track_per_vehicle(write):
+    scene = write("two.yaml", "vehicles:\n"
+                  "  - {name: a, preset: quad_x, start: {position_ned_m: [0, 0, -0.2]}}\n"
+                  "  - {name: b, preset: quad_x, start: {position_ned_m: [0, 5, -0.2]}}\n")
+    mission = write("two_m.yaml", "vehicles:\n"
+                    "  a: {steps: [{takeoff: {height_above_start_m: 2}}, {barrier: {label: up}},"
+                    " {land: }]}\n"
+                    "  b: {steps: [{takeoff: {height_above_start_m: 4}}, {barrier: {label: up}},"
+                    " {land: }]}\n")
+    sim = airis.Simulation(scene)
+    out = sim.run_mission(mission)
+    assert out["succeeded"], out
+    assert [t["vehicle"] for t in out["tracks"]] == ["a", "b"]
+    assert all(t["state"] == "succeeded" and t["collisions"] == 0 for t in out["tracks"])
+    assert out["contacts"] == sum(t["contacts"] for t in out["tracks"]) > 0  # the landings
+    assert out["vehicle"] == "a" and out["steps"] == 3  # the first track's
+
+
 def test_step_flies_a_started_mission(write):
     from conftest import HOVER_MISSION
     sim = airis.Simulation(write("s.yaml", SENSOR_SCENE))
@@ -145,6 +163,27 @@ def test_bad_dict_scene_names_the_key_and_line():
     with pytest.raises(airis.ConfigError) as e:
         airis.Simulation({"scene": {"name": "x", "sede": 3}})
     assert "<dict>:3:" in str(e.value) and "sede" in str(e.value)
+
+
+def test_overrides_replace_scene_keys_as_set_does():
+    scene = {"scene": {"name": "o"}, "vehicles": [{"name": "d", "preset": "quad_x"}]}
+    start = {"vehicles[0].start.position_ned_m": [1, 2, -3]}
+    windy = airis.Simulation(scene, overrides={**start,
+                                               "scene.environment.wind.mean_ned_m_s": np.array([5, -2, 0])})
+    calm = airis.Simulation(scene, overrides=start)
+    assert windy.vehicles["d"].state.position_ned_m.tolist() == [1.0, 2.0, -3.0]
+    assert airis.Simulation(scene).vehicles["d"].state.position_ned_m.tolist() != [1.0, 2.0, -3.0]
+    # the wind reaches the world: a falling body drifts west of one in calm air, which falls straight
+    windy.run_for(0.5)
+    calm.run_for(0.5)
+    assert calm.vehicles["d"].state.position_ned_m[1] == 2.0
+    assert windy.vehicles["d"].state.position_ned_m[1] < 2.0
+    with pytest.raises(airis.ConfigError) as e:
+        airis.Simulation(scene, overrides={"scene.environment.wnd.mean_ned_m_s": [5, 0, 0]})
+    assert str(e.value) == ("--set scene.environment.wnd.mean_ned_m_s=[5, 0, 0]: "
+                            "scene.environment.wnd: unknown key 'wnd' (did you mean 'wind'?)")
+    with pytest.raises(TypeError):
+        airis.Simulation(scene, overrides=["scene.lighting.ambient=0.5"])
 
 
 def test_bad_arguments_raise_clear_errors():

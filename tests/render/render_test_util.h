@@ -17,6 +17,7 @@ EglContext& SharedContext();
 
 // The box scenes of tests/fixtures, by their old names here.
 using airis::testing::AddBox;
+using airis::testing::AddBoxBody;
 using airis::testing::AddGround;
 using airis::testing::MakeEmptyScene;
 

@@ -122,5 +122,78 @@ TEST(CampaignFileTest, MistakesNameFileLineColumnAndKey) {
   }
 }
 
+TEST(CampaignFileTest, SetGivesOneVariantPerCombinationWithAFolderEach) {
+  const fs::path dir = CampaignFolder();
+  const CampaignConfig c = ParseCampaign(R"(datasets:
+  - name: a
+    scene: scene.yaml
+    mission: mission.yaml
+    set:
+      scene.lighting.sun_elevation_deg: [20, 45]
+      scene.environment.wind.mean_ned_m_s: [[0, 0, 0], [5,0,0], [-2.5, 1, 0]]
+      scene.lighting.fog_distance_m: 300
+)",
+                                         (dir / "train.yaml").string());
+  const std::vector<CampaignVariant> v = c.datasets[0].CalcVariants();
+  ASSERT_EQ(v.size(), 6u);  // 2 x 3 x 1
+  // The first key changes slowest; keys with one value are in every variant, not in the folder.
+  EXPECT_EQ(v[0].folder, "sun_elevation_deg-20/mean_ned_m_s-0_0_0");
+  EXPECT_EQ(v[1].folder, "sun_elevation_deg-20/mean_ned_m_s-5_0_0");
+  EXPECT_EQ(v[2].folder, "sun_elevation_deg-20/mean_ned_m_s--2.5_1_0");
+  EXPECT_EQ(v[3].folder, "sun_elevation_deg-45/mean_ned_m_s-0_0_0");
+  EXPECT_EQ(v[1].overrides,
+            (std::vector<std::string>{"scene.environment.wind.mean_ned_m_s=[5, 0, 0]",
+                                      "scene.lighting.fog_distance_m=300",
+                                      "scene.lighting.sun_elevation_deg=20"}));
+  // Two varying keys that end in one name are told apart by their whole paths.
+  const CampaignConfig same = ParseCampaign(R"(datasets:
+  - name: a
+    scene: scene.yaml
+    mission: mission.yaml
+    set: {physics.rate_hz: [500, 1000], scene.environment.wind.gust: [none, dryden],
+          scene.lighting.ambient: [0.2, 0.4]}
+)",
+                                            (dir / "train.yaml").string());
+  EXPECT_EQ(same.datasets[0].CalcVariants()[7].folder, "rate_hz-1000/gust-dryden/ambient-0.4");
+  // Without `set:`, one variant with no overrides.
+  const CampaignConfig none =
+      ParseCampaign("datasets:\n  - {name: a, scene: scene.yaml, mission: mission.yaml}\n",
+                    (dir / "train.yaml").string());
+  ASSERT_EQ(none.datasets[0].CalcVariants().size(), 1u);
+  EXPECT_TRUE(none.datasets[0].CalcVariants()[0].overrides.empty());
+  EXPECT_EQ(none.datasets[0].CalcVariants()[0].folder, "");
+}
+
+TEST(CampaignFileTest, SetMistakesAreNamedAtTheValue) {
+  const std::string head =
+      "datasets:\n  - name: a\n    scene: scene.yaml\n    mission: mission.yaml\n    set:\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {head + "      scene.environment.wnd.mean_ned_m_s: [[5, 0, 0]]\n",
+       "train.yaml:6:44: datasets[0].set.scene.environment.wnd.mean_ned_m_s: "
+       "scene.environment.wnd: unknown key 'wnd' (did you mean 'wind'?)"},
+      {head + "      scene.lighting.sun_elevation_deg: [20, high]\n",
+       "train.yaml:6:46: datasets[0].set.scene.lighting.sun_elevation_deg[1]: expected a number "
+       "(got 'high')"},
+      {head + "      scene.lighting.sun_elevation_deg: [20, 20]\n",
+       "train.yaml:6:46: datasets[0].set.scene.lighting.sun_elevation_deg[1]: listed twice"},
+      {head + "      scene.lighting: {ambient: 1}\n",
+       "train.yaml:6:23: datasets[0].set.scene.lighting: a map: set its keys one by one"},
+      {head + "      scene.lighting.ambient: []\n",
+       "train.yaml:6:7: datasets[0].set.scene.lighting.ambient: an empty list: give a value"},
+      {head + "      scene..ambient: 1\n",
+       "train.yaml:6:23: datasets[0].set.scene..ambient: 'scene..ambient' is not a key path"},
+      {head + "      vehicles[0].name: [x/y, x_y]\n",
+       "train.yaml:6:31: datasets[0].set.vehicles[0].name[1]: its folder name would be the one of "
+       "x/y ('x_y')"},
+      {head + "      scene.lighting: [null]\n      scene.lighting.ambient: 1\n",
+       "train.yaml:5:5: datasets[0].set.scene.lighting.ambient: inside 'scene.lighting', which is "
+       "set too"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string error = ErrorOf(text);
+    EXPECT_EQ(error.substr(0, expected.size()), expected) << text << "\n" << error;
+  }
+}
+
 }  // namespace
 }  // namespace airis::scenes

@@ -39,19 +39,21 @@ steps:
 )",
                                          "missions/m.yaml");
   EXPECT_EQ(m.name, "demo");
-  EXPECT_EQ(m.vehicle, "drone");
-  EXPECT_TRUE(m.abort_on_collision);
-  ASSERT_EQ(m.steps.size(), 12u);
-  EXPECT_EQ(m.steps[0].As<engine::TakeoffStep>()->altitude_m, 25.0);
-  const auto& g = *m.steps[1].As<engine::GotoStep>();
+  ASSERT_EQ(m.tracks.size(), 1u);
+  const engine::MissionTrack& t = m.tracks[0];
+  EXPECT_EQ(t.vehicle, "drone");
+  EXPECT_TRUE(t.abort_on_collision);
+  ASSERT_EQ(t.steps.size(), 12u);
+  EXPECT_EQ(t.steps[0].As<engine::TakeoffStep>()->height_above_start_m, 25.0);
+  const auto& g = *t.steps[1].As<engine::GotoStep>();
   EXPECT_EQ(*g.position_ned_m, engine::Vec3(10, 20, -25));
   EXPECT_EQ(*g.yaw_deg, 90.0);
-  EXPECT_EQ(m.steps[3].As<engine::OrbitStep>()->turns, 2.0);
-  EXPECT_EQ(m.steps[8].As<engine::CaptureStep>()->cameras[0], "front");
-  EXPECT_NE(m.steps[11].As<engine::LandStep>(), nullptr);
-  EXPECT_EQ(m.steps[1].where.line, 5);
-  EXPECT_EQ(m.steps[1].where.column, 5);
-  EXPECT_EQ(m.steps[1].where.file, "missions/m.yaml");
+  EXPECT_EQ(t.steps[3].As<engine::OrbitStep>()->turns, 2.0);
+  EXPECT_EQ(t.steps[8].As<engine::CaptureStep>()->cameras[0], "front");
+  EXPECT_NE(t.steps[11].As<engine::LandStep>(), nullptr);
+  EXPECT_EQ(t.steps[1].where.line, 5);
+  EXPECT_EQ(t.steps[1].where.column, 5);
+  EXPECT_EQ(t.steps[1].where.file, "missions/m.yaml");
 }
 
 TEST(MissionFileTest, UnknownStepSuggestsTheClosestKind) {
@@ -80,7 +82,11 @@ TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
 TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {
   const std::string e = ErrorOf("steps:\n  - goto: {speed_m_s: 3}\n");
   EXPECT_NE(e.find("missions/m.yaml:2:"), std::string::npos) << e;
-  EXPECT_NE(e.find("give exactly one of position_ned_m and geodetic"), std::string::npos) << e;
+  EXPECT_NE(
+      e.find(
+          "give exactly one target: position_ned_m, or latitude_deg, longitude_deg and altitude_m"),
+      std::string::npos)
+      << e;
 }
 
 TEST(MissionFileTest, StructuralMistakesAreNamed) {

@@ -174,5 +174,19 @@ TEST(VehiclesSectionTest, CamerasAreBuiltOnOneSharedRenderScene) {
   EXPECT_EQ(world->sensors(0)[1]->name(), "pair");
 }
 
+TEST(VehiclesSectionTest, VehiclesMayShareACameraNameButNotADatasetName) {
+  const std::string two =
+      "vehicles:\n"
+      "  - {name: a, preset: quad_x, sensors: [{name: front, camera: {rate_hz: 5}}]}\n"
+      "  - {name: b, preset: quad_x, start: {position_ned_m: [0, 5, -0.2]},\n"
+      "     sensors: [{name: front, camera: {rate_hz: 5}}]}\n";
+  EXPECT_EQ(ErrorOf(two), "no error");  // datasets call them a_front and b_front
+  EXPECT_EQ(ErrorOf(two + "  - {name: c, preset: quad_x, start: {position_ned_m: [0, 9, -0.2]},\n"
+                          "     sensors: [{name: a_front, camera: {rate_hz: 5}}]}\n"),
+            "scenes/v.yaml:6:17: vehicles[2].sensors[0].name: camera 'a_front' and camera 'front' "
+            "of vehicle 'a' would share the dataset name 'a_front' (a camera name that several "
+            "vehicles use becomes <vehicle>_<camera>); rename one");
+}
+
 }  // namespace
 }  // namespace airis::scenes

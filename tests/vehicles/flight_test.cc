@@ -206,7 +206,7 @@ TEST(FlightTest, EveryPresetFliesASquareAndEndsWithinThirtyCentimetres) {
     square.waypoints_ned_m = {Vec3(20, 0, -10), Vec3(20, 20, -10), Vec3(0, 20, -10),
                               Vec3(0, 0, -10)};
     square.speed_m_s = 5.0;
-    engine::Mission mission;
+    engine::MissionTrack mission;
     mission.steps = {engine::MissionStep::Of(square),
                      engine::MissionStep::Of(engine::HoverStep{2.0, 0.0})};
     engine::MissionRunner runner(mission, f.sim->world().environment().frame(),

@@ -62,13 +62,18 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
   CameraRenderer renderer(
       context, CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, 2000.0), outputs);
   CameraFrame frame;
+  std::vector<Eigen::Isometry3d> T_WB;
+  const auto render = [&](int k) {
+    const Eigen::Isometry3d T_WC = DronePose(k, flight);
+    renderer.Render(scene, T_WC, 0, frame, CalcVehiclesAhead(T_WC, scene.body_count(), T_WB));
+  };
   constexpr int kWarmUp = 5;
-  for (int k = 0; k < kWarmUp; ++k) renderer.Render(scene, DronePose(k, flight), 0, frame);
+  for (int k = 0; k < kWarmUp; ++k) render(k);
   CaseResult r;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   for (int k = 0; k < frames; ++k) {
-    renderer.Render(scene, DronePose(k, flight), 0, frame);
+    render(k);
     r.triangles += static_cast<double>(renderer.last_triangles());
     r.draw_calls += static_cast<double>(renderer.last_draw_calls());
   }
@@ -80,7 +85,8 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
   const auto start_pipelined = Clock::now();
   for (int k = 0; k < frames; ++k) {
     if (renderer.frames_in_flight() == CameraRenderer::kMaxInFlight) renderer.Collect(frame);
-    renderer.Submit(scene, DronePose(k, flight), 0);
+    const Eigen::Isometry3d T_WC = DronePose(k, flight);
+    renderer.Submit(scene, T_WC, 0, CalcVehiclesAhead(T_WC, scene.body_count(), T_WB));
   }
   while (renderer.Collect(frame)) {
   }
@@ -89,6 +95,17 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
 }
 
 }  // namespace
+
+engine::BodyPoses CalcVehiclesAhead(const Eigen::Isometry3d& T_WC, std::size_t count,
+                                    std::vector<Eigen::Isometry3d>& T_WB) {
+  T_WB.resize(count);
+  for (std::size_t j = 0; j < count; ++j) {
+    T_WB[j] = Eigen::Isometry3d::Identity();
+    T_WB[j].linear() = T_WC.linear() * engine::CalcR_SC().transpose();
+    T_WB[j].translation() = T_WC * Eigen::Vector3d(0.0, 0.0, 8.0 + 3.0 * static_cast<double>(j));
+  }
+  return {T_WB, -1};
+}
 
 nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   engine::EglContext context;
@@ -134,6 +151,7 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
     out[c.name + "_scene"] = c.source;
     out[c.name + "_objects"] = scene.objects.size();
     out[c.name + "_triangles_total"] = scene.CountDrawnTriangles();
+    out[c.name + "_vehicles_in_view"] = scene.vehicle_bodies.size();
     for (const auto& [w, h] : {std::pair{640, 480}, std::pair{1280, 720}}) {
       const CaseResult r = RunCase(context, gpu, c.flight, w, h, options.frames);
       const std::string key = c.name + "_" + std::to_string(w) + "x" + std::to_string(h);

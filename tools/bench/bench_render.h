@@ -1,7 +1,11 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include "engine/render/gpu_scene.h"
 
 namespace airis::tools {
 
@@ -17,15 +21,22 @@ struct RenderBenchOptions {
   bool synthetic = true;
 };
 
+/// The vehicles of a benchmark frame seen from T_WC: vehicle j flies 8 + 3 j m ahead of the camera
+/// on its optical axis, level with it (a filmed drone in every frame, the worst case for their
+/// cost). Writes `count` poses into `T_WB` and returns them, none hidden.
+engine::BodyPoses CalcVehiclesAhead(const Eigen::Isometry3d& T_WC, std::size_t count,
+                                    std::vector<Eigen::Isometry3d>& T_WB);
+
 /// Renders the city and the forest from a drone flying at 30 m (city: north along the street from
 /// the central crossing, camera 15 degrees down; forest: east over the crowns, 20 degrees down) at
 /// 640x480 and 1280x720 with a 90 degree horizontal field of view, RGB + planar depth +
-/// segmentation read back to the CPU every frame. Returns frames per second (wall clock) as JSON:
-/// city_640x480_fps, city_1280x720_fps, forest_640x480_fps, forest_1280x720_fps (and
-/// synthetic_city_*, synthetic_forest_*), the same with pipelined readback (*_pipelined_fps), mean
-/// triangles and draw calls per frame, the scenes used, and gl_vendor / gl_renderer / egl_platform.
-/// Throws what the EGL context throws, and ConfigError from the scene loader for a missing or bad
-/// scene file.
+/// segmentation read back to the CPU every frame; the scene's vehicles fly ahead of the camera (8
+/// m, then every 3 m) in every frame, so their bodies are drawn in each. Returns frames per second
+/// (wall clock) as JSON: city_640x480_fps, city_1280x720_fps, forest_640x480_fps,
+/// forest_1280x720_fps (and synthetic_city_*, synthetic_forest_*), the same with pipelined readback
+/// (*_pipelined_fps), mean triangles and draw calls per frame, the scenes used, the vehicles in
+/// view (*_vehicles_in_view), and gl_vendor / gl_renderer / egl_platform. Throws what the EGL
+/// context throws, and ConfigError from the scene loader for a missing or bad scene file.
 nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options = {});
 
 }  // namespace airis::tools

@@ -47,6 +47,13 @@ int RunReportingErrors(const std::function<int()>& body) {
   }
 }
 
+void AddSceneOverrideOption(CLI::App* cmd, std::vector<std::string>& texts) {
+  cmd->add_option("--set", texts,
+                  "replace a key of the scene, e.g. --set scene.lighting.sun_elevation_deg=20 "
+                  "(repeatable; docs/scene-format.md, \"Overrides\")")
+      ->allow_extra_args(false);
+}
+
 void PrintToStderr(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
 
 std::string CurrentExecutable() {

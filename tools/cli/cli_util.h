@@ -1,8 +1,10 @@
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace airis::tools {
 
@@ -23,6 +25,10 @@ double ParseFiniteNumber(const std::string& name, const std::string& text);
 
 /// Writes `line` and a newline to stderr: where a job's log lines (PX4 connected, ...) go.
 void PrintToStderr(const std::string& line);
+
+/// Adds `--set KEY.PATH=VALUE` to `cmd` (repeatable, one override each; texts into `texts`): keys
+/// of the scene replaced before it is validated (docs/scene-format.md, "Overrides").
+void AddSceneOverrideOption(CLI::App* cmd, std::vector<std::string>& texts);
 
 /// Parses `text` as an unsigned 64-bit seed for option `--name`, or throws ConfigError naming the
 /// option.

@@ -1,7 +1,6 @@
-// `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--cameras a,b] [--shard
-// K/N] [--resume]
-//  [--formats npy,normals,tartanair] [--workers N] [--threads N]`: flies the mission and writes a
-//  labeled dataset.
+// `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--set KEY=VALUE]...
+//  [--cameras a,b] [--shard K/N] [--resume] [--formats npy,normals,tartanair] [--workers N]
+//  [--threads N]`: flies the mission and writes a labeled dataset.
 // `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
 // `airis dataset ... --slurm N [--only-shards K,...]`: submits the shards and their merge to Slurm;
 // `airis dataset status DIR [--json]`: how far they got (docs/cluster.md).
@@ -14,18 +13,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "engine/core/error.h"
+#include "scenes/scene_overrides.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/dataset_cli.h"
 #include "tools/cli/slurm_cli.h"
 #include "tools/cli/stop_signals.h"
 #include "tools/jobs/dataset_job.h"
 #include "tools/jobs/dataset_merge.h"
 #include "tools/jobs/dataset_status.h"
+#include "tools/jobs/process_run.h"
 #include "tools/jobs/slurm_submission.h"
 
 namespace airis::tools {
@@ -34,13 +35,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // The command line as given, parsed into DatasetJobOptions by Run.
-struct DatasetArgs {
-  std::string scene, mission, out, seed, cameras, formats, shard;
-  int workers = 2;
+struct DatasetArgs : DatasetWriteArgs {
+  std::string scene, mission, out, seed, shard;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string threads = "1";
-  std::int64_t min_object_area_px = 16;
   std::string streams = "capture";
-  std::string stream_format = "npy";
   bool resume = false;
   int slurm = 0;  // N of --slurm N; 0 = run here
   std::string only_shards;
@@ -59,30 +58,12 @@ std::string FormatDuration(double seconds) {
   return buf;
 }
 
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
-    if (!item.empty()) out.push_back(item);
+// --streams: true for the whole flight.
+bool ParseStreams(const std::string& text) {
+  if (text != "capture" && text != "flight") {
+    throw engine::ConfigError({}, "--streams", "expected capture or flight (got '" + text + "')");
   }
-  return out;
-}
-
-engine::DatasetOutputs ParseFormats(const std::string& text) {
-  engine::DatasetOutputs outputs;
-  for (const std::string& f : SplitList(text)) {
-    if (f == "npy") {
-      outputs.depth_npy = true;
-    } else if (f == "normals") {
-      outputs.normals = true;
-    } else if (f == "tartanair") {
-      outputs.tartanair = true;
-    } else {
-      throw engine::ConfigError({}, "--formats",
-                                "unknown format '" + f + "' (expected npy, normals or tartanair)");
-    }
-  }
-  return outputs;
+  return text == "flight";
 }
 
 // The command that continues this run: the same arguments with --resume.
@@ -103,6 +84,7 @@ std::string ResumeCommand(const DatasetArgs& a) {
   if (a.min_object_area_px != 16) {
     c += " --min-object-area-px " + std::to_string(a.min_object_area_px);
   }
+  for (const std::string& text : a.overrides) c += " --set " + ShellQuote(text);
   return c + " --resume";
 }
 
@@ -114,27 +96,14 @@ int Run(const DatasetArgs& a) {
                                 "required (airis dataset SCENE --mission FILE --out DIR)");
   }
   DatasetJobOptions o;
+  static_cast<DatasetWriteOptions&>(o) = ParseDatasetWriteArgs(a, a.out);
   o.scene.path = a.scene;
   if (!a.seed.empty()) o.scene.seed = ParseSeed("seed", a.seed);
+  o.scene.overrides = scenes::ParseSceneOverrides(a.overrides);
   o.mission = a.mission;
-  o.out = a.out;
-  o.cameras = SplitList(a.cameras);
-  o.outputs = ParseFormats(a.formats);
   o.shard = ParseShard(a.shard);
-  o.workers = a.workers;
   o.threads = ParseThreads(a.threads);
-  o.min_object_area_px = a.min_object_area_px;
-  if (a.streams != "capture" && a.streams != "flight") {
-    throw engine::ConfigError({}, "--streams",
-                              "expected capture or flight (got '" + a.streams + "')");
-  }
-  o.full_streams = a.streams == "flight";
-  if (a.stream_format != "csv" && a.stream_format != "npy") {
-    throw engine::ConfigError({}, "--stream-format",
-                              "expected csv or npy (got '" + a.stream_format + "')");
-  }
-  o.stream_format =
-      a.stream_format == "npy" ? engine::StreamFormat::kNpy : engine::StreamFormat::kCsv;
+  o.full_streams = ParseStreams(a.streams);
   o.resume = a.resume;
   const StopOnSignals signals;
   o.stop = signals.flag();
@@ -223,10 +192,12 @@ int SubmitToSlurm(const DatasetArgs& a) {
   // The options as given, checked here as a run here would check them, so that a typo fails now
   // and not in N tasks on the cluster.
   if (!a.seed.empty()) ParseSeed("seed", a.seed);
-  ParseFormats(a.formats);
+  ParseDatasetWriteArgs(a, a.out);
+  ParseStreams(a.streams);
   ParseThreads(a.threads);
   DatasetOptionValues v;
   v.seed = a.seed;
+  v.overrides = scenes::SceneOverrideTexts(scenes::ParseSceneOverrides(a.overrides));
   v.cameras = a.cameras;
   v.formats = a.formats;
   v.streams = a.streams;
@@ -234,14 +205,6 @@ int SubmitToSlurm(const DatasetArgs& a) {
   v.min_object_area_px = std::to_string(a.min_object_area_px);
   v.workers = std::to_string(a.workers);
   v.threads = a.threads;
-  if (a.streams != "capture" && a.streams != "flight") {
-    throw engine::ConfigError({}, "--streams",
-                              "expected capture or flight (got '" + a.streams + "')");
-  }
-  if (a.stream_format != "csv" && a.stream_format != "npy") {
-    throw engine::ConfigError({}, "--stream-format",
-                              "expected csv or npy (got '" + a.stream_format + "')");
-  }
   plan.dataset.options = DatasetOptionWords(v);
   plan.out = fs::absolute(a.out).lexically_normal().string();
   if (plan.out.size() > 1 && plan.out.back() == '/') plan.out.pop_back();
@@ -308,23 +271,15 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--mission", a->mission, "mission file (YAML)");
   cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume");
   cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)");
-  cmd->add_option("--cameras", a->cameras, "record only these cameras (comma-separated)");
-  cmd->add_option("--formats", a->formats,
-                  "extra outputs: npy (float depth), normals, tartanair (the TartanAir layout "
-                  "too); comma-separated");
+  AddSceneOverrideOption(cmd, a->overrides);
+  AddDatasetWriteOptions(cmd, *a);
   cmd->add_option("--shard", a->shard,
                   "write shard K of N (every N-th frame from the K-th); join with 'merge'");
-  cmd->add_option("--workers", a->workers, "image encoding threads (default 2)");
   cmd->add_option("--threads", a->threads,
                   "threads that step the vehicles (default 1; the results do not depend on it)");
   cmd->add_option("--streams", a->streams,
                   "sensor, truth and command rows of the capture windows (capture, default) or "
                   "of the whole flight (flight)");
-  cmd->add_option(
-      "--stream-format", a->stream_format,
-      "sensor, truth and command streams as npy (NumPy structured arrays, default) or csv");
-  cmd->add_option("--min-object-area-px", a->min_object_area_px,
-                  "instances with fewer visible pixels get no COCO annotation (default 16)");
   cmd->add_flag("--resume", a->resume,
                 "continue an interrupted run in --out (same result as uninterrupted)");
   cmd->add_option("--slurm", a->slurm,

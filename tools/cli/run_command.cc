@@ -1,13 +1,15 @@
-// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--realtime [FACTOR]]
-// [--until SECONDS] [--threads N]`
+// `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--set KEY=VALUE]...
+// [--realtime [FACTOR]] [--until SECONDS] [--threads N]`
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
+#include "scenes/scene_overrides.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/stop_signals.h"
@@ -21,7 +23,8 @@ struct RunOptions {
   std::string mission;
   std::string out;
   std::string seed;
-  std::string realtime;  // empty: as fast as possible
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string realtime;                // empty: as fast as possible
   bool realtime_given = false;
   std::string until;
   std::string truth_rate = "100";
@@ -30,16 +33,24 @@ struct RunOptions {
 
 // One line, rewritten in place, when stderr is a terminal.
 void PrintProgress(const JobProgress& p) {
-  std::fprintf(stderr, "\r  step %d/%d %-12s t = %8.2f s  x%-7.1f  p = (%7.1f, %7.1f, %6.1f) m   ",
-               p.step, p.steps, p.step_kind.c_str(), p.simulated_s,
+  std::fprintf(stderr,
+               "\r  %s step %d/%d %-12s t = %8.2f s  x%-7.1f  p = (%7.1f, %7.1f, %6.1f) m   ",
+               p.vehicle.c_str(), p.step, p.steps, p.step_kind.c_str(), p.simulated_s,
                p.simulated_s / std::max(p.wall_s, 1e-9), p.position_W.x(), p.position_W.y(),
                p.position_W.z());
+}
+
+const char* StateWord(engine::MissionRunner::State s) {
+  return s == engine::MissionRunner::State::kSucceeded ? "succeeded"
+         : s == engine::MissionRunner::State::kFailed  ? "FAILED"
+                                                       : "not finished";
 }
 
 int Run(const RunOptions& o) {
   RunJobOptions job;
   job.scene.path = o.scene;
   if (!o.seed.empty()) job.scene.seed = ParseSeed("seed", o.seed);
+  job.scene.overrides = scenes::ParseSceneOverrides(o.overrides);
   job.mission = o.mission;
   job.out = o.out;
   if (o.realtime_given) {
@@ -79,7 +90,17 @@ int Run(const RunOptions& o) {
               m.steps_done, m.steps);
   std::printf("  distance flown       %.1f m\n", m.distance_flown_m);
   std::printf("  max tracking error   %.2f m\n", m.max_tracking_error_m);
-  std::printf("  collisions           %lld\n", static_cast<long long>(r.collisions));
+  // A contact is any touch (landings too); collisions are the contacts that are no touchdown.
+  std::printf("  contacts             %d\n", m.contacts);
+  std::printf("  collisions           %d%s\n", m.collisions,
+              m.ended_by_collision ? " (one ended the run)" : "");
+  if (m.tracks.size() > 1) {
+    for (const TrackOutcome& t : m.tracks) {
+      std::printf("  %-20s %s, %d of %d steps, %.1f m, %d contacts, %d collisions\n",
+                  t.vehicle.c_str(), StateWord(t.state), t.steps_done, t.steps, t.distance_flown_m,
+                  t.contacts, t.collisions);
+    }
+  }
   std::printf("  simulated time       %.3f s\n", m.simulated_s);
   std::printf("  wall time            %.3f s (%.1fx real time)\n", r.wall_s,
               m.simulated_s / std::max(r.wall_s, 1e-9));
@@ -102,6 +123,7 @@ void AddRunCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", options->out,
                   "folder for the telemetry log (CSV per stream); must be empty");
   cmd->add_option("--seed", options->seed, "scene seed (default: the scene's)");
+  AddSceneOverrideOption(cmd, options->overrides);
   cmd->add_option(
          "--realtime", options->realtime,
          "pace to wall time at this exact factor (default as fast as possible; 1 when given "

@@ -7,22 +7,28 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "scenes/mission_file.h"
 #include "scenes/scene.h"
+#include "scenes/scene_overrides.h"
 #include "scenes/scene_schema.h"
 #include "scenes/scene_stats.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 #include "tools/jobs/preview_render.h"
+#include "tools/jobs/scene_report.h"
 
 namespace airis::tools {
 namespace {
 
 struct SceneOptions {
   std::string file;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string mission;                 // check: the mission to report the captures of
   bool json = false;
   std::string camera;  // preview: a vehicle camera's name
   std::string pose;    // preview: "n,e,d,yaw_deg,pitch_deg"
@@ -34,10 +40,17 @@ struct Loaded {
   double load_ms = 0.0;
 };
 
-Loaded Load(const std::string& file) {
+// The scene file with the options' overrides.
+scenes::Scene LoadWithOverrides(const SceneOptions& o) {
+  scenes::SceneLoadOptions load;
+  load.overrides = scenes::ParseSceneOverrides(o.overrides);
+  return scenes::LoadScene(o.file, load);
+}
+
+Loaded Load(const SceneOptions& o) {
   // Wall time here is a report to the user, never an input to the simulation.
   const auto start = std::chrono::steady_clock::now();
-  Loaded out{scenes::LoadScene(file), 0.0};
+  Loaded out{LoadWithOverrides(o), 0.0};
   out.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return out;
@@ -57,6 +70,7 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
   std::printf("scene       %s (%s, %zu file%s)\n", s.name.c_str(), s.path.c_str(), s.files.size(),
               s.files.size() == 1 ? "" : "s");
   std::printf("seed        %llu\n", static_cast<unsigned long long>(s.seed));
+  for (const auto& o : s.overrides) std::printf("set         %s\n", o.text().c_str());
   std::printf("origin      %.6f N, %.6f E, %.1f m\n", engine::RadToDeg(s.origin.latitude_rad),
               engine::RadToDeg(s.origin.longitude_rad), s.origin.altitude_m);
   std::printf("objects     %zu (%s)\n", stats.objects, ClassList(stats).c_str());
@@ -92,15 +106,27 @@ void PrintSummary(const Loaded& loaded, const scenes::SceneStats& stats) {
 }
 
 int RunCheck(const SceneOptions& options) {
-  const Loaded loaded = Load(options.file);
+  const Loaded loaded = Load(options);
+  std::optional<engine::Mission> mission;
+  if (!options.mission.empty()) mission = scenes::LoadMissionFile(options.mission);
+  const SceneReport report = BuildSceneReport(loaded.scene, mission ? &*mission : nullptr);
+  if (options.json) {
+    nlohmann::json out = SceneReportJson(report);
+    out["scene"] = loaded.scene.name;
+    out["file"] = loaded.scene.path;
+    out["valid"] = true;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   PrintSummary(loaded, stats);
+  std::printf("%s", FormatSceneReport(report).c_str());
   std::printf("ok          %s is valid\n", options.file.c_str());
   return 0;
 }
 
 int RunStats(const SceneOptions& options) {
-  const Loaded loaded = Load(options.file);
+  const Loaded loaded = Load(options);
   const scenes::SceneStats stats = scenes::CalcSceneStats(loaded.scene);
   if (!options.json) {
     PrintSummary(loaded, stats);
@@ -111,8 +137,9 @@ int RunStats(const SceneOptions& options) {
   out["file"] = loaded.scene.path;
   out["files"] = loaded.scene.files;
   out["seed"] = loaded.scene.seed;
+  out["overrides"] = scenes::SceneOverrideTexts(loaded.scene.overrides);
   out["objects"] = stats.objects;
-  out["instances"] = stats.objects;
+  out["instances"] = stats.objects + loaded.scene.static_scene.vehicle_bodies.size();
   out["models"] = stats.models;
   out["meshes"] = stats.meshes;
   out["materials"] = stats.materials;
@@ -157,16 +184,14 @@ int RunPreview(const SceneOptions& o) {
     preview.yaw_deg = v[3];
     preview.pitch_deg = v[4];
   }
-  PreviewResult r;
-  if (!o.camera.empty()) {
-    // The camera as mounted on its vehicle at the vehicle's start pose, with its own intrinsics.
-    SceneSource source;
-    source.path = o.file;
-    const SimulationJob job(source);
-    r = RenderPreviewPng(job.world().scene(), PreviewOfImageStream(job, o.camera), o.out);
-  } else {
-    r = RenderPreviewPng(scenes::LoadScene(o.file).static_scene, preview, o.out);
-  }
+  // The vehicles at their start poses; a camera as mounted on its vehicle, with its own
+  // intrinsics.
+  SceneSource source;
+  source.path = o.file;
+  source.overrides = scenes::ParseSceneOverrides(o.overrides);
+  const SimulationJob job(source);
+  if (!o.camera.empty()) preview = PreviewOfImageStream(job, o.camera);
+  const PreviewResult r = RenderPreviewPng(job, preview, o.out);
   std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
               o.out.c_str(), r.triangles, r.gl_renderer.c_str());
   return 0;
@@ -182,6 +207,10 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   CLI::App* check =
       cmd->add_subcommand("check", "Validate a scene; print a summary, or the errors and exit 2");
   check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  check->add_option("--mission", options->mission,
+                    "a mission file: also list the cameras its capture steps record");
+  check->add_flag("--json", options->json, "print one JSON object instead of text");
+  AddSceneOverrideOption(check, options->overrides);
   check->callback([options, &exit_code] {
     exit_code = RunReportingErrors([&] { return RunCheck(*options); });
   });
@@ -190,6 +219,7 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
       "stats", "Objects per class, triangles, meshes, instances, bounds, memory and load time");
   stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
   stats->add_flag("--json", options->json, "print one JSON object instead of text");
+  AddSceneOverrideOption(stats, options->overrides);
   stats->callback([options, &exit_code] {
     exit_code = RunReportingErrors([&] { return RunStats(*options); });
   });
@@ -206,6 +236,7 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
   preview->add_option("--pose", options->pose,
                       "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
   preview->add_option("--out", options->out, "PNG to write (default preview.png)");
+  AddSceneOverrideOption(preview, options->overrides);
   preview->callback([options, &exit_code] {
     exit_code = RunReportingErrors([&] { return RunPreview(*options); });
   });

@@ -1,5 +1,6 @@
 #include "tools/jobs/campaign.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -27,7 +28,7 @@ json RecordJson(const std::string& name, const std::string& file,
                 const std::vector<CampaignDataset>& datasets) {
   json list = json::array();
   for (const CampaignDataset& d : datasets) {
-    json entry = {{"entry", d.entry}, {"folder", d.folder}};
+    json entry = {{"entry", d.entry}, {"folder", d.folder}, {"set", d.overrides}};
     entry["seed"] = d.seed ? json(*d.seed) : json(nullptr);
     list.push_back(entry);
   }
@@ -47,29 +48,37 @@ std::vector<CampaignDataset> ExpandCampaign(const scenes::CampaignConfig& campai
     std::vector<std::optional<std::uint64_t>> seeds;
     for (std::uint64_t s : e.CalcSeeds()) seeds.emplace_back(s);
     if (seeds.empty()) seeds.emplace_back(std::nullopt);  // the scene's own seed
-    for (const std::optional<std::uint64_t>& seed : seeds) {
-      CampaignDataset d;
-      d.entry = e.name;
-      d.seed = seed;
-      d.folder = seed ? e.name + "/seed-" + std::to_string(*seed) : e.name;
-      SlurmDatasetPlan& p = d.plan;
-      p.dataset.airis = options.airis;
-      p.dataset.scene = fs::absolute(e.scene).lexically_normal().string();
-      p.dataset.mission = fs::absolute(e.mission).lexically_normal().string();
-      DatasetOptionValues v;
-      if (seed) v.seed = std::to_string(*seed);
-      v.cameras = Joined(e.cameras, ",");
-      v.formats = Joined(e.formats, ",");
-      v.streams = e.streams;
-      v.stream_format = e.stream_format;
-      v.min_object_area_px = std::to_string(e.min_object_area_px);
-      p.dataset.options = DatasetOptionWords(v);
-      p.out = (fs::path(options.out) / d.folder).string();
-      p.shards = e.shards > 0 ? e.shards : options.default_shards;
-      p.name = engine::SanitizeName(campaign.name + "-" + e.name +
-                                    (seed ? "-s" + std::to_string(*seed) : ""));
-      p.resources = options.resources;
-      out.push_back(std::move(d));
+    for (const scenes::CampaignVariant& variant : e.CalcVariants()) {
+      for (const std::optional<std::uint64_t>& seed : seeds) {
+        CampaignDataset d;
+        d.entry = e.name;
+        d.seed = seed;
+        d.overrides = variant.overrides;
+        const std::string entry = variant.folder.empty() ? e.name : e.name + "/" + variant.folder;
+        d.folder = seed ? entry + "/seed-" + std::to_string(*seed) : entry;
+        SlurmDatasetPlan& p = d.plan;
+        p.dataset.airis = options.airis;
+        p.dataset.scene = fs::absolute(e.scene).lexically_normal().string();
+        p.dataset.mission = fs::absolute(e.mission).lexically_normal().string();
+        DatasetOptionValues v;
+        if (seed) v.seed = std::to_string(*seed);
+        v.overrides = variant.overrides;
+        v.cameras = Joined(e.cameras, ",");
+        v.formats = Joined(e.formats, ",");
+        v.streams = e.streams;
+        v.stream_format = e.stream_format;
+        v.min_object_area_px = std::to_string(e.min_object_area_px);
+        p.dataset.options = DatasetOptionWords(v);
+        p.out = (fs::path(options.out) / d.folder).string();
+        p.shards = e.shards > 0 ? e.shards : options.default_shards;
+        std::string variant_name = variant.folder;
+        std::replace(variant_name.begin(), variant_name.end(), '/', '-');
+        p.name = engine::SanitizeName(campaign.name + "-" + e.name +
+                                      (variant_name.empty() ? "" : "-" + variant_name) +
+                                      (seed ? "-s" + std::to_string(*seed) : ""));
+        p.resources = options.resources;
+        out.push_back(std::move(d));
+      }
     }
   }
   return out;
@@ -77,9 +86,12 @@ std::vector<CampaignDataset> ExpandCampaign(const scenes::CampaignConfig& campai
 
 void CheckCampaign(const std::vector<CampaignDataset>& datasets) {
   for (const CampaignDataset& d : datasets) ValidateSlurmPlan(d.plan);
-  std::set<std::string> checked;
+  // Seeds do not change what loads; the overrides do.
+  std::set<std::vector<std::string>> checked;
   for (const CampaignDataset& d : datasets) {
-    if (checked.insert(d.entry).second) CheckDatasetInputs(d.plan);
+    std::vector<std::string> key = d.overrides;
+    key.push_back(d.entry);
+    if (checked.insert(key).second) CheckDatasetInputs(d.plan);
   }
 }
 
@@ -118,7 +130,10 @@ std::string DescribeCampaign(const std::vector<CampaignDataset>& datasets) {
   std::string text = "# " + std::to_string(datasets.size()) + " dataset(s):\n";
   for (const CampaignDataset& d : datasets) {
     text += "#   " + d.plan.out + "  shards " + std::to_string(d.plan.shards) + "  seed " +
-            (d.seed ? std::to_string(*d.seed) : std::string("(the scene's)")) + "\n";
+            (d.seed ? std::to_string(*d.seed) : std::string("(the scene's)"));
+    if (!d.overrides.empty()) text += " ";
+    for (const std::string& o : d.overrides) text += " --set " + o;
+    text += "\n";
   }
   for (const CampaignDataset& d : datasets) {
     text += "\n# ==== " + d.folder + "\n" + DescribeSlurmSubmission(d.plan, {});

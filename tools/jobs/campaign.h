@@ -27,22 +27,26 @@ struct CampaignSubmitOptions {
 
 /// One dataset of a campaign.
 struct CampaignDataset {
-  std::string entry;                  ///< the entry's name
-  std::optional<std::uint64_t> seed;  ///< its seed; none = the scene's own
-  std::string folder;                 ///< relative to the campaign's folder: ENTRY/seed-S or ENTRY
-  SlurmDatasetPlan plan;              ///< what SubmitDatasetToSlurm submits
+  std::string entry;                   ///< the entry's name
+  std::optional<std::uint64_t> seed;   ///< its seed; none = the scene's own
+  std::vector<std::string> overrides;  ///< its scene overrides (`set:`), "KEY=VALUE", sorted
+  /// Relative to the campaign's folder: ENTRY[/VARIANT]/seed-S, or ENTRY[/VARIANT] without seeds
+  /// (VARIANT: scenes::CampaignVariant::folder).
+  std::string folder;
+  SlurmDatasetPlan plan;  ///< what SubmitDatasetToSlurm submits
 };
 
-/// The datasets of `campaign`, in file order, seeds in their order. Pure: reads and writes
-/// nothing.
+/// The datasets of `campaign`: per entry in file order, per combination of its `set:` values
+/// (CalcVariants' order), per seed in its order. Pure: reads and writes nothing.
 std::vector<CampaignDataset> ExpandCampaign(const scenes::CampaignConfig& campaign,
                                             const CampaignSubmitOptions& options);
 
 /// Throws ConfigError unless every dataset's plan can be submitted (ValidateSlurmPlan) and each
-/// entry's scene and mission load (CheckDatasetInputs, once per entry, not per seed).
+/// entry's scene (with each combination of its overrides) and mission load (CheckDatasetInputs,
+/// once per entry and combination, not per seed).
 void CheckCampaign(const std::vector<CampaignDataset>& datasets);
 
-/// DIR/campaign.json: the campaign's name, file and datasets (entry, seed, folder).
+/// DIR/campaign.json: the campaign's name, file and datasets (entry, seed, overrides, folder).
 std::string CampaignRecordPath(const std::string& out);
 
 /// Submits every dataset of `campaign` into `options.out` (empty or absent): CheckCampaign, then

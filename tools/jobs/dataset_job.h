@@ -7,29 +7,17 @@
 #include <string>
 #include <vector>
 
-#include "engine/dataset/dataset_writer.h"
-#include "engine/dataset/telemetry_recorder.h"
-#include "tools/jobs/dataset_shard.h"
+#include "tools/jobs/dataset_session.h"
 #include "tools/jobs/simulation_job.h"
 
 namespace airis::tools {
 
-/// What `airis dataset` makes (docs/dataset-format.md).
-struct DatasetJobOptions {
-  SceneSource scene;    ///< the scene file and the seed that replaces its own
+/// What `airis dataset` makes (docs/dataset-format.md): the dataset options, and the scene and
+/// mission that make it.
+struct DatasetJobOptions : DatasetWriteOptions {
+  SceneSource scene;    ///< the scene file, the seed that replaces its own, its overrides
   std::string mission;  ///< mission file (YAML)
-  std::string out;      ///< dataset folder: empty or absent, or an interrupted run's with resume
-  std::vector<std::string> cameras;  ///< record only these (empty: all)
-  engine::DatasetOutputs outputs;    ///< which files per frame
-  ShardSpec shard;
-  int workers = 2;  ///< image encoding threads, 1 to 64
   int threads = 1;  ///< threads that step the vehicles, 1 to 64 (results do not depend on it)
-  /// Instances with fewer visible pixels get no COCO annotation (they stay in the label images).
-  std::int64_t min_object_area_px = 16;
-  /// Sensor, truth and command streams of the whole flight (true) or of the capture windows only.
-  bool full_streams = false;
-  engine::StreamFormat stream_format = engine::StreamFormat::kNpy;  ///< streams' format
-  bool resume = false;  ///< continue an interrupted run in `out`
   /// Set to a signal number to stop: the frame in flight is finished, the outputs are written and
   /// the manifest says incomplete (a front end's signal handler sets it).
   const std::atomic<int>* stop = nullptr;

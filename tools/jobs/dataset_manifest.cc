@@ -84,6 +84,7 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
                           {"p2", k.distortion.p2},
                           {"k3", k.distortion.k3}}},
                         {"rate_hz", c.stream.rate_hz},
+                        {"capture_rates_hz", c.capture_rates_hz},
                         {"mount", MountJson(c.stream)},
                         {"outputs", OutputsJson(c.outputs)},
                         {"frames", c.frames}};
@@ -100,7 +101,7 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
 }  // namespace
 
 nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene& scene,
-                                   const engine::Mission& mission, const engine::World& world,
+                                   const engine::Mission* mission, const engine::World& world,
                                    const DatasetRecorder& recorder, bool complete, double sim_s) {
   nlohmann::json m;
   m["format"] = "airis-dataset";
@@ -114,8 +115,19 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
                 {"files", scene.files.size()},
                 {"name", scene.name},
                 {"seed", scene.seed}};
-  m["mission"] = {
-      {"file", o.mission_file}, {"sha256", FileHash(o.mission_file)}, {"name", mission.name}};
+  // With the files' content, the overrides make the scene (`--set`): key path -> value.
+  if (!scene.overrides.empty()) {
+    nlohmann::json& overrides = m["scene"]["overrides"] = nlohmann::json::object();
+    for (const scenes::SceneOverride& s : scene.overrides) overrides[s.key_path] = s.value;
+  }
+  // A mission's steps flew the vehicles (the built-in controller or PX4 on its offboard link), or
+  // PX4 was flown from outside (`airis px4 --dataset`: a ground station, MAVSDK) and there is none.
+  m["flown_by"] = mission ? "mission" : "px4";
+  m["mission"] = mission ? nlohmann::json{{"file", o.mission_file},
+                                          {"sha256", FileHash(o.mission_file)},
+                                          {"name", mission->name}}
+                         : nlohmann::json(nullptr);
+  if (!o.px4.is_null()) m["px4"] = o.px4;
   m["renderer"] = RendererJson(world);
   nlohmann::json& cams = m["cameras"] = nlohmann::json::array();
   std::int64_t frames = 0;
@@ -199,9 +211,9 @@ std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::j
     }
     if (!keys.empty()) return keys;
   }
-  static constexpr const char* kInputs[] = {"/scene/seed",  "/scene/sha256", "/mission/sha256",
-                                            "/formats",     "/annotations",  "/streams",
-                                            "/streams_span"};
+  static constexpr const char* kInputs[] = {"/scene/seed",     "/scene/sha256", "/scene/overrides",
+                                            "/mission/sha256", "/formats",      "/annotations",
+                                            "/streams",        "/streams_span"};
   return differs(kInputs);
 }
 

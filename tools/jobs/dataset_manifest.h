@@ -15,21 +15,25 @@ namespace airis::tools {
 /// What a dataset's manifest.json records of how it was made (docs/dataset-format.md).
 struct ManifestSource {
   std::string scene_file;    ///< as given
-  std::string mission_file;  ///< as given
+  std::string mission_file;  ///< as given; empty without a mission (PX4 flown from outside)
   engine::DatasetOutputs outputs;
   ShardSpec shard;
   std::int64_t min_object_area_px = 16;  ///< the COCO annotation rule
   bool full_streams = false;             ///< streams of the whole flight, not the capture windows
   engine::StreamFormat stream_format = engine::StreamFormat::kNpy;
   int interrupted_by = 0;  ///< the signal that stopped the run early (recorded), 0 if none
+  /// Without a mission: the `px4` entry (the PX4 vehicles, their links and counts); else null.
+  nlohmann::json px4;
 };
 
 /// The manifest of a dataset being written (`complete` false) or finished: format and airis
-/// version, the scene and mission files with their SHA-256, the seed, the renderer's strings, every
+/// version, who flew (`flown_by`: the mission, or PX4 from outside when `mission` is null, with
+/// source.px4), the scene and mission files with their SHA-256, the seed and the scene's
+/// overrides (`--set`), the renderer's strings, every
 /// camera (intrinsics, mount, outputs, frames), the streams, counts, formats, shard and classes.
 /// Throws DatasetIoError when a file cannot be read for its hash.
 nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::Scene& scene,
-                                   const engine::Mission& mission, const engine::World& world,
+                                   const engine::Mission* mission, const engine::World& world,
                                    const DatasetRecorder& recorder, bool complete,
                                    double simulated_s);
 
@@ -38,7 +42,8 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& source, const scenes::S
 nlohmann::json ReadDatasetManifest(const std::string& dir, const std::string& option = "--resume");
 
 /// Where `now` (the manifest a run would write) differs from `existing` (an interrupted run's) in
-/// what a resume must keep: format, airis version, scene and mission content, seed, shard,
+/// what a resume must keep: format, airis version, scene and mission content, seed, overrides,
+/// shard,
 /// formats, annotation rule and every camera (frame counts aside). Empty when a resume may go on,
 /// else the first difference as "scene/sha256 (was ..., now ...)".
 std::string FindResumeMismatch(const nlohmann::json& existing, const nlohmann::json& now);

@@ -44,7 +44,7 @@ json Common(json m) {
   m.erase("shard");
   m["counts"].erase("frames");
   m["scene"].erase("file");
-  m["mission"].erase("file");
+  if (m["mission"].is_object()) m["mission"].erase("file");  // null: PX4 flown from outside
   for (json& c : m["cameras"]) {
     c.erase("frames");
     if (c.contains("depth_png")) c["depth_png"].erase("clipped_pixels");

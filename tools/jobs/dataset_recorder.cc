@@ -45,6 +45,32 @@ engine::DatasetOutputs OutputsFor(const engine::DatasetOutputs& wanted,
   return o;
 }
 
+// How many of a camera's frames one captured frame stands for: `camera_hz / capture_hz` when that
+// is a whole number (to 1e-4 of it, so that 5 Hz / 3 may be written 1.6667), 1 for capture_hz 0
+// (the camera's own rate), and 0 when the camera cannot give the rate.
+std::int64_t FramesPerCapture(double camera_hz, double capture_hz) {
+  if (capture_hz <= 0.0) return 1;
+  const double ratio = camera_hz / capture_hz;
+  const double every = std::round(ratio);
+  return every >= 1.0 && std::abs(ratio - every) <= 1e-4 * every ? static_cast<std::int64_t>(every)
+                                                                 : 0;
+}
+
+// `value` to 5 significant digits (a list of rates in a message).
+std::string ShortNumber(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.5g", value);
+  return buf;
+}
+
+// True when a capture step's camera filter `only` (names on the vehicle; empty: all) takes stream
+// `stream` of image sensor `rig`.
+bool Selects(const std::vector<std::string>& only, const std::string& stream,
+             const std::string& rig) {
+  return only.empty() || std::find(only.begin(), only.end(), stream) != only.end() ||
+         std::find(only.begin(), only.end(), rig) != only.end();
+}
+
 }  // namespace
 
 struct DatasetRecorder::Recording {
@@ -54,12 +80,15 @@ struct DatasetRecorder::Recording {
     engine::TimeNs time_ns = 0;
     Eigen::Isometry3d T_WC;
   };
+  std::size_t vehicle = 0;                 // world index
+  const engine::Sensor* sensor = nullptr;  // the image sensor of the stream
+  std::string own_name, own_rig;           // the stream's and its sensor's names on the vehicle
   int writer_camera = 0;
   std::vector<Pose> poses;
   std::vector<engine::CocoImage> images;
   std::int64_t next_frame = 0;  // index of the next recorded frame (of every shard)
   std::int64_t pending = -1;    // index of the frame being rendered for this run, -1 if none
-  std::optional<engine::RateSchedule> capture_schedule;
+  std::int64_t every = 1;       // records the sensor's frames k with k % every == 0
 };
 
 DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
@@ -70,46 +99,72 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
     return options_.cameras.empty() || std::find(options_.cameras.begin(), options_.cameras.end(),
                                                  name) != options_.cameras.end();
   };
-  std::vector<std::string> known;  // every stream's and rig's name, for --cameras
+  // Every image sensor of the world, and the names datasets give it.
+  std::vector<engine::ImageSensorNames> names;
+  std::vector<std::pair<std::size_t, engine::Sensor*>> sensors;  // vehicle, sensor
+  vehicles_.resize(world.vehicle_count());
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
-    const std::string& vehicle = world.vehicle(v).name();
     for (const auto& sensor : world.sensors(v)) {
       engine::ImageSensor* image = sensor->image();
       if (!image) continue;
-      image_sensors_.push_back(sensor.get());
-      sensor->set_enabled(false);  // until a capture step starts recording
-      const auto streams = image->streams();
-      // A stereo pair records both eyes when its name or either eye's is asked for.
-      bool record = wanted(image->name());
-      known.push_back(image->name());
-      for (const engine::ImageStream& s : streams) {
-        record = record || wanted(s.name);
-        if (s.name != image->name()) known.push_back(s.name);
+      sensor->set_enabled(false);  // until a capture step of its vehicle's track starts recording
+      VehicleCameras& own = vehicles_[v];
+      own.sensors.push_back(sensor.get());
+      own.names.push_back(image->name());
+      engine::ImageSensorNames n{world.vehicle(v).name(), image->name(), {}};
+      for (const engine::ImageStream& s : image->streams()) {
+        n.streams.push_back(s.name);
+        if (s.name != image->name()) own.names.push_back(s.name);
       }
-      if (!record) {
-        image->set_sample_gate([](engine::TimeNs) { return false; });  // nothing records it
-        continue;
-      }
-      std::vector<std::size_t> cameras;
-      for (const engine::ImageStream& s : streams) {
-        auto rec = std::make_unique<Recording>();
-        const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs, s.name);
-        const engine::TartanAirSlot tartanair{s.rig, s.side};
-        const double depth_unit_m = engine::ChooseDepthUnit_m(s.intrinsics.far_m);
-        rec->writer_camera = writer_.AddCamera(s.name, outputs, tartanair, depth_unit_m);
-        recordings_.push_back(std::move(rec));
-        info_.push_back({s, vehicle, outputs, tartanair, depth_unit_m, 0, 0});
-        cameras.push_back(recordings_.size() - 1);
-      }
-      image->set_sample_gate([this, cameras](engine::TimeNs now_ns) {
-        bool any = false;  // every stream is numbered, whichever this run writes
-        for (std::size_t c : cameras) any = TakeFrame(c, now_ns) || any;
-        return any;
-      });
-      image->AddListener([this, cameras, image](const engine::Sensor&) {
-        for (std::size_t k = 0; k < cameras.size(); ++k) OnFrame(cameras[k], image->latest(k));
-      });
+      names.push_back(std::move(n));
+      sensors.emplace_back(v, sensor.get());
     }
+  }
+  const std::vector<std::string> prefixes = engine::CalcDatasetNamePrefixes(names);
+  std::vector<std::string> known;  // every stream's and rig's dataset name, for --cameras
+  for (std::size_t k = 0; k < sensors.size(); ++k) {
+    const auto [vehicle, sensor] = sensors[k];
+    engine::ImageSensor* image = sensor->image();
+    const std::string& prefix = prefixes[k];
+    const auto streams = image->streams();
+    // A stereo pair records both eyes when its name or either eye's is asked for.
+    bool record = wanted(prefix + image->name());
+    known.push_back(prefix + image->name());
+    for (const engine::ImageStream& s : streams) {
+      record = record || wanted(prefix + s.name);
+      if (s.name != image->name()) known.push_back(prefix + s.name);
+    }
+    if (!record) {
+      image->set_sample_gate([](engine::TimeNs) { return false; });  // nothing records it
+      continue;
+    }
+    std::vector<std::size_t> cameras;
+    for (const engine::ImageStream& s : streams) {
+      engine::ImageStream named = s;
+      named.name = prefix + s.name;
+      named.rig = prefix + s.rig;
+      auto rec = std::make_unique<Recording>();
+      rec->vehicle = vehicle;
+      rec->sensor = sensor;
+      rec->own_name = s.name;
+      rec->own_rig = s.rig;
+      const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs, named.name);
+      const engine::TartanAirSlot tartanair{named.rig, s.side};
+      const double depth_unit_m = engine::ChooseDepthUnit_m(s.intrinsics.far_m);
+      rec->writer_camera = writer_.AddCamera(named.name, outputs, tartanair, depth_unit_m);
+      recordings_.push_back(std::move(rec));
+      info_.push_back(
+          {named, world.vehicle(vehicle).name(), {}, outputs, tartanair, depth_unit_m, 0, 0});
+      cameras.push_back(recordings_.size() - 1);
+    }
+    image->set_sample_gate([this, cameras](engine::TimeNs now_ns) {
+      bool any = false;  // every stream is numbered, whichever this run writes
+      for (std::size_t c : cameras) any = TakeFrame(c, now_ns) || any;
+      return any;
+    });
+    image->AddListener([this, cameras, image](const engine::Sensor&) {
+      for (std::size_t k = 0; k < cameras.size(); ++k) OnFrame(cameras[k], image->latest(k));
+    });
   }
   for (const std::string& name : options_.cameras) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
@@ -129,25 +184,94 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
 
 DatasetRecorder::~DatasetRecorder() = default;
 
-void DatasetRecorder::SetCapture(const engine::CaptureStep& capture) {
-  recording_ = capture.enabled;
-  // Cameras render only while recording.
-  for (engine::Sensor* sensor : image_sensors_) sensor->set_enabled(capture.enabled);
-  only_ = capture.cameras;
-  capture_rate_hz_ = capture.rate_hz;
-  for (auto& rec : recordings_) {
-    rec->capture_schedule.reset();
-    if (capture.enabled && capture.rate_hz > 0.0) rec->capture_schedule.emplace(capture.rate_hz, 0);
+void DatasetRecorder::PlanCaptures(const engine::Mission& mission,
+                                   const std::vector<std::size_t>& vehicles) {
+  AIRIS_DEMAND(vehicles.size() == mission.tracks.size());
+  for (CameraInfo& info : info_) info.capture_rates_hz.clear();
+  for (std::size_t t = 0; t < mission.tracks.size(); ++t) {
+    const engine::MissionTrack& track = mission.tracks[t];
+    const VehicleCameras& own = vehicles_[vehicles[t]];
+    const std::string& vehicle = world_.vehicle(vehicles[t]).name();
+    for (std::size_t i = 0; i < track.steps.size(); ++i) {
+      const engine::CaptureStep* capture = track.steps[i].As<engine::CaptureStep>();
+      if (!capture) continue;
+      engine::SourceLocation where = track.steps[i].where;
+      if (where.file.empty()) where.file = mission.file;
+      const std::string path = (track.key_path.empty() ? "" : track.key_path + ".") + "steps[" +
+                               std::to_string(i) + "].capture";
+      if (own.names.empty()) {
+        throw engine::ConfigError(where, path,
+                                  "vehicle '" + vehicle +
+                                      "' has no camera to record (a capture step records the "
+                                      "cameras of its track's vehicle)");
+      }
+      for (std::size_t j = 0; j < capture->cameras.size(); ++j) {
+        const std::string& name = capture->cameras[j];
+        if (std::find(own.names.begin(), own.names.end(), name) != own.names.end()) continue;
+        std::string problem = "vehicle '" + vehicle + "' has no camera '" + name + "'";
+        if (const auto close = engine::ClosestMatch(name, own.names)) {
+          problem += " (did you mean '" + *close + "'?)";
+        } else {
+          std::string all;
+          for (const auto& n : own.names) all += (all.empty() ? "" : ", ") + n;
+          problem += " (it has " + all + ")";
+        }
+        throw engine::ConfigError(where, path + ".cameras[" + std::to_string(j) + "]", problem);
+      }
+      if (!capture->enabled) continue;
+      for (std::size_t c = 0; c < recordings_.size(); ++c) {
+        const Recording& rec = *recordings_[c];
+        if (rec.vehicle != vehicles[t] || !Selects(capture->cameras, rec.own_name, rec.own_rig))
+          continue;
+        CameraInfo& info = info_[c];
+        const double camera_hz = info.stream.rate_hz;
+        const std::int64_t every = FramesPerCapture(camera_hz, capture->rate_hz);
+        if (every < 1) {
+          std::string rates;
+          for (int n = 1; n <= 5; ++n) rates += ShortNumber(camera_hz / n) + ", ";
+          throw engine::ConfigError(
+              where, path + ".rate_hz",
+              "camera '" + rec.own_name + "' of vehicle '" + vehicle + "' renders at " +
+                  engine::FormatNumber(camera_hz) +
+                  " Hz and a capture takes every n-th frame, so the rate must be " +
+                  engine::FormatNumber(camera_hz) + " Hz / n (" + rates + "... Hz) (got " +
+                  engine::FormatNumber(capture->rate_hz) + ")");
+        }
+        const double rate_hz = camera_hz / static_cast<double>(every);
+        auto& rates = info.capture_rates_hz;
+        if (std::find(rates.begin(), rates.end(), rate_hz) == rates.end()) rates.push_back(rate_hz);
+      }
+    }
   }
 }
 
-bool DatasetRecorder::TakeFrame(std::size_t camera, engine::TimeNs now_ns) {
+void DatasetRecorder::SetCapture(std::size_t vehicle, const engine::CaptureStep& capture) {
+  VehicleCameras& own = vehicles_.at(vehicle);
+  own.on = capture.enabled;
+  own.only = capture.cameras;
+  // Cameras render only while recording.
+  for (engine::Sensor* sensor : own.sensors) sensor->set_enabled(capture.enabled);
+  for (std::size_t c = 0; c < recordings_.size(); ++c) {
+    Recording& rec = *recordings_[c];
+    if (rec.vehicle != vehicle) continue;
+    rec.every = capture.enabled ? FramesPerCapture(info_[c].stream.rate_hz, capture.rate_hz) : 1;
+    AIRIS_DEMAND(rec.every >= 1);  // PlanCaptures refused the rates a camera cannot give
+  }
+}
+
+bool DatasetRecorder::recording() const {
+  return std::any_of(vehicles_.begin(), vehicles_.end(),
+                     [](const VehicleCameras& v) { return v.on; });
+}
+
+bool DatasetRecorder::TakeFrame(std::size_t camera, engine::TimeNs) {
   Recording& rec = *recordings_[camera];
   rec.pending = -1;
-  if (!recording_) return false;
-  const std::string& name = info_[camera].stream.name;
-  if (!only_.empty() && std::find(only_.begin(), only_.end(), name) == only_.end()) return false;
-  if (rec.capture_schedule && rec.capture_schedule->ConsumeDue(now_ns) == 0) return false;
+  const VehicleCameras& own = vehicles_[rec.vehicle];
+  if (!own.on || !Selects(own.only, rec.own_name, rec.own_rig)) return false;
+  // The sensor's k-th frame (k counted from 0 at t = 0) is due at ceil(k / rate): every n-th is
+  // due at exact multiples of the capture period.
+  if ((rec.sensor->schedule().count() - 1) % rec.every != 0) return false;
   const std::int64_t index = rec.next_frame++;
   if (index % options_.shard_count != options_.shard_index) return false;  // another shard's frame
   rec.pending = index;
@@ -256,6 +380,11 @@ void DatasetRecorder::WriteLabels() const {
   nlohmann::json& instances = labels["instances"] = nlohmann::json::array();
   for (const auto& o : scene.objects) {
     instances.push_back({{"id", o.instance_id}, {"class_id", o.class_id}, {"name", o.name}});
+  }
+  // The vehicles, named as in the scene; "vehicle" tells them from static objects.
+  for (const auto& b : scene.vehicle_bodies) {
+    instances.push_back(
+        {{"id", b.instance_id}, {"class_id", b.class_id}, {"name", b.name}, {"vehicle", true}});
   }
   engine::WriteFileAtomically(options_.root / "labels.json", labels.dump(1));
 }

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +18,13 @@ namespace airis::tools {
 /// Records the frames of a world's image sensors into a dataset folder while a mission runs
 /// (docs/dataset-format.md): frames go to a DatasetWriter (worker threads, bounded queue), poses to
 /// <camera>/poses.csv; Finish writes coco_instances.json per camera, labels.json and preview.png.
-/// Each image stream is one dataset camera (a stereo pair's are <name>_left and <name>_right).
-/// Recording is on between the mission's capture steps. Sensors render only the frames this run
-/// records: a shard (K of N) records frame indices i with i % N == K - 1 of every camera, and skips
-/// rendering the others. It knows sensors only through engine::ImageSensor.
+/// Each image stream is one dataset camera (a stereo pair's are <name>_left and <name>_right),
+/// named as engine::CalcDatasetNamePrefixes says (a name two vehicles use gets the vehicle's
+/// prefix: drone1_front). A vehicle's cameras record between the capture steps of its mission
+/// track, each at its own rate or at a capture rate that is its rate divided by a whole number
+/// (every n-th frame: frames at exact multiples of the capture period). Sensors render only the
+/// frames this run records: a shard (K of N) records frame indices i with i % N == K - 1 of every
+/// camera, and skips rendering the others. It knows sensors only through engine::ImageSensor.
 class DatasetRecorder {
  public:
   struct Options {
@@ -36,8 +38,11 @@ class DatasetRecorder {
   };
   /// A dataset camera as the manifest describes it.
   struct CameraInfo {
-    engine::ImageStream stream;  ///< name, intrinsics, rate, mount
+    engine::ImageStream stream;  ///< its dataset name (and rig), intrinsics, rate, mount
     std::string vehicle;
+    /// The rates its frames are recorded at (Hz), one per distinct rate of the capture steps that
+    /// record it (PlanCaptures), in mission order.
+    std::vector<double> capture_rates_hz;
     engine::DatasetOutputs outputs;   ///< the files it writes per frame
     engine::TartanAirSlot tartanair;  ///< its place in the TartanAir layout (outputs.tartanair)
     double depth_unit_m = 0.001;      ///< of its depth PNGs (ChooseDepthUnit_m of its far plane)
@@ -45,12 +50,23 @@ class DatasetRecorder {
     std::int64_t clipped_depth_pixels = 0;  ///< beyond the depth PNG's range (after Finish)
   };
 
-  /// Subscribes to the cameras. Throws ConfigError("--cameras") naming an unknown camera.
+  /// Subscribes to the cameras. Throws ConfigError("--cameras") naming an unknown camera (by its
+  /// dataset name).
   DatasetRecorder(engine::World& world, const Options& options);
   ~DatasetRecorder();
 
-  /// Starts or stops recording (mission capture step); rate_hz > 0 subsamples the cameras' frames.
-  void SetCapture(const engine::CaptureStep& capture);
+  /// Checks the capture steps of every track of `mission` (flown by world vehicles `vehicles`, one
+  /// per track) against the cameras of its vehicle, and notes the rates each camera records at
+  /// (CameraInfo::capture_rates_hz). Throws ConfigError at the step (file:line:col and key path)
+  /// for a camera the vehicle lacks, a vehicle without cameras, or a capture rate a camera cannot
+  /// give exactly (its rate divided by a whole number). Call before the flight.
+  void PlanCaptures(const engine::Mission& mission, const std::vector<std::size_t>& vehicles);
+
+  /// Starts or stops recording of vehicle `vehicle`'s cameras (a capture step of its track);
+  /// rate_hz > 0 records every n-th frame (as PlanCaptures checked).
+  void SetCapture(std::size_t vehicle, const engine::CaptureStep& capture);
+  /// True while some vehicle's cameras record.
+  bool recording() const;
   /// Waits for every frame, then writes each camera's poses.csv and COCO file (listing only the
   /// frames whose files were written), checksums.csv, labels.json and preview.png.
   void Finish();
@@ -71,15 +87,20 @@ class DatasetRecorder {
   void WriteLabels() const;
   void WritePoses(const Recording& rec, const std::filesystem::path& path) const;
 
+  // A vehicle's image sensors and what its track's last capture step asked of them.
+  struct VehicleCameras {
+    std::vector<engine::Sensor*> sensors;  // every one (switched with recording)
+    std::vector<std::string> names;        // their own names and their streams'
+    bool on = false;
+    std::vector<std::string> only;  // the capture step's camera filter (empty: all)
+  };
+
   engine::World& world_;
   Options options_;
   engine::DatasetWriter writer_;
   std::vector<CameraInfo> info_;
   std::vector<std::unique_ptr<Recording>> recordings_;
-  std::vector<engine::Sensor*> image_sensors_;  // every one of the world (switched with recording)
-  bool recording_ = false;
-  std::vector<std::string> only_;  // capture-step camera filter (empty: all)
-  double capture_rate_hz_ = 0.0;
+  std::vector<VehicleCameras> vehicles_;  // by world vehicle index
   std::vector<std::string> redone_;
 };
 

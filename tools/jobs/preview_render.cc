@@ -83,7 +83,7 @@ PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOp
   outputs.rgb = outputs.depth_perspective = outputs.segmentation = true;
   engine::CameraRenderer renderer(context, k, outputs);
   engine::CameraFrame frame;
-  renderer.Render(gpu, result.T_WC, 0, frame);
+  renderer.Render(gpu, result.T_WC, 0, frame, {options.body_poses_W, options.hidden_body});
   result.gl_renderer = context.gl_renderer();
   result.triangles = renderer.last_triangles();
 
@@ -96,24 +96,55 @@ PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOp
   return result;
 }
 
+PreviewResult RenderPreviewPng(const SimulationJob& job, PreviewOptions options,
+                               const std::string& png_path) {
+  if (options.body_poses_W.empty()) job.world().CalcVehiclePoses(options.body_poses_W);
+  return RenderPreviewPng(job.world().scene(), options, png_path);
+}
+
 PreviewOptions PreviewOfImageStream(const SimulationJob& job, const std::string& name) {
   const engine::World& world = job.world();
-  std::string names;
+  // Cameras go by their dataset names: a name two vehicles use is prefixed with the vehicle's.
+  std::vector<engine::ImageSensorNames> sensors;
   for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
     for (const auto& sensor : world.sensors(v)) {
       const engine::ImageSensor* image = sensor->image();
       if (!image) continue;
+      sensors.push_back({world.vehicle(v).name(), image->name(), {}});
+      for (const engine::ImageStream& s : image->streams())
+        sensors.back().streams.push_back(s.name);
+    }
+  }
+  const std::vector<std::string> prefixes = engine::CalcDatasetNamePrefixes(sensors);
+  std::string names;
+  std::string eyes;  // of a stereo pair named `name`
+  std::size_t k = 0;
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    for (const auto& sensor : world.sensors(v)) {
+      const engine::ImageSensor* image = sensor->image();
+      if (!image) continue;
+      const std::string& prefix = prefixes[k++];
       for (const engine::ImageStream& stream : image->streams()) {
-        names += (names.empty() ? "" : ", ") + stream.name;
-        if (stream.name != name) continue;
+        names += (names.empty() ? "" : ", ") + prefix + stream.name;
+        if (prefix + stream.rig == name && stream.name != stream.rig) {
+          eyes += (eyes.empty() ? "" : " or ") + prefix + stream.name;
+        }
+        if (prefix + stream.name != name) continue;
         PreviewOptions preview;
         preview.T_WC = engine::CalcImageStreamPose(stream, &world.vehicle(v).state());
         preview.intrinsics = stream.intrinsics;
         preview.width_px = stream.intrinsics.width_px;
         preview.height_px = stream.intrinsics.height_px;
+        world.CalcVehiclePoses(preview.body_poses_W);
+        preview.hidden_body = engine::CalcHiddenVehicle(stream, v);
         return preview;
       }
     }
+  }
+  if (!eyes.empty()) {
+    throw engine::ConfigError({}, "--camera",
+                              "'" + name + "' is a stereo pair: preview one of its eyes, " + eyes +
+                                  " (as datasets name them)");
   }
   throw engine::ConfigError({}, "--camera",
                             "no camera '" + name + "' in " + job.scene().path + " (it has " +

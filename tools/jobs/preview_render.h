@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/core/camera_model.h"
 #include "engine/scene/static_scene.h"
@@ -24,6 +25,9 @@ struct PreviewOptions {
   /// A scene camera's exact pose and intrinsics (PreviewOfImageStream); they replace the above.
   std::optional<Eigen::Isometry3d> T_WC;
   std::optional<engine::CameraIntrinsics> intrinsics;
+  /// Where the vehicles are (T_WB of StaticScene::vehicle_bodies[k]); none drawn when empty.
+  std::vector<Eigen::Isometry3d> body_poses_W;
+  int hidden_body = -1;  ///< the vehicle left out (a camera's own), -1 for none
 };
 
 /// What a preview rendered.
@@ -40,12 +44,19 @@ struct PreviewResult {
 PreviewResult RenderPreviewPng(const engine::StaticScene& scene, const PreviewOptions& options,
                                const std::string& png_path);
 
+/// As above for the scene of `job`, its vehicles drawn where its world has them (at their start
+/// poses before a flight) unless `options` places them.
+PreviewResult RenderPreviewPng(const SimulationJob& job, PreviewOptions options,
+                               const std::string& png_path);
+
 /// The default bird's-eye pose for `scene` (see PreviewOptions::camera_position_m).
 Eigen::Isometry3d CalcBirdsEyePose(const engine::StaticScene& scene, double hfov_deg,
                                    double aspect);
 
 /// The preview of image stream `name` (a camera's name, or a stereo eye's `<name>_left` /
-/// `<name>_right`, as datasets name them) from its vehicle's start pose, with its own intrinsics.
+/// `<name>_right`, as datasets name them: prefixed with its vehicle's name when another vehicle
+/// has a camera of the same name, engine::CalcDatasetNamePrefixes) from its vehicle's start pose,
+/// with its own intrinsics, leaving out its own vehicle's body as the camera does.
 /// Throws ConfigError("--camera") naming the streams the scene has when there is no such stream.
 PreviewOptions PreviewOfImageStream(const SimulationJob& job, const std::string& name);
 

@@ -15,7 +15,7 @@ RunJobResult RunMissionJob(const RunJobOptions& o,
   CheckPacingOptions(o.realtime, o.truth_rate_hz);
   SimulationJob job(o.scene, o.threads);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
-  job.MissionVehicle(mission);  // a mission without its vehicle fails before anything is written
+  job.MissionVehicles(mission);  // a track without its vehicle fails before anything is written
   job.DisableImageSensors();
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written
 
@@ -31,14 +31,13 @@ RunJobResult RunMissionJob(const RunJobOptions& o,
     if (o.realtime) pacer.WaitFor(now_ns);
   };
   flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
-    if (telemetry) telemetry->RecordMissionEvent(e.time_ns, e.step_index, e.step_kind, e.what);
+    if (telemetry) {
+      telemetry->RecordMissionEvent(e.time_ns, e.vehicle, e.step_index, e.step_kind, e.what);
+    }
   };
   RunJobResult r;
   r.mission = job.FlyMission(mission, flight);
-  if (telemetry) {
-    telemetry->Close();
-    r.collisions = telemetry->collision_count();
-  }
+  if (telemetry) telemetry->Close();
   r.wall_s = job.wall_s();
   return r;
 }

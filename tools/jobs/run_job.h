@@ -28,9 +28,8 @@ struct RunJobOptions {
 
 /// What a finished `airis run` job did.
 struct RunJobResult {
-  MissionOutcome mission;
-  std::int64_t collisions = 0;  ///< collision events logged (0 without a log)
-  double wall_s = 0.0;          ///< loading, flying and writing
+  MissionOutcome mission;  ///< with its contacts and collisions
+  double wall_s = 0.0;     ///< loading, flying and writing
 };
 
 /// Runs the job. Image sensors stay off (their poses are in the telemetry; `airis dataset` records

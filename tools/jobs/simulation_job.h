@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/core/clock.h"
 #include "engine/mission/mission.h"
@@ -23,37 +24,59 @@ struct SceneSource {
   std::string path;  ///< the scene file (YAML); with `text`, the name used in messages
   std::string text;  ///< YAML text used instead of reading `path` (the Python API, tests)
   std::optional<std::uint64_t> seed;  ///< replaces scene.seed before any generator runs
+  /// Keys of the scene replaced before it is validated (`--set`; scenes::ApplySceneOverrides).
+  std::vector<scenes::SceneOverride> overrides = {};
 };
 
-/// Loads `source`'s scene with its seed applied before generators run. Throws ConfigError naming
-/// file, line and key for bad input.
+/// Loads `source`'s scene with its overrides, and its seed applied before generators run. Throws
+/// ConfigError naming file, line and key (or the override) for bad input.
 scenes::Scene LoadSceneSource(const SceneSource& source);
 
 /// Where a running job is (for progress lines). Fields a job does not track stay at their defaults.
+/// With several tracks, the step fields and the position are those of the first track still
+/// flying.
 struct JobProgress {
-  int step = 0;                                    ///< mission step being flown, 1-based
-  int steps = 0;                                   ///< steps in the mission
+  std::string vehicle;                             ///< the vehicle of that track
+  int step = 0;                                    ///< its step being flown, 1-based
+  int steps = 0;                                   ///< steps in its track
   std::string step_kind;                           ///< "takeoff", "survey", ...
   double simulated_s = 0;                          ///< simulated time so far
   double wall_s = 0;                               ///< wall time since the job started
-  engine::Vec3 position_W = engine::Vec3::Zero();  ///< the mission vehicle, world NED (m)
+  engine::Vec3 position_W = engine::Vec3::Zero();  ///< the track's vehicle, world NED (m)
   std::int64_t frames = 0;                         ///< dataset frames written so far
   /// Wall seconds still to go, from the share of the mission's nominal duration flown so far; < 0
   /// while unknown (the first 2% and past the nominal end).
   double eta_s = -1;
 };
 
-/// How a mission flight ended.
-struct MissionOutcome {
-  /// kRunning when stopped early: by `until_ns`, or by a signal (interrupted_by)
+/// How one vehicle's track of a mission went.
+struct TrackOutcome {
+  std::string vehicle;
   engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;
-  int interrupted_by = 0;  ///< the signal that stopped the flight (SIGINT, ...), 0 if none
-  std::string failure;     ///< why it failed ("file:line: step 3 (goto): ...")
   int steps_done = 0;
   int steps = 0;
   double distance_flown_m = 0.0;
   double max_tracking_error_m = 0.0;
-  double simulated_s = 0.0;  ///< the clock at the end
+  int contacts = 0;    ///< touches that began between the vehicle and anything (landings too)
+  int collisions = 0;  ///< of those, the collisions (docs/mission-format.md)
+};
+
+/// How a mission flight ended. The totals are over its tracks.
+struct MissionOutcome {
+  /// kRunning when stopped early: by `until_ns`, or by a signal (interrupted_by)
+  engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;
+  int interrupted_by = 0;  ///< the signal that stopped the flight (SIGINT, ...), 0 if none
+  /// Why it failed ("file:line: vehicle 'drone1' step 3 (goto): ..."): the first track to fail
+  std::string failure;
+  bool ended_by_collision = false;  ///< that failure was a collision
+  int steps_done = 0;
+  int steps = 0;
+  double distance_flown_m = 0.0;
+  double max_tracking_error_m = 0.0;  ///< the largest of any track
+  int contacts = 0;
+  int collisions = 0;
+  double simulated_s = 0.0;          ///< the clock at the end
+  std::vector<TrackOutcome> tracks;  ///< in the mission's order
   bool succeeded() const { return state == engine::MissionRunner::State::kSucceeded; }
 };
 
@@ -85,26 +108,32 @@ class SimulationJob {
   engine::World& world() { return simulation_->world(); }
   const engine::World& world() const { return simulation_->world(); }
 
-  /// Index of the vehicle that flies `mission`: the one it names, or the scene's first. Throws
-  /// ConfigError naming the mission file when there is none (listing the scene's vehicles).
-  std::size_t MissionVehicle(const engine::Mission& mission) const;
+  /// Index of the vehicle that flies each track of `mission`, in order: the one it names, or the
+  /// scene's first. Throws ConfigError at the track's vehicle in the mission file when the scene
+  /// has no such vehicle (listing the scene's vehicles).
+  std::vector<std::size_t> MissionVehicles(const engine::Mission& mission) const;
 
   /// Switches off every image sensor (a job that records no images does not render).
   void DisableImageSensors();
 
-  /// A session that flies `mission` with its vehicle in this job's simulation when run
-  /// (MissionSession::Run), drawing from the scene seed's "mission" stream; FlyMission runs one.
-  /// For front ends that step the flight themselves (the Python API). Throws as MissionVehicle.
+  /// A session that flies every track of `mission` with its vehicle in this job's simulation when
+  /// run (MissionSession::Run); FlyMission runs one. Each track draws from its own stream of the
+  /// scene seed: "mission" for the single-vehicle form, "mission/<vehicle>" for each track of the
+  /// per-vehicle form. For front ends that step the flight themselves (the Python API). Throws as
+  /// MissionVehicles.
   std::unique_ptr<engine::MissionSession> StartMission(
       const engine::Mission& mission, engine::MissionSession::Callbacks callbacks = {});
 
-  /// Flies `mission` with its vehicle until it succeeds, fails or the clock reaches
-  /// `flight.until_ns`. The mission's random stream is the scene seed's "mission" stream. Throws
-  /// SimulationError (prefixed with the step) when the simulation diverges.
+  /// Flies every track of `mission` (StartMission) until all succeed, one fails or the clock
+  /// reaches `flight.until_ns`. Throws SimulationError (prefixed with the step) when the simulation
+  /// diverges.
   MissionOutcome FlyMission(const engine::Mission& mission, const MissionFlight& flight);
 
   /// Wall seconds since the job was constructed.
   double wall_s() const;
+
+  /// Where `session` (flying in this job) is now, for a progress line.
+  JobProgress Progress(const engine::MissionSession& session) const;
 
  private:
   std::chrono::steady_clock::time_point wall_start_;

@@ -45,6 +45,7 @@ std::vector<std::string> DatasetOptionWords(const DatasetOptionValues& v) {
     if (!value.empty() && value != default_value) words.insert(words.end(), {flag, value});
   };
   add("--seed", v.seed, "");
+  for (const std::string& text : v.overrides) add("--set", text, "");
   add("--cameras", v.cameras, "");
   add("--formats", v.formats, "");
   add("--streams", v.streams, "capture");
@@ -53,6 +54,14 @@ std::vector<std::string> DatasetOptionWords(const DatasetOptionValues& v) {
   add("--workers", v.workers, "2");
   add("--threads", v.threads, "1");
   return words;
+}
+
+std::vector<std::string> SceneOverrideWords(const std::vector<std::string>& options) {
+  std::vector<std::string> texts;
+  for (std::size_t i = 0; i + 1 < options.size(); ++i) {
+    if (options[i] == "--set") texts.push_back(options[++i]);
+  }
+  return texts;
 }
 
 void SlurmResources::Validate() const {

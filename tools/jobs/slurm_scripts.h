@@ -24,19 +24,24 @@ struct DatasetCommand {
 /// empty = not given). DatasetOptionWords writes them in one order, so that the command of a
 /// resubmission and the recorded one compare equal word for word.
 struct DatasetOptionValues {
-  std::string seed;                ///< --seed
-  std::string cameras;             ///< --cameras a,b
-  std::string formats;             ///< --formats npy,normals,tartanair
-  std::string streams;             ///< --streams (capture, the default, is left out)
-  std::string stream_format;       ///< --stream-format (npy, the default, is left out)
-  std::string min_object_area_px;  ///< --min-object-area-px (16, the default, is left out)
-  std::string workers;             ///< --workers (2, the default, is left out)
-  std::string threads;             ///< --threads (1, the default, is left out)
+  std::string seed;                    ///< --seed
+  std::vector<std::string> overrides;  ///< --set KEY=VALUE each (sorted: ParseSceneOverrides)
+  std::string cameras;                 ///< --cameras a,b
+  std::string formats;                 ///< --formats npy,normals,tartanair
+  std::string streams;                 ///< --streams (capture, the default, is left out)
+  std::string stream_format;           ///< --stream-format (npy, the default, is left out)
+  std::string min_object_area_px;      ///< --min-object-area-px (16, the default, is left out)
+  std::string workers;                 ///< --workers (2, the default, is left out)
+  std::string threads;                 ///< --threads (1, the default, is left out)
 };
 
-/// {"--seed", "7", "--formats", "npy", ...}: the options of `values` that are given and not the
-/// default, in the order of DatasetOptionValues.
+/// {"--seed", "7", "--set", "scene.lighting.ambient=0.5", "--formats", "npy", ...}: the options of
+/// `values` that are given and not the default, in the order of DatasetOptionValues.
 std::vector<std::string> DatasetOptionWords(const DatasetOptionValues& values);
+
+/// The scene overrides among `options` (the word after each "--set"), for loading the scene the
+/// tasks will load.
+std::vector<std::string> SceneOverrideWords(const std::vector<std::string>& options);
 
 /// What each task asks Slurm for. Empty strings leave Slurm's (the site's) defaults.
 struct SlurmResources {

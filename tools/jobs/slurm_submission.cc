@@ -163,7 +163,9 @@ std::string SlurmDatasetCommandLine(const SlurmDatasetPlan& plan) {
 }
 
 void CheckDatasetInputs(const SlurmDatasetPlan& plan) {
-  scenes::LoadScene(plan.dataset.scene);
+  scenes::SceneLoadOptions load;
+  load.overrides = scenes::ParseSceneOverrides(SceneOverrideWords(plan.dataset.options));
+  scenes::LoadScene(plan.dataset.scene, load);
   scenes::LoadMissionFile(plan.dataset.mission);
 }
 

@@ -47,7 +47,8 @@ std::string SlurmDatasetCommandLine(const SlurmDatasetPlan& plan);
 /// Every job id of the record: each array and each merge job.
 std::vector<std::string> RecordedJobs(const SlurmRecord& record);
 
-/// Loads the plan's scene and mission (not its world: no rendering), so that a mistake in them
+/// Loads the plan's scene (with its --set overrides) and mission (not its world: no rendering), so
+/// that a mistake in them
 /// stops the submission with file:line:col instead of failing N tasks on the cluster. Throws
 /// ConfigError.
 void CheckDatasetInputs(const SlurmDatasetPlan& plan);

@@ -81,8 +81,13 @@ py::object Capture(CameraHandle& cam) {
   PythonSimulation& sim = *cam.sensor.sim;
   engine::World& w = sim.world();
   const std::size_t v = cam.sensor.vehicle;
-  const engine::SensorContext context{sim.simulation().clock().now_ns(), &w.vehicle(v).state(),
-                                      &w.accelerations(v), &w.environment(), w.ray_caster()};
+  const engine::SensorContext context{sim.simulation().clock().now_ns(),
+                                      &w.vehicle(v).state(),
+                                      &w.accelerations(v),
+                                      &w.environment(),
+                                      w.ray_caster(),
+                                      &w,
+                                      v};
   sensor.Capture(context, *cam.last);
   std::vector<FrameHandle> frames;
   for (std::size_t i = 0; i < streams.size(); ++i) frames.push_back({cam.last, i, streams[i]});

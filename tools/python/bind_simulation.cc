@@ -7,10 +7,12 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/frames.h"
 #include "engine/dataset/telemetry_recorder.h"
+#include "scenes/scene_overrides.h"
 #include "tools/python/bindings.h"
 #include "tools/python/handles.h"
 
@@ -110,17 +112,41 @@ py::dict CollisionDict(const engine::CollisionEvent& e) {
   return d;
 }
 
+// One track of the mission in flight.
+py::dict TrackDict(const engine::MissionSession& s, std::size_t t) {
+  const engine::MissionRunner& r = s.runner(t);
+  py::dict d;
+  d["vehicle"] = r.track().vehicle;
+  d["state"] = StateName(r.state());
+  d["failure"] = r.failure();
+  d["step"] = r.current_step();
+  d["steps"] = static_cast<int>(r.track().steps.size());
+  d["distance_flown_m"] = s.distance_flown_m(t);
+  d["contacts"] = r.contacts();
+  d["collisions"] = r.collisions();
+  return d;
+}
+
+// The mission as a whole, with "vehicle", "step", "steps" and "distance_flown_m" of its first
+// track (the only one of a single-vehicle mission) and every track in "tracks".
 py::dict MissionDict(PythonSimulation& sim) {
   const engine::MissionSession& s = sim.session();
-  py::dict d;
-  d["state"] = StateName(s.runner().state());
-  d["succeeded"] = s.runner().state() == engine::MissionRunner::State::kSucceeded;
-  d["failure"] = s.runner().failure();
-  d["step"] = s.runner().current_step();
-  d["steps"] = static_cast<int>(s.runner().mission().steps.size());
-  d["distance_flown_m"] = s.distance_flown_m();
+  py::dict d = TrackDict(s, 0);
+  d["state"] = StateName(s.state());
+  d["succeeded"] = s.state() == engine::MissionRunner::State::kSucceeded;
+  d["failure"] = s.failure();
   d["time_s"] = sim.simulation().clock().now_s();
-  d["vehicle"] = sim.world().vehicle(sim.mission_vehicle()).name();
+  int contacts = 0;
+  int collisions = 0;
+  py::list tracks;
+  for (std::size_t t = 0; t < s.track_count(); ++t) {
+    contacts += s.runner(t).contacts();
+    collisions += s.runner(t).collisions();
+    tracks.append(TrackDict(s, t));
+  }
+  d["contacts"] = contacts;
+  d["collisions"] = collisions;
+  d["tracks"] = tracks;
   return d;
 }
 
@@ -303,13 +329,16 @@ void BindSimulation(py::module_& m) {
 
   py::class_<PythonSimulation, std::shared_ptr<PythonSimulation>>(m, "_Simulation")
       .def(py::init([](const std::string& path, const std::string& text,
-                       std::optional<std::uint64_t> seed, std::size_t max_samples, int threads) {
+                       std::optional<std::uint64_t> seed, std::size_t max_samples,
+                       const std::vector<std::string>& overrides, int threads) {
              if (max_samples < 1) throw py::value_error("max_samples: must be >= 1");
-             return std::make_shared<PythonSimulation>(tools::SceneSource{path, text, seed},
-                                                       max_samples, threads);
+             return std::make_shared<PythonSimulation>(
+                 tools::SceneSource{path, text, seed, scenes::ParseSceneOverrides(overrides)},
+                 max_samples, threads);
            }),
            py::arg("path"), py::arg("text") = "", py::arg("seed") = py::none(),
-           py::arg("max_samples") = 100000, py::arg("threads") = 1)
+           py::arg("max_samples") = 100000, py::arg("overrides") = std::vector<std::string>{},
+           py::arg("threads") = 1)
       .def_property_readonly("threads",
                              [](PythonSimulation& s) { return s.simulation().threads(); })
       .def_property_readonly("time_ns",

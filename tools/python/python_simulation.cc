@@ -67,14 +67,12 @@ std::int64_t PythonSimulation::RunTicks(std::int64_t ticks,
 }
 
 void PythonSimulation::StartMission(const std::string& mission_file) {
-  const engine::Mission mission = scenes::LoadMissionFile(mission_file);
-  const std::size_t vehicle = job_.MissionVehicle(mission);
-  std::unique_ptr<engine::MissionSession> session = job_.StartMission(mission);
+  std::unique_ptr<engine::MissionSession> session =
+      job_.StartMission(scenes::LoadMissionFile(mission_file));
   // A session listens to the world's collisions for as long as the world lives, so a mission that
   // is replaced stays allocated (retired) instead of being destroyed.
   if (session_) retired_sessions_.push_back(std::move(session_));
   session_ = std::move(session);
-  mission_vehicle_ = vehicle;
 }
 
 engine::MissionRunner::State PythonSimulation::RunMission(

@@ -39,26 +39,24 @@ class PythonSimulation {
   std::int64_t collisions_dropped(std::size_t vehicle) const { return dropped_[vehicle]; }
   static constexpr std::size_t kMaxCollisions = 100000;
 
-  /// Runs `ticks` ticks; while a mission is flying they go through it (its runner sets the
-  /// vehicle's command before each tick). `should_stop`, when given, is asked every
+  /// Runs `ticks` ticks; while a mission is flying they go through it (its runners set their
+  /// vehicles' commands before each tick). `should_stop`, when given, is asked every
   /// kCheckEveryTicks ticks; when it returns true the run stops there (a Python signal handler
   /// throws from it instead). Returns the ticks run. Throws SimulationError on divergence.
   std::int64_t RunTicks(std::int64_t ticks, const std::function<bool()>& should_stop);
   static constexpr std::int64_t kCheckEveryTicks = 256;
 
-  /// Starts flying `mission_file` (replacing a mission in flight). ConfigError for a bad file or
-  /// one naming no vehicle of the scene.
+  /// Starts flying `mission_file`, every track of it (replacing a mission in flight). ConfigError
+  /// for a bad file or one naming no vehicle of the scene.
   void StartMission(const std::string& mission_file);
   bool has_mission() const { return session_ != nullptr; }
   /// The state of the mission (kRunning while it flies; requires has_mission()).
-  engine::MissionRunner::State mission_state() const { return session_->runner().state(); }
+  engine::MissionRunner::State mission_state() const { return session_->state(); }
   /// Flies the mission until it ends or the clock reaches `until_ns`, asking `should_stop` every
   /// kCheckEveryTicks ticks. Returns the runner's state.
   engine::MissionRunner::State RunMission(engine::TimeNs until_ns,
                                           const std::function<bool()>& should_stop);
   const engine::MissionSession& session() const { return *session_; }
-  /// Index of the vehicle the mission flies.
-  std::size_t mission_vehicle() const { return mission_vehicle_; }
 
  private:
   tools::SimulationJob job_;
@@ -67,7 +65,6 @@ class PythonSimulation {
   std::vector<std::int64_t> dropped_;
   std::unique_ptr<engine::MissionSession> session_;
   std::vector<std::unique_ptr<engine::MissionSession>> retired_sessions_;
-  std::size_t mission_vehicle_ = 0;
 };
 
 }  // namespace airis::python

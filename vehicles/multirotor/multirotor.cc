@@ -198,9 +198,11 @@ double Multirotor::CalcHoverCommand(double air_density_kg_m3, double gravity_m_s
 std::vector<engine::RotorLayout> Multirotor::CalcRotorLayout() const {
   std::vector<engine::RotorLayout> out;
   out.reserve(rotors_.size());
-  for (const Rotor& r : rotors_) {
+  for (std::size_t i = 0; i < rotors_.size(); ++i) {
+    const Rotor& r = rotors_[i];
     engine::RotorLayout l;
     l.position_B_m = r.base_position_B;
+    l.diameter_m = config_.rotors[i].diameter_m;
     l.thrust_axis_B = r.base_direction_B;
     // The reaction torque opposes the spin: a counter-clockwise rotor's is -axis * |torque|.
     l.moment_ratio_m = -r.torque_per_density_signed / r.thrust_per_density;

@@ -41,12 +41,12 @@ std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_
 }  // namespace
 
 void TakeoffStep::Validate() const {
-  RequirePositive("height_above_start_m", altitude_m);
+  RequirePositive("height_above_start_m", height_above_start_m);
   RequireNonNegative("timeout_s", timeout_s);
 }
 
 double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
-  const double z = plan.home_W.z() - altitude_m;
+  const double z = plan.home_W.z() - height_above_start_m;
   const double climb_s = std::abs(z - plan.position_W.z());  // at 1 m/s
   plan.position_W.z() = z;
   return climb_s;
@@ -55,7 +55,7 @@ double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
 std::unique_ptr<ActiveStep> TakeoffStep::Start(const StepContext& c, const VehicleCommand&) const {
   const Vec3& p = c.state->p_W;
   const VehicleCommand hold =
-      HoldCommand(Vec3(p.x(), p.y(), c.home_W.z() - altitude_m), YawOf(*c.state));
+      HoldCommand(Vec3(p.x(), p.y(), c.home_W.z() - height_above_start_m), YawOf(*c.state));
   const Vec3 target = hold.position_W;
   return MakeHold(hold, std::abs(target.z() - p.z()), timeout_s,
                   [target](const StepContext& c, VehicleCommand*) {
@@ -65,13 +65,18 @@ std::unique_ptr<ActiveStep> TakeoffStep::Start(const StepContext& c, const Vehic
 }
 
 void GotoStep::Validate() const {
-  Require(position_ned_m.has_value() != geodetic.has_value(), "position_ned_m",
-          "give exactly one of position_ned_m and geodetic");
+  Require(position_ned_m.has_value() != has_geodetic(), "position_ned_m",
+          "give exactly one target: position_ned_m, or latitude_deg, longitude_deg and "
+          "altitude_m");
   if (position_ned_m) RequireFinite("position_ned_m", *position_ned_m);
-  if (geodetic) {
-    RequireInRange("geodetic[0]", (*geodetic)[0], -90.0, 90.0);
-    RequireInRange("geodetic[1]", (*geodetic)[1], -180.0, 180.0);
-    RequireInRange("geodetic[2]", (*geodetic)[2], -5000.0, 100000.0);
+  if (has_geodetic()) {
+    Require(latitude_deg.has_value(), "latitude_deg", "missing: a geodetic target needs all three");
+    Require(longitude_deg.has_value(), "longitude_deg",
+            "missing: a geodetic target needs all three");
+    Require(altitude_m.has_value(), "altitude_m", "missing: a geodetic target needs all three");
+    RequireInRange("latitude_deg", *latitude_deg, -90.0, 90.0);
+    RequireInRange("longitude_deg", *longitude_deg, -180.0, 180.0);
+    RequireInRange("altitude_m", *altitude_m, -5000.0, 100000.0);
   }
   RequirePositive("speed_m_s", speed_m_s);
   if (yaw_deg) RequireInRange("yaw_deg", *yaw_deg, -360.0, 360.0);
@@ -81,7 +86,7 @@ void GotoStep::Validate() const {
 
 Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame) const {
   if (position_ned_m) return *position_ned_m;
-  return frame.ToNed({DegToRad((*geodetic)[0]), DegToRad((*geodetic)[1]), (*geodetic)[2]});
+  return frame.ToNed({DegToRad(*latitude_deg), DegToRad(*longitude_deg), *altitude_m});
 }
 
 double GotoStep::EstimateDuration_s(StepPlan& plan) const {

@@ -1,6 +1,8 @@
 #include "engine/mission/steps/host_steps.h"
 
 #include <numbers>
+#include <string>
+#include <utility>
 
 namespace airis::engine {
 namespace {
@@ -65,6 +67,26 @@ class RandomPoses final : public ActiveStep {
   int index_ = 0;
 };
 
+class WaitAtBarrier final : public ActiveStep {
+ public:
+  WaitAtBarrier(std::string label, const VehicleCommand& hold)
+      : label_(std::move(label)), hold_(hold) {
+    target_W = hold.position_W;
+  }
+  bool Update(const StepContext& context, VehicleCommand* command) override {
+    *command = hold_;
+    return context.host->ArriveAtBarrier(label_, &waiting_for_);
+  }
+  std::string DescribeUnfinished(const RigidBodyState&) const override {
+    return "waiting at barrier '" + label_ + "' for " + waiting_for_;
+  }
+
+ private:
+  std::string label_;
+  VehicleCommand hold_;
+  std::string waiting_for_;
+};
+
 }  // namespace
 
 void WaitStep::Validate() const { RequireNonNegative("duration_s", duration_s); }
@@ -122,6 +144,29 @@ std::unique_ptr<ActiveStep> SetWindStep::Start(const StepContext&,
     c.host->SetWind(wind);
     return true;
   });
+}
+
+void BarrierStep::Validate() const {
+  RequireName("label", label);
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    const std::string field = "vehicles[" + std::to_string(i) + "]";
+    RequireName(field, vehicles[i]);
+    for (std::size_t j = 0; j < i; ++j) {
+      Require(vehicles[j] != vehicles[i], field, "names '" + vehicles[i] + "' twice");
+    }
+  }
+  RequireNonNegative("timeout_s", timeout_s);
+}
+
+double BarrierStep::EstimateDuration_s(StepPlan&) const {
+  return 0.0;  // the wait depends on the other tracks
+}
+
+std::unique_ptr<ActiveStep> BarrierStep::Start(const StepContext&,
+                                               const VehicleCommand& hold) const {
+  auto step = std::make_unique<WaitAtBarrier>(label, hold);
+  step->timeout_s = timeout_s > 0.0 ? timeout_s : -1.0;  // 0: no limit
+  return step;
 }
 
 }  // namespace airis::engine

@@ -1,7 +1,7 @@
 #pragma once
 
 // Steps that wait or act on the world through the MissionHost rather than fly: wait, capture,
-// random_poses, set_wind (docs/mission-format.md).
+// random_poses, set_wind, barrier (docs/mission-format.md).
 
 #include <memory>
 #include <string>
@@ -75,6 +75,27 @@ struct SetWindStep {
   template <class V>
   void Visit(V& v) {
     v.Field("velocity_ned_m_s", velocity_ned_m_s, "mean wind [north, east, down] (m/s)");
+  }
+  void Validate() const;
+  double EstimateDuration_s(StepPlan& plan) const;
+  std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
+};
+
+/// Wait until the tracks of every named vehicle have reached a barrier of the same label, then go
+/// on together, on the same tick (formations, chase shots). Holds the previous step's target while
+/// it waits. Which barriers can meet is checked before the flight (CheckMissionBarriers).
+struct BarrierStep {
+  static constexpr std::string_view kKind = "barrier";
+  static constexpr bool kNeedsHost = true;
+  std::string label;                  ///< the name the meeting tracks' barriers share
+  std::vector<std::string> vehicles;  ///< the vehicles that meet here; empty = every track's
+  double timeout_s = 0.0;             ///< fail after waiting this long (s); 0 = no limit
+  template <class V>
+  void Visit(V& v) {
+    v.Field("label", label, "the name the barriers of the meeting tracks share");
+    v.Field("vehicles", vehicles,
+            "vehicles whose tracks meet here (this track's own included); empty = every track");
+    v.Field("timeout_s", timeout_s, "fail the mission after waiting this long (s); 0 = no limit");
   }
   void Validate() const;
   double EstimateDuration_s(StepPlan& plan) const;

@@ -181,7 +181,7 @@ void SurveyStep::Validate() const {
   for (std::size_t i = 0; i < polygon_ne_m.size(); ++i) {
     RequireFinite("polygon_ne_m[" + std::to_string(i) + "]", polygon_ne_m[i]);
   }
-  RequirePositive("height_above_start_m", altitude_m);
+  RequirePositive("height_above_start_m", height_above_start_m);
   RequirePositive("spacing_m", spacing_m);
   RequireInRange("heading_deg", heading_deg, -360.0, 360.0);
   RequirePositive("speed_m_s", speed_m_s);
@@ -192,7 +192,8 @@ void SurveyStep::Validate() const {
 std::vector<Vec3> SurveyStep::CalcWaypoints_W(const Vec3& home_W) const {
   std::vector<Vec3> corners;
   for (const Eigen::Vector2d& c : polygon_ne_m) corners.emplace_back(c.x(), c.y(), 0.0);
-  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg), home_W.z() - altitude_m);
+  return CalcLawnmowerWaypoints(corners, spacing_m, DegToRad(heading_deg),
+                                home_W.z() - height_above_start_m);
 }
 
 double SurveyStep::EstimateDuration_s(StepPlan& plan) const {

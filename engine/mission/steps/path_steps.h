@@ -50,7 +50,7 @@ struct SurveyStep {
   static constexpr std::string_view kKind = "survey";
   static constexpr bool kNeedsHost = false;
   std::vector<Eigen::Vector2d> polygon_ne_m;  ///< corners [north, east]; two = a rectangle
-  double altitude_m = 30.0;                   ///< above the start point
+  double height_above_start_m = 30.0;         ///< above the vehicle's start point (m)
   double spacing_m = 20.0;                    ///< distance between lines
   double heading_deg = 0.0;                   ///< direction of the lines (deg from north)
   double speed_m_s = 6.0;
@@ -62,7 +62,7 @@ struct SurveyStep {
     v.Field("polygon_ne_m", polygon_ne_m,
             "corners [north, east] (m); two corners give the rectangle between them");
     v.Renamed("altitude_m", "height_above_start_m");
-    v.Field("height_above_start_m", altitude_m, "height above the start point (m)");
+    v.Field("height_above_start_m", height_above_start_m, "height above the start point (m)");
     v.Field("spacing_m", spacing_m, "distance between survey lines (m)");
     v.Field("heading_deg", heading_deg, "direction of the lines (deg from north)");
     v.Field("speed_m_s", speed_m_s, "speed along the lines (m/s)");
@@ -70,7 +70,7 @@ struct SurveyStep {
     v.Field("timeout_s", timeout_s, "(s); 0 = automatic");
   }
   void Validate() const;
-  /// The lawnmower's waypoints, at `altitude_m` above `home_W`.
+  /// The lawnmower's waypoints, at `height_above_start_m` above `home_W`.
   std::vector<Vec3> CalcWaypoints_W(const Vec3& home_W) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;

@@ -76,6 +76,19 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
     if (c["stuff"].get<bool>()) stuff_names.insert(c["name"].get<std::string>());
   }
   EXPECT_EQ(stuff_names, (std::set<std::string>{"ground", "road", "sidewalk", "water"}));
+  // The scene's vehicle is an instance of its own, after every object, of the thing class drone.
+  std::vector<nlohmann::json> vehicles;
+  for (const auto& i : labels["instances"]) {
+    if (i.value("vehicle", false)) vehicles.push_back(i);
+  }
+  ASSERT_EQ(vehicles.size(), 1u);
+  EXPECT_EQ(vehicles[0]["name"], "drone1");
+  EXPECT_EQ(vehicles[0]["id"].get<std::size_t>(), labels["instances"].size());
+  std::string vehicle_class;
+  for (const auto& c : labels["classes"]) {
+    if (c["id"] == vehicles[0]["class_id"]) vehicle_class = c["name"];
+  }
+  EXPECT_EQ(vehicle_class, "drone");
   const auto coco = nlohmann::json::parse(Bytes(dir / "front/coco_instances.json"));
   EXPECT_EQ(coco["images"].size(), static_cast<std::size_t>(frames));
   std::map<std::int64_t, std::vector<nlohmann::json>> anns_of;

@@ -50,16 +50,32 @@ TEST_P(ExampleMissionTest, FliesToTheEnd) {
       RunAiris(std::string("run scenes/") + scene + " --mission scenes/missions/" + mission);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("mission succeeded"), std::string::npos) << r.out;
+  // Every example ends with a landing: contacts with the ground, none of them a collision.
+  EXPECT_NE(r.out.find("  contacts             "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("  contacts             0\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  collisions           0\n"), std::string::npos) << r.out;
 }
 
 INSTANTIATE_TEST_SUITE_P(Missions, ExampleMissionTest,
                          ::testing::Values(std::pair{"city.yaml", "city_survey.yaml"},
                                            std::pair{"city.yaml", "city_orbit.yaml"},
-                                           std::pair{"forest.yaml", "forest_path.yaml"}),
+                                           std::pair{"forest.yaml", "forest_path.yaml"},
+                                           std::pair{"chase.yaml", "chase.yaml"}),
                          [](const auto& info) {
                            const std::string mission = info.param.second;
                            return mission.substr(0, mission.find('.'));  // city_survey, ...
                          });
+
+TEST(RunCommandTest, AMissionOfSeveralVehiclesSummarisesEachTrack) {
+  const Result r = RunAiris("run scenes/chase.yaml --mission scenes/missions/chase.yaml");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("mission succeeded: 14 of 14 steps done"), std::string::npos) << r.out;
+  for (const char* vehicle : {"drone1", "drone2"}) {
+    EXPECT_NE(r.out.find("  " + std::string(vehicle) + "               succeeded, 7 of 7 steps, "),
+              std::string::npos)
+        << r.out;
+  }
+}
 
 TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
   const fs::path a = FreshDir("a"), b = FreshDir("b");
@@ -144,6 +160,8 @@ TEST(RunCommandTest, FlyingIntoABuildingFailsNamingTheStepAndTheBuilding) {
   EXPECT_NE(r.err.find("(goto): collided with building '"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(" at t = "), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("mission FAILED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  collisions           1 (one ended the run)\n"), std::string::npos)
+      << r.out;
 }
 
 TEST(RunCommandTest, BadInputIsAClearErrorAndExitCodeTwo) {

@@ -131,5 +131,59 @@ TEST(SlurmCommandTest, CampaignDryRunExpandsSeedsAndReportsFileErrors) {
       << e.err;
 }
 
+TEST(SlurmCommandTest, OverridesReachEveryShardTaskAndAreCheckedBeforeSubmitting) {
+  const fs::path out = airis::testing::TestTempDir() / "dry_set";
+  const auto r = Dataset(kCity + " --out " + out.string() +
+                         " --slurm 2 --set 'scene.environment.wind.mean_ned_m_s=[5,0,0]' "
+                         "--set scene.lighting.fog_distance_m=300 --dry-run");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // sorted by key, normal spelling, shell-quoted where the shell would split
+  const std::string expected =
+      " --set 'scene.environment.wind.mean_ned_m_s=[5, 0, 0]' --set "
+      "scene.lighting.fog_distance_m=300 \\\n  --out \"$out\" --shard \"$k/2\" $resume\n";
+  EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\nnot in\n" << r.out;
+
+  const auto bad = Dataset(kCity + " --out " + out.string() +
+                           " --slurm 2 --set scene.lighting.fog_distanse_m=300 --dry-run");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err,
+            "error: --set scene.lighting.fog_distanse_m=300: scene.lighting.fog_distanse_m: "
+            "unknown key 'fog_distanse_m' (did you mean 'fog_distance_m'?)\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(SlurmCommandTest, CampaignSetExpandsIntoOneDatasetPerValueAndSeed) {
+  const std::string root = fs::current_path().string();
+  const fs::path file = airis::testing::WriteTempFile(
+      "train_set.yaml", "name: train\ndatasets:\n  - name: survey\n    scene: " + root +
+                            "/scenes/city.yaml\n    mission: " + root +
+                            "/scenes/missions/city_survey.yaml\n    seeds: [4, 5]\n    set:\n"
+                            "      scene.lighting.time_of_day_h: [7.5, 18]\n"
+                            "      scene.lighting.fog_distance_m: 800\n");
+  const fs::path out = airis::testing::TestTempDir() / "campaign_set";
+  const auto r = Campaign("campaign submit " + file.string() + " --out " + out.string() +
+                          " --slurm --dry-run");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string o = out.string();
+  const std::string set = "  --set scene.lighting.fog_distance_m=800 --set ";  // sorted by key
+  EXPECT_EQ(r.out.find("# 4 dataset(s):\n#   " + o +
+                       "/survey/time_of_day_h-7.5/seed-4  shards 1  seed 4" + set +
+                       "scene.lighting.time_of_day_h=7.5\n#   " + o +
+                       "/survey/time_of_day_h-7.5/seed-5  shards 1  seed 5" + set +
+                       "scene.lighting.time_of_day_h=7.5\n#   " + o +
+                       "/survey/time_of_day_h-18/seed-4  shards 1  seed 4" + set +
+                       "scene.lighting.time_of_day_h=18\n"),
+            0u)
+      << r.out;
+  EXPECT_NE(r.out.find("#SBATCH --job-name=airis-train-survey-time_of_day_h-7_5-s4-shards\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(" --seed 5 --set scene.lighting.fog_distance_m=800 --set "
+                       "scene.lighting.time_of_day_h=18 \\\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace airis::tools

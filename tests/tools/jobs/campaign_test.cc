@@ -79,5 +79,33 @@ TEST(CampaignTest, EachDatasetsScriptRunsItsSeedIntoItsFolder) {
             std::string::npos);
 }
 
+// `set:` values multiply the datasets: each combination of values with each seed is one dataset,
+// in its own folder, its shard tasks run with the combination's --set words.
+TEST(CampaignTest, SetValuesAndSeedsExpandAsAProduct) {
+  scenes::CampaignConfig c = TwoEntries();
+  scenes::CampaignSetting sun{"scene.lighting.sun_elevation_deg", {"20", "60"}, {{}, {}}};
+  scenes::CampaignSetting fog{"scene.lighting.fog_distance_m", {"300"}, {{}}};
+  c.datasets[0].set.settings = {sun, fog};
+  const std::vector<CampaignDataset> d = ExpandCampaign(c, Options());
+  ASSERT_EQ(d.size(), 7u);  // survey: 2 values x 3 seeds; orbit: 1
+  EXPECT_EQ(d[0].folder, "survey/sun_elevation_deg-20/seed-100");
+  EXPECT_EQ(d[2].folder, "survey/sun_elevation_deg-20/seed-102");
+  EXPECT_EQ(d[3].folder, "survey/sun_elevation_deg-60/seed-100");
+  EXPECT_EQ(d[6].folder, "orbit");
+  EXPECT_EQ(d[4].plan.out, "/scratch/train/survey/sun_elevation_deg-60/seed-101");
+  EXPECT_EQ(d[4].plan.name, "train-survey-sun_elevation_deg-60-s101");
+  EXPECT_EQ(d[4].overrides, (std::vector<std::string>{"scene.lighting.fog_distance_m=300",
+                                                      "scene.lighting.sun_elevation_deg=60"}));
+  EXPECT_EQ(d[4].plan.dataset.options,
+            (std::vector<std::string>{"--seed", "101", "--set", "scene.lighting.fog_distance_m=300",
+                                      "--set", "scene.lighting.sun_elevation_deg=60", "--formats",
+                                      "npy,tartanair"}));
+  EXPECT_TRUE(d[6].overrides.empty());
+  EXPECT_NE(MakeShardScript(d[4].plan).find(
+                "--seed 101 --set scene.lighting.fog_distance_m=300 --set "
+                "scene.lighting.sun_elevation_deg=60 --formats npy,tartanair \\\n"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace airis::tools

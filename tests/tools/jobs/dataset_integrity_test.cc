@@ -16,6 +16,7 @@
 #include "engine/core/error.h"
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
+#include "scenes/scene_overrides.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tools/jobs/dataset_job.h"
 #include "tools/jobs/dataset_merge.h"
@@ -146,12 +147,16 @@ TEST(DatasetIntegrityTest, NamesThatCouldLeaveTheOutputFolderAreRefusedAtLoad) {
   EXPECT_FALSE(fs::exists(parent / "ds"));
 }
 
-TEST(DatasetIntegrityTest, TwoOutputsThatWouldShareAFolderAreRefusedAtLoad) {
+TEST(DatasetIntegrityTest, TwoOutputsThatWouldShareAFolderAreSeparatedOrRefusedAtLoad) {
+  // Two vehicles' cameras of one name get their vehicle's prefix (docs/dataset-format.md).
   SceneParts twice;
   twice.second_vehicle_camera = "cam";
-  const std::string e = ConfigErrorOf(Job("twice", twice));
-  EXPECT_TRUE(Has(e, "vehicles[1].sensors[0].name")) << e;
-  EXPECT_TRUE(Has(e, "'cam'")) << e;
+  const DatasetJobOptions o = Job("twice", twice);
+  ASSERT_EQ(ConfigErrorOf(o), "");
+  EXPECT_TRUE(fs::exists(fs::path(o.out) / "d_cam" / "poses.csv"));
+  EXPECT_TRUE(fs::exists(fs::path(o.out) / "e_cam" / "poses.csv"));
+  EXPECT_FALSE(fs::exists(fs::path(o.out) / "cam"));
+  // A name that would still be shared is refused (VehiclesSectionTest); so is a reserved one.
   SceneParts reserved;
   reserved.camera = "tartanair";
   const std::string r = ConfigErrorOf(Job("reserved", reserved));
@@ -217,7 +222,65 @@ TEST(DatasetIntegrityTest, ResumeRefusesAnotherDatasetNamingTheDifferenceAndChan
   o.shard = {2, 3};
   EXPECT_TRUE(Has(ConfigErrorOf(o), "shard (was {\"count\":1,\"index\":1}")) << ConfigErrorOf(o);
 
+  o = base;
+  o.scene.overrides = scenes::ParseSceneOverrides({"scene.lighting.ambient=0.5"});
+  EXPECT_TRUE(Has(ConfigErrorOf(o),
+                  "scene/overrides (was null, now {\"scene.lighting.ambient\":"
+                  "\"0.5\"})"))
+      << ConfigErrorOf(o);
+
   EXPECT_EQ(Files(base.out), before);  // every refusal came before any change
+}
+
+// `--set` overrides make the scene as much as its files do: the manifest records them, a resume
+// must give the same ones (in any order), and shards made with other ones do not merge.
+TEST(DatasetIntegrityTest, OverridesAreRecordedAndPartOfTheDatasetsIdentity) {
+  DatasetJobOptions o = Job("overrides");
+  o.scene.overrides = scenes::ParseSceneOverrides(
+      {"scene.lighting.sun_elevation_deg=20", "scene.lighting.fog_distance_m=50"});
+  std::atomic<int> stop{SIGINT};  // stops at the first tick: an incomplete dataset
+  o.stop = &stop;
+  RunDatasetJob(o);
+  const json manifest = ReadJson(fs::path(o.out) / "manifest.json");
+  EXPECT_EQ(manifest["scene"]["overrides"], json({{"scene.lighting.fog_distance_m", "50"},
+                                                  {"scene.lighting.sun_elevation_deg", "20"}}));
+  const auto before = Files(o.out);
+  o.stop = nullptr;
+  o.resume = true;
+  o.scene.overrides = scenes::ParseSceneOverrides({"scene.lighting.sun_elevation_deg=30"});
+  const std::string e = ConfigErrorOf(o);
+  EXPECT_TRUE(
+      Has(e, "--resume: '" + o.out +
+                 "' holds another dataset than this run makes: its "
+                 "manifest differs in scene/overrides (was {\"scene.lighting.fog_distance_m\""
+                 ":\"50\",\"scene.lighting.sun_elevation_deg\":\"20\"}, now "
+                 "{\"scene.lighting.sun_elevation_deg\":\"30\"})"))
+      << e;
+  o.scene.overrides.clear();
+  EXPECT_TRUE(Has(ConfigErrorOf(o), "scene/overrides (was {")) << ConfigErrorOf(o);
+  EXPECT_EQ(Files(o.out), before);
+  // The same overrides, given in the other order, continue it.
+  o.scene.overrides = scenes::ParseSceneOverrides(
+      {"scene.lighting.fog_distance_m=50", "scene.lighting.sun_elevation_deg=20"});
+  EXPECT_TRUE(RunDatasetJob(o).succeeded);
+
+  // Shards of one scene made with other overrides are not one dataset.
+  DatasetJobOptions a = Job("overrides_shard1"), b = Job("overrides_shard2");
+  b.scene.path = a.scene.path;
+  a.shard = {1, 2};
+  b.shard = {2, 2};
+  a.scene.overrides = scenes::ParseSceneOverrides({"scene.lighting.fog_distance_m=50"});
+  b.scene.overrides = scenes::ParseSceneOverrides({"scene.lighting.fog_distance_m=60"});
+  ASSERT_TRUE(RunDatasetJob(a).succeeded);
+  ASSERT_TRUE(RunDatasetJob(b).succeeded);
+  const fs::path merged = airis::testing::TestTempDir() / "overrides_merged";
+  fs::remove_all(merged);
+  try {
+    MergeDatasetShards({a.out, b.out}, merged);
+    ADD_FAILURE() << "shards with other overrides merged";
+  } catch (const engine::DatasetIoError& error) {
+    EXPECT_TRUE(Has(error.what(), "its manifest differs in 'scene'")) << error.what();
+  }
 }
 
 TEST(DatasetIntegrityTest, ResumeRefusesAShardResumedAsAnother) {

@@ -58,8 +58,11 @@ TEST(SimulationJobTest, AVehicleDroppedOntoTheGroundDuringAWaitCollides) {
   const MissionOutcome out =
       job.FlyMission(scenes::ParseMission(kWaitOnTheGround, "m.yaml"), MissionFlight{});
   EXPECT_EQ(out.state, engine::MissionRunner::State::kFailed);
-  EXPECT_NE(out.failure.find("m.yaml:2: step 1 (wait): collided with ground"), std::string::npos)
+  EXPECT_NE(out.failure.find("m.yaml:2: vehicle 'd' step 1 (wait): collided with ground"),
+            std::string::npos)
       << out.failure;
+  EXPECT_TRUE(out.ended_by_collision);
+  EXPECT_EQ(out.collisions, 1);
 }
 
 TEST(SimulationJobTest, OnGroundWithNothingBelowIsAnErrorNamingTheKey) {
@@ -118,12 +121,20 @@ TEST(SimulationJobTest, AMissionNamingAnAbsentVehicleIsAnErrorListingTheScenesVe
       Text("vehicles: [{name: a, preset: quad_x}, {name: b, preset: hexa_x}]\n"));
   engine::Mission m = scenes::ParseMission("vehicle: c\nsteps: [{wait: {}}]\n", "m.yaml");
   try {
-    job.MissionVehicle(m);
+    job.MissionVehicles(m);
     FAIL();
   } catch (const engine::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("no vehicle 'c' in the scene (it has a, b)"),
-              std::string::npos)
-        << e.what();
+    EXPECT_EQ(std::string(e.what()),
+              "m.yaml:1:1: vehicle: no vehicle 'c' in the scene (it has a, b)");
+  }
+  m = scenes::ParseMission("vehicles:\n  b: {steps: [{wait: {}}]}\n  c: {steps: [{wait: {}}]}\n",
+                           "m.yaml");
+  try {
+    job.MissionVehicles(m);
+    FAIL();
+  } catch (const engine::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.yaml:3:3: vehicles.c: no vehicle 'c' in the scene (it has a, b)");
   }
 }
 

@@ -147,9 +147,13 @@ TEST(SlurmScriptsTest, OptionWordsLeaveDefaultsOutInOneOrder) {
   v.seed = "9";
   v.streams = "flight";
   v.workers = "4";
-  EXPECT_EQ(DatasetOptionWords(v),
-            (std::vector<std::string>{"--seed", "9", "--formats", "npy,tartanair", "--streams",
-                                      "flight", "--workers", "4"}));
+  v.overrides = {"scene.lighting.ambient=0.5", "vehicles[0].start.yaw_deg=90"};
+  const std::vector<std::string> words = DatasetOptionWords(v);
+  EXPECT_EQ(words,
+            (std::vector<std::string>{"--seed", "9", "--set", "scene.lighting.ambient=0.5", "--set",
+                                      "vehicles[0].start.yaw_deg=90", "--formats", "npy,tartanair",
+                                      "--streams", "flight", "--workers", "4"}));
+  EXPECT_EQ(SceneOverrideWords(words), v.overrides);  // what the submission checks loads with
 }
 
 TEST(SlurmScriptsTest, RefusesPlansTheScriptsCannotHold) {

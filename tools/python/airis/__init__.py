@@ -28,6 +28,7 @@ from ._airis import (  # noqa: F401  (re-exported)
     env_at,
 )
 from ._yaml import dump as _dump_yaml
+from ._yaml import flow as _flow_yaml
 
 __version__ = _airis.__version__
 
@@ -70,14 +71,22 @@ class Simulation(_airis._Simulation):
     run`). `name` names text or dict scenes in error messages and anchors their relative paths
     (default "<string>" / "<dict>", relative to the working directory). Each sensor keeps at most
     `max_samples` unread samples (the oldest are dropped beyond it, counted in Sensor.dropped).
-    `threads` (1 to 64) step the vehicles (their physics, sensors and controllers) as `airis run
-    --threads` does: worth it from a few dozen vehicles, and the results do not depend on it.
-    Raises ConfigError (`file:line:col: key: problem`) for bad input.
+    `overrides` replaces keys of the scene before it is validated, as `airis run --set` does:
+    `{"scene.lighting.sun_elevation_deg": 20, "scene.environment.wind.mean_ned_m_s": [5, 0, 0]}`
+    (docs/scene-format.md, "Overrides"). `threads` (1 to 64) step the vehicles (their physics,
+    sensors and controllers) as `airis run --threads` does: worth it from a few dozen vehicles, and
+    the results do not depend on it. Raises ConfigError (`file:line:col: key: problem`, or
+    `--set KEY=VALUE: key: problem`) for bad input.
     """
 
-    def __init__(self, scene, seed=None, *, name=None, max_samples=100000, threads=1):
+    def __init__(self, scene, seed=None, *, name=None, max_samples=100000, overrides=None,
+                 threads=1):
         path, text = _scene_source(scene, name)
-        super().__init__(path, text, seed, max_samples, threads)
+        if overrides is not None and not isinstance(overrides, dict):
+            raise TypeError(f"overrides: expected a dict of key path -> value "
+                            f"(got {type(overrides).__name__})")
+        texts = [f"{key}={_flow_yaml(value)}" for key, value in (overrides or {}).items()]
+        super().__init__(path, text, seed, max_samples, texts, threads)
         self._text = text
         handles = self.vehicle_handles
         for v in handles:

@@ -2,7 +2,7 @@
 
 import math
 
-__all__ = ["dump"]
+__all__ = ["dump", "flow"]
 
 
 def _scalar(value):
@@ -75,6 +75,16 @@ def _child(v, indent, lines):
                 lines[-1] += " " + _scalar(item)
     else:
         lines[-1] += " " + _scalar(v)
+
+
+def flow(value):
+    """One value as flow YAML: a scalar, or a list (nested lists, numpy arrays) as `[a, b]`."""
+    if isinstance(value, dict):
+        raise TypeError("expected a value or a list (got a dict: set its keys one by one)")
+    if isinstance(value, (list, tuple)) or getattr(value, "ndim", 0) > 0:
+        items = value.tolist() if hasattr(value, "tolist") else list(value)
+        return "[" + ", ".join(flow(x) for x in items) + "]"
+    return _scalar(value)
 
 
 def dump(data):
