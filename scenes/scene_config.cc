@@ -16,6 +16,7 @@ using engine::RequireInRange;
 using engine::RequireNonNegative;
 using engine::RequirePositive;
 using engine::RequireWithinWorld;
+using engine::ValidateNested;
 
 namespace {
 
@@ -26,16 +27,6 @@ constexpr engine::EnumName<CrownShape> kCrownNames[] = {{CrownShape::kCone, "con
 
 std::string Index(const std::string& list, std::size_t i) {
   return list + "[" + std::to_string(i) + "]";
-}
-
-/// Runs a nested Validate() and prefixes the field it names with `prefix`.
-template <class Config>
-void ValidateNested(const Config& config, const std::string& prefix) {
-  try {
-    config.Validate();
-  } catch (const InvalidField& e) {
-    throw InvalidField(prefix + "." + e.field(), e.problem());
-  }
 }
 
 void RequireVectorFinite(const std::string& field, const Eigen::Vector3d& v) {

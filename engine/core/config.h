@@ -123,6 +123,17 @@ void RequireFinite(std::string_view field, const Eigen::Matrix<double, N, 1>& v)
   RequireFinite(field, std::span<const double>(v.data(), static_cast<std::size_t>(N)));
 }
 
+/// Runs a nested config's Validate() and prefixes the field it names with `prefix.`
+/// (`wind.gust_sigma_m_s`, `sleep.delay_s`).
+template <class Config>
+void ValidateNested(const Config& config, const std::string& prefix) {
+  try {
+    config.Validate();
+  } catch (const InvalidField& e) {
+    throw InvalidField(prefix + "." + e.field(), e.problem());
+  }
+}
+
 /// The candidate closest to `word` by edit distance, if it is close enough to be a plausible typo
 /// (distance at most max(2, |word| / 3)). For "unknown key 'rate_hx' (did you mean 'rate_hz'?)".
 std::optional<std::string> ClosestMatch(std::string_view word,

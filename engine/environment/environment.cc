@@ -1,20 +1,11 @@
 #include "engine/environment/environment.h"
 
+#include "engine/core/config.h"
 #include "engine/core/error.h"
 #include "engine/environment/world_magnetic_model.h"
 
 namespace airis::engine {
 namespace {
-
-// Runs a nested Validate() and prefixes the field it names with `prefix.`.
-template <class Config>
-void ValidateNested(const Config& config, const std::string& prefix) {
-  try {
-    config.Validate();
-  } catch (const InvalidField& e) {
-    throw InvalidField(prefix + "." + e.field(), e.problem());
-  }
-}
 
 std::unique_ptr<MagneticFieldModel> MakeMagneticModel(const EnvironmentConfig& config) {
   if (config.magnetic_model == MagneticModelKind::kDipole) {

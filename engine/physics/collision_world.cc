@@ -1,6 +1,5 @@
 #include "engine/physics/collision_world.h"
 
-#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
@@ -11,6 +10,7 @@
 #include <limits>
 
 #include "engine/core/error.h"
+#include "engine/physics/static_collider_grid.h"
 
 namespace airis::engine {
 namespace {
@@ -113,23 +113,53 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
 };
 
 // Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
-// per world); our queries hold a handful at a time, and Bullet allocates beyond a full pool, so
-// small pools change nothing but memory: a process can hold thousands of worlds (the Python
-// module's vectorized environments).
+// per world). Our dispatcher (below) never draws from them, so they are made as small as Bullet
+// allows: a process can hold thousands of worlds (the Python module's vectorized environments).
 btDefaultCollisionConstructionInfo SmallPools() {
   btDefaultCollisionConstructionInfo info;
-  info.m_defaultMaxPersistentManifoldPoolSize = 64;
-  info.m_defaultMaxCollisionAlgorithmPoolSize = 64;
+  info.m_defaultMaxPersistentManifoldPoolSize = 1;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = 1;
   return info;
 }
+
+// Bullet's dispatcher with its shared state taken out, so that bodies can be queried on several
+// threads at once: collision algorithms and manifolds come from the heap (thread-safe) instead of
+// the configuration's pools, and manifolds are not listed in the dispatcher (nothing here walks
+// them: performDiscreteCollisionDetection is never called). Each algorithm and manifold belongs to
+// one body's query. The contact breaking threshold is Bullet's own (the relative one, its default),
+// so the algorithms compute exactly what they compute under btCollisionDispatcher.
+class HeapDispatcher final : public btCollisionDispatcher {
+ public:
+  explicit HeapDispatcher(btCollisionConfiguration* configuration)
+      : btCollisionDispatcher(configuration) {}
+
+  btPersistentManifold* getNewManifold(const btCollisionObject* b0,
+                                       const btCollisionObject* b1) override {
+    const btScalar breaking =
+        btMin(b0->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold),
+              b1->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold));
+    const btScalar processing =
+        btMin(b0->getContactProcessingThreshold(), b1->getContactProcessingThreshold());
+    void* memory = btAlignedAlloc(sizeof(btPersistentManifold), 16);
+    return new (memory) btPersistentManifold(b0, b1, 0, breaking, processing);
+  }
+  void releaseManifold(btPersistentManifold* manifold) override {
+    manifold->clearManifold();
+    manifold->~btPersistentManifold();
+    btAlignedFree(manifold);
+  }
+  void* allocateCollisionAlgorithm(int size) override {
+    return btAlignedAlloc(static_cast<std::size_t>(size), 16);
+  }
+  void freeCollisionAlgorithm(void* memory) override { btAlignedFree(memory); }
+};
 
 }  // namespace
 
 struct CollisionWorld::Bullet {
   btDefaultCollisionConfiguration configuration{SmallPools()};
-  btCollisionDispatcher dispatcher{&configuration};
-  btDbvtBroadphase broadphase;
-  btCollisionWorld world{&dispatcher, &broadphase, &configuration};
+  HeapDispatcher dispatcher{&configuration};
+  btDispatcherInfo dispatch_info;  // Bullet's defaults
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays;
   std::vector<std::vector<int>> mesh_indices;
@@ -137,180 +167,40 @@ struct CollisionWorld::Bullet {
   std::vector<btBvhTriangleMeshShape*>
       mesh_shapes;  // per scene mesh, built on first use (owned above)
   std::vector<std::unique_ptr<btCollisionObject>> statics;
-  std::vector<std::unique_ptr<btCollisionObject>> bodies;
-  std::vector<const btCollisionObject*> candidates;
-  // Oriented bounds of every static collider (its shape's local AABB placed in the world), indexed
-  // like colliders_: an exact, cheap sphere test that spares Bullet's narrowphase when AABBs merely
-  // overlap.
-  struct Bounds {
-    Vec3 centre_W;
-    Mat3 R_WL;
-    Vec3 half_m;
+  // Oriented bounds of every static collider, indexed like colliders_, and the grid over them.
+  std::vector<ColliderBounds> bounds;
+  StaticColliderGrid grid;
+
+  // A moving body, with what its queries keep between ticks: the collision algorithm of each
+  // collider it was near in its last query (Bullet builds one per shape pair; rebuilding it every
+  // tick cost a fifth of a resting body's tick) and its scratch lists. A body's queries touch
+  // nothing shared, so bodies may be queried on different threads at once.
+  struct Body {
+    std::unique_ptr<btCollisionObject> object;
+    Vec3 half_m = Vec3::Zero();
+    std::vector<std::uint32_t> near;  // colliders of the current query
+    struct Algorithm {
+      std::uint32_t collider;
+      btCollisionAlgorithm* algorithm;
+    };
+    std::vector<Algorithm> algorithms;       // of the last query, in its order
+    std::vector<Algorithm> algorithms_next;  // scratch
   };
-  std::vector<Bounds> bounds;
-  std::vector<Vec3> body_half_m;
+  std::vector<Body> bodies;
+  // Radius of each body's bounding sphere (m), apart: the open-air test reads nothing else.
   std::vector<double> body_radius_m;
 
-  // Static query grid: a uniform grid over x-y (the scene's ground plan) listing the colliders
-  // whose bounds overlap each cell, plus a list of colliders too large for it (ground planes).
-  // Bullet's DBVT answers the same query, but for a small box in a 10,000-object city it costs ~10x
-  // more (and btDbvt's top-down optimisation degenerates with one huge leaf); statics never move,
-  // so a grid built once is exact.
-  struct Aabb {
-    Vec3 lo, hi;
-  };
-  std::vector<Aabb> aabbs;                // per collider, world
-  std::vector<std::uint32_t> large;       // colliders not in the grid
-  std::vector<std::uint32_t> cell_start;  // CSR offsets into cell_items, one per cell plus one
-  std::vector<std::uint32_t> cell_items;
-  std::vector<double> cell_top_z;  // per cell: the highest point (least z) of its colliders
-  double grid_top_z = std::numeric_limits<double>::infinity();  // the same over the whole grid
-  // The highest point (least z) of every collider, large ones included: a body whose bounding
-  // sphere is wholly above it touches nothing (open air), and its query ends there.
-  double top_z = std::numeric_limits<double>::infinity();
-  std::vector<std::uint32_t> stamp;  // per collider: last query that saw it (dedupe across cells)
-  std::uint32_t query = 0;
-  double cell_m = 1.0;
-  double inverse_cell_1_m = 1.0;
-  double origin_x = 0.0, origin_y = 0.0;
-  int nx = 0, ny = 0;
-
-  void BuildGrid() {
-    const std::size_t n = bounds.size();
-    aabbs.resize(n);
-    stamp.assign(n, 0);
-    Eigen::AlignedBox2d plan;
-    std::vector<double> widths;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 reach = bounds[i].R_WL.cwiseAbs() * bounds[i].half_m;
-      aabbs[i] = Aabb{bounds[i].centre_W - reach, bounds[i].centre_W + reach};
-      widths.push_back(2.0 * reach.head<2>().maxCoeff());
-      top_z = std::min(top_z, aabbs[i].lo.z());
-    }
-    if (n == 0) return;
-    std::vector<double> sorted = widths;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
-    const double median = sorted[n / 2];
-    // Objects whose footprint covers more than a quarter of everything's (ground planes, terrain)
-    // are tested one by one; everything else, long thin streets and walls included, goes into the
-    // grid, where a query sees only the cells around the vehicle.
-    Eigen::AlignedBox2d everything;
-    for (std::size_t i = 0; i < n; ++i) {
-      everything.extend(aabbs[i].lo.head<2>());
-      everything.extend(aabbs[i].hi.head<2>());
-    }
-    const double everything_area = everything.sizes().prod();
-    std::vector<std::uint32_t> gridded;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double area = (aabbs[i].hi - aabbs[i].lo).head<2>().prod();
-      if (area > 0.25 * everything_area) {
-        large.push_back(static_cast<std::uint32_t>(i));
-      } else {
-        gridded.push_back(static_cast<std::uint32_t>(i));
-        plan.extend(aabbs[i].lo.head<2>());
-        plan.extend(aabbs[i].hi.head<2>());
-      }
-    }
-    if (gridded.empty()) return;
-    // About one object per cell, cells no smaller than the median object, at most 2^22 cells.
-    const Eigen::Vector2d size = plan.sizes().cwiseMax(1e-3);
-    cell_m = std::max({median, std::sqrt(size.prod() / static_cast<double>(gridded.size())), 1e-3});
-    while ((size.x() / cell_m + 1.0) * (size.y() / cell_m + 1.0) > double(1 << 22)) cell_m *= 2.0;
-    inverse_cell_1_m = 1.0 / cell_m;
-    origin_x = plan.min().x();
-    origin_y = plan.min().y();
-    nx = static_cast<int>(size.x() / cell_m) + 1;
-    ny = static_cast<int>(size.y() / cell_m) + 1;
-    cell_start.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) + 1, 0);
-    cell_top_z.assign(cell_start.size() - 1, std::numeric_limits<double>::infinity());
-    // Two passes: count per cell, then fill (CSR).
-    for (int pass = 0; pass < 2; ++pass) {
-      std::vector<std::uint32_t> fill;
-      if (pass == 1) {
-        for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
-        cell_items.resize(cell_start.back());
-        fill.assign(cell_start.begin(), cell_start.end() - 1);
-      }
-      for (std::uint32_t i : gridded) {
-        int x0, x1, y0, y1;
-        CellRange(aabbs[i].lo, aabbs[i].hi, &x0, &x1, &y0, &y1);
-        for (int y = y0; y <= y1; ++y) {
-          for (int x = x0; x <= x1; ++x) {
-            const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) +
-                                  static_cast<std::size_t>(x);
-            if (pass == 0) {
-              ++cell_start[c + 1];
-              cell_top_z[c] = std::min(cell_top_z[c], aabbs[i].lo.z());
-              grid_top_z = std::min(grid_top_z, aabbs[i].lo.z());
-            } else {
-              cell_items[fill[c]++] = i;
-            }
-          }
-        }
-      }
-    }
+  static void Free(btDispatcher& dispatcher, btCollisionAlgorithm* algorithm) {
+    algorithm->~btCollisionAlgorithm();
+    dispatcher.freeCollisionAlgorithm(algorithm);
   }
-
-  void CellRange(const Vec3& lo, const Vec3& hi, int* x0, int* x1, int* y0, int* y1) const {
-    // Truncation is floor for the non-negative values that survive the clamp (no libm call).
-    auto cell = [&](double v, double origin, int count) {
-      const double c = (v - origin) * inverse_cell_1_m;
-      return c <= 0.0 ? 0 : c >= count - 1 ? count - 1 : static_cast<int>(c);
-    };
-    *x0 = cell(lo.x(), origin_x, nx);
-    *x1 = cell(hi.x(), origin_x, nx);
-    *y0 = cell(lo.y(), origin_y, ny);
-    *y1 = cell(hi.y(), origin_y, ny);
-  }
-
-  // Colliders whose world AABB overlaps [lo, hi] and whose oriented bounds come within `radius` of
-  // `centre`, into `candidates`.
-  void Candidates(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius) {
-    candidates.clear();
-    const double r2 = radius * radius;
-    auto consider = [&](std::uint32_t i) {
-      const Aabb& box = aabbs[i];
-      if (lo.x() > box.hi.x() || lo.y() > box.hi.y() || lo.z() > box.hi.z() ||
-          hi.x() < box.lo.x() || hi.y() < box.lo.y() || hi.z() < box.lo.z()) {
-        return;
-      }
-      const Bounds& b = bounds[i];
-      const Vec3 d = b.R_WL.transpose() * (centre - b.centre_W);
-      const Vec3 outside = (d.cwiseAbs() - b.half_m).cwiseMax(0.0);
-      if (outside.squaredNorm() <= r2) candidates.push_back(statics[i].get());
-    };
-    for (std::uint32_t i : large) consider(i);
-    if (nx == 0 || hi.z() < grid_top_z || hi.x() < origin_x || hi.y() < origin_y ||
-        lo.x() > origin_x + nx * cell_m || lo.y() > origin_y + ny * cell_m) {
-      return;
-    }
-    int x0, x1, y0, y1;
-    CellRange(lo, hi, &x0, &x1, &y0, &y1);
-    const bool one_cell = x0 == x1 && y0 == y1;
-    if (!one_cell && ++query == 0) {  // the stamp counter wrapped: forget every stamp
-      std::fill(stamp.begin(), stamp.end(), 0);
-      query = 1;
-    }
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) +
-                              static_cast<std::size_t>(x);
-        if (hi.z() < cell_top_z[c]) continue;  // flying above everything in the cell
-        for (std::uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-          const std::uint32_t i = cell_items[k];
-          // A collider spanning several cells of the query is considered once.
-          if (!one_cell) {
-            if (stamp[i] == query) continue;
-            stamp[i] = query;
-          }
-          consider(i);
-        }
-      }
-    }
+  void FreeAlgorithms(Body& body) {
+    for (const Body::Algorithm& a : body.algorithms) Free(dispatcher, a.algorithm);
+    body.algorithms.clear();
   }
 
   ~Bullet() {
-    for (auto& o : statics) world.removeCollisionObject(o.get());
+    for (Body& body : bodies) FreeAlgorithms(body);
   }
 
   btCollisionShape* Own(btCollisionShape* shape) {
@@ -350,17 +240,14 @@ struct CollisionWorld::Bullet {
     }
     const Vec3 local_centre = 0.5 * (FromBt(lo) + FromBt(hi));
     bounds.resize(static_cast<std::size_t>(collider_index) + 1);
-    bounds[static_cast<std::size_t>(collider_index)] =
-        Bounds{FromBt(T_WC.getOrigin()) + R * local_centre, R, 0.5 * (FromBt(hi) - FromBt(lo))};
-    world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
-                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    bounds[static_cast<std::size_t>(collider_index)] = ColliderBounds{
+        FromBt(T_WC.getOrigin()) + R * local_centre, R, 0.5 * (FromBt(hi) - FromBt(lo))};
     statics.push_back(std::move(object));
   }
 };
 
 CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_unique<Bullet>()) {
   Bullet& b = *bullet_;
-  b.world.setForceUpdateAllAabbs(false);
   b.mesh_shapes.assign(scene.meshes.size(), nullptr);
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const StaticObject& object = scene.objects[oi];
@@ -472,7 +359,7 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       b.AddStatic(b.Own(shape), ToBt(R, centre), make_collider(part.material));
     }
   }
-  b.BuildGrid();
+  b.grid = StaticColliderGrid(std::move(b.bounds));
 }
 
 CollisionWorld::~CollisionWorld() = default;
@@ -480,49 +367,68 @@ CollisionWorld::~CollisionWorld() = default;
 int CollisionWorld::AddBody(const Vec3& box_size_m) {
   Bullet& b = *bullet_;
   auto* shape = b.Own(new btBoxShape(ToBt(0.5 * box_size_m)));
-  auto object = std::make_unique<btCollisionObject>();
-  object->setCollisionShape(shape);
-  object->setUserIndex(-1);
-  b.bodies.push_back(std::move(object));
-  b.body_half_m.push_back(0.5 * box_size_m);
+  Bullet::Body& body = b.bodies.emplace_back();
+  body.object = std::make_unique<btCollisionObject>();
+  body.object->setCollisionShape(shape);
+  body.object->setUserIndex(-1);
+  body.half_m = 0.5 * box_size_m;
   b.body_radius_m.push_back(0.5 * box_size_m.norm());
   return static_cast<int>(b.bodies.size() - 1);
 }
 
-void CollisionWorld::FindContacts(int body, const Vec3& p_W, const Quat& q_WB, double margin_m,
-                                  std::vector<Contact>& contacts) {
+void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q_WB,
+                                  double margin_m, std::vector<Contact>& contacts) {
   Bullet& b = *bullet_;
   contacts.clear();
-  const auto index = static_cast<std::size_t>(body);
+  const auto index = static_cast<std::size_t>(body_index);
+  const double radius_m = b.body_radius_m[index];
   // Open air (the common case: flying above the ground and every roof): the body's bounding sphere
   // is above every collider's bounds, so nothing is near; no rotation, bounds or grid needed.
-  if (p_W.z() + b.body_radius_m[index] + margin_m < b.top_z) return;
-  // Broadphase: the body's world AABB (|R| half-extents) against both trees of the DBVT broadphase
-  // (statics never move, so they stay where they were inserted), then the exact bounding-sphere
-  // test.
+  // (It keeps its algorithms, a handful at most, until its next query near colliders.)
+  if (p_W.z() + radius_m + margin_m < b.grid.top_z()) return;
+  Bullet::Body& body = b.bodies[index];
+  // Broadphase: the body's world AABB (|R| half-extents) in the grid, then the exact
+  // bounding-sphere test against each collider's oriented bounds.
   const Mat3 R_WB = q_WB.toRotationMatrix();
-  const Vec3 reach = R_WB.cwiseAbs() * b.body_half_m[index] + Vec3::Constant(margin_m);
-  b.Candidates(p_W - reach, p_W + reach, p_W, b.body_radius_m[index] + margin_m);
-  if (b.candidates.empty()) return;
+  const Vec3 reach = R_WB.cwiseAbs() * body.half_m + Vec3::Constant(margin_m);
+  b.grid.FindNear(p_W - reach, p_W + reach, p_W, radius_m + margin_m, body.near);
 
-  btCollisionObject& body_object = *b.bodies[index];
+  // Narrowphase on the near colliders only, with Bullet's contact algorithms (box-box is exact),
+  // each kept from the last query when that collider was near then too. The algorithms report
+  // every point afresh to the collector (nothing is kept in their manifolds), so a kept algorithm
+  // gives the points a new one would.
+  btCollisionObject& body_object = *body.object;
   const btTransform T_WB = ToBt(R_WB, p_W);
   body_object.setWorldTransform(T_WB);
-  // Narrowphase on the overlaps only, with Bullet's contact algorithms (box-box is exact).
   const btCollisionObjectWrapper body_wrap(nullptr, body_object.getCollisionShape(), &body_object,
                                            T_WB, -1, -1);
-  for (const btCollisionObject* other : b.candidates) {
+  body.algorithms_next.clear();
+  for (const std::uint32_t collider : body.near) {
+    const btCollisionObject* other = b.statics[collider].get();
     const btCollisionObjectWrapper other_wrap(nullptr, other->getCollisionShape(), other,
                                               other->getWorldTransform(), -1, -1);
-    btCollisionAlgorithm* algorithm =
-        b.dispatcher.findAlgorithm(&body_wrap, &other_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
-    if (algorithm == nullptr) continue;
-    ContactCollector collector(&body_wrap, &other_wrap, margin_m,
-                               static_cast<std::uint32_t>(other->getUserIndex()), contacts);
-    algorithm->processCollision(&body_wrap, &other_wrap, b.world.getDispatchInfo(), &collector);
-    algorithm->~btCollisionAlgorithm();
-    b.dispatcher.freeCollisionAlgorithm(algorithm);
+    btCollisionAlgorithm* algorithm = nullptr;
+    for (Bullet::Body::Algorithm& kept : body.algorithms) {
+      if (kept.collider == collider) {
+        algorithm = kept.algorithm;
+        kept.algorithm = nullptr;  // moved to algorithms_next
+        break;
+      }
+    }
+    if (algorithm == nullptr) {
+      algorithm =
+          b.dispatcher.findAlgorithm(&body_wrap, &other_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+      if (algorithm == nullptr) continue;
+    }
+    body.algorithms_next.push_back({collider, algorithm});
+    ContactCollector collector(&body_wrap, &other_wrap, margin_m, collider, contacts);
+    algorithm->processCollision(&body_wrap, &other_wrap, b.dispatch_info, &collector);
   }
+  // Colliders no longer near give their algorithms back.
+  for (const Bullet::Body::Algorithm& kept : body.algorithms) {
+    if (kept.algorithm != nullptr) Bullet::Free(b.dispatcher, kept.algorithm);
+  }
+  std::swap(body.algorithms, body.algorithms_next);
 }
 
 void CollisionWorld::FindBodyContacts(int a, const Vec3& p_a_W, const Quat& q_a_WB, int b,
@@ -530,10 +436,10 @@ void CollisionWorld::FindBodyContacts(int a, const Vec3& p_a_W, const Quat& q_a_
                                       std::vector<Contact>& contacts) {
   Bullet& bt = *bullet_;
   contacts.clear();
-  const auto* box_a =
-      static_cast<const btBoxShape*>(bt.bodies[static_cast<std::size_t>(a)]->getCollisionShape());
-  const auto* box_b =
-      static_cast<const btBoxShape*>(bt.bodies[static_cast<std::size_t>(b)]->getCollisionShape());
+  const auto* box_a = static_cast<const btBoxShape*>(
+      bt.bodies[static_cast<std::size_t>(a)].object->getCollisionShape());
+  const auto* box_b = static_cast<const btBoxShape*>(
+      bt.bodies[static_cast<std::size_t>(b)].object->getCollisionShape());
   btDiscreteCollisionDetectorInterface::ClosestPointInput input;
   input.m_transformA = ToBt(q_a_WB.toRotationMatrix(), p_a_W - p_b_W);
   input.m_transformB = ToBt(q_b_WB.toRotationMatrix(), Vec3::Zero());
@@ -542,26 +448,37 @@ void CollisionWorld::FindBodyContacts(int a, const Vec3& p_a_W, const Quat& q_a_
   detector.getClosestPoints(input, collector, nullptr);
 }
 
-double CollisionWorld::Sweep(int body, const Quat& q_WB, const Vec3& from_W, const Vec3& to_W,
+double CollisionWorld::Sweep(int body_index, const Quat& q_WB, const Vec3& from_W, const Vec3& to_W,
                              Contact* hit) {
   Bullet& b = *bullet_;
   if ((to_W - from_W).squaredNorm() == 0.0) return 1.0;
-  const auto index = static_cast<std::size_t>(body);
+  const auto index = static_cast<std::size_t>(body_index);
+  const double radius_m = b.body_radius_m[index];
   // Open air along the whole path (see FindContacts).
-  if (std::max(from_W.z(), to_W.z()) + b.body_radius_m[index] < b.top_z) return 1.0;
+  if (std::max(from_W.z(), to_W.z()) + radius_m < b.grid.top_z()) return 1.0;
+  Bullet::Body& body = b.bodies[index];
   const Mat3 R = q_WB.toRotationMatrix();
-  // Nothing near the swept segment: no sweep (the common case, and Bullet's sweep is costly).
-  const Vec3 reach = R.cwiseAbs() * b.body_half_m[index];
+  // The colliders near the swept segment (a superset of those the box can touch on its way: the
+  // sphere about the segment's middle holds the whole swept box); none: no sweep (the common case,
+  // and Bullet's sweep is costly).
+  const Vec3 reach = R.cwiseAbs() * body.half_m;
   const Vec3 lo = from_W.cwiseMin(to_W) - reach, hi = from_W.cwiseMax(to_W) + reach;
-  b.Candidates(lo, hi, 0.5 * (from_W + to_W),
-               b.body_radius_m[index] + 0.5 * (to_W - from_W).norm());
-  if (b.candidates.empty()) return 1.0;
-  const btCollisionObject& body_object = *b.bodies[index];
-  const auto* shape = static_cast<const btConvexShape*>(body_object.getCollisionShape());
+  b.grid.FindNear(lo, hi, 0.5 * (from_W + to_W), radius_m + 0.5 * (to_W - from_W).norm(),
+                  body.near);
+  if (body.near.empty()) return 1.0;
+  const auto* shape = static_cast<const btConvexShape*>(body.object->getCollisionShape());
   const btTransform from = ToBt(R, from_W);
   const btTransform to = ToBt(R, to_W);
+  // Bullet's convex cast against each of them (what btCollisionWorld::convexSweepTest does for the
+  // objects its broadphase finds, with its default of no allowed penetration), keeping the closest
+  // hit.
   SweepCallback callback(from.getOrigin(), to.getOrigin());
-  b.world.convexSweepTest(shape, from, to, callback);
+  for (const std::uint32_t collider : body.near) {
+    if (callback.m_closestHitFraction == btScalar(0)) break;
+    btCollisionObject* other = b.statics[collider].get();
+    btCollisionWorld::objectQuerySingle(shape, from, to, other, other->getCollisionShape(),
+                                        other->getWorldTransform(), callback, btScalar(0));
+  }
   if (!callback.hasHit()) return 1.0;
   if (hit != nullptr) {
     hit->point_W = FromBt(callback.m_hitPointWorld);

@@ -32,15 +32,18 @@ struct Contact {
   std::uint32_t collider = 0;
 };
 
-/// The collision world (Bullet's btCollisionWorld with a dynamic AABB tree broadphase; Bullet's
-/// dynamics are not used). Built once from a StaticScene; static colliders never move and cost
-/// nothing per query: Bullet never recomputes their bounds (performDiscreteCollisionDetection is
-/// never called). Moving bodies are boxes that are not inserted in the broadphase: each query takes
-/// the body's pose, looks its bounds up in a static uniform grid over the ground plan (built once;
-/// huge colliders such as ground planes are kept apart), keeps the colliders whose oriented bounds
-/// come within the body's bounding sphere, and runs Bullet's contact algorithms on those only.
-/// Sweeps use Bullet's convexSweepTest (through its broadphase), only when the grid finds something
-/// near the swept path.
+/// The collision world: Bullet's shapes and contact algorithms (Bullet's broadphase and dynamics
+/// are not used). Built once from a StaticScene; static colliders never move and cost nothing per
+/// query. Moving bodies are boxes that are not inserted anywhere: each query takes the body's pose,
+/// looks its bounds up in a StaticColliderGrid (built once over the ground plan; huge colliders
+/// such as ground planes are kept apart), keeps the colliders whose oriented bounds come within the
+/// body's bounding sphere, and runs Bullet's contact algorithms on those only. A body keeps the
+/// algorithm of each collider it stays near from one query to the next (persistent contacts: Bullet
+/// builds one per shape pair, and the building cost as much as the contact itself). Sweeps run
+/// Bullet's convex cast against the colliders near the swept path, only when there are any.
+///
+/// Threads: queries of different bodies (FindContacts, Sweep) may run at the same time on
+/// different threads; the queries of one body must not overlap. FindBodyContacts keeps no state.
 ///
 /// Shapes: primitives become Bullet primitives (box, sphere, cylinder, cone); a plane becomes a 1 m
 /// thick slab under its surface (on its local +z side, i.e. below it in NED) so nothing passes

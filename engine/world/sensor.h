@@ -50,12 +50,26 @@ class Sensor {
   Sensor(const Sensor&) = delete;
   Sensor& operator=(const Sensor&) = delete;
 
-  /// Called by the Simulation every tick after physics: samples when the schedule says so and
-  /// notifies the listeners. Returns true when a sample was taken. Inline when nothing is due (most
-  /// ticks of a sensor slower than the physics).
+  /// Called every tick after physics: samples when the schedule says so and notifies the
+  /// listeners. Returns true when a sample was taken.
   bool Update(const SensorContext& context) {
-    return schedule_.IsDue(context.now_ns) && UpdateDue(context);
+    if (!SampleIfDue(context)) return false;
+    NotifyListeners();
+    return true;
   }
+  /// Update without the listeners (SampleIfDue, then NotifyListeners when it sampled, is Update).
+  /// Sensors of different vehicles may sample at the same time on different threads (each reads
+  /// only its context and changes only itself); an image sensor renders, so only on the thread
+  /// that owns the GL context. The Simulation samples every vehicle's sensors on its threads, then
+  /// notifies on its own thread, in order. Inline when nothing is due (most ticks of a sensor
+  /// slower than the physics).
+  bool SampleIfDue(const SensorContext& context) {
+    return schedule_.IsDue(context.now_ns) && SampleDue(context);
+  }
+  /// Calls every listener with this sensor (after a sample).
+  void NotifyListeners() const;
+  /// True when a listener was added (NotifyListeners would call someone).
+  bool has_listeners() const { return !listeners_.empty(); }
 
   /// Column names with units of the sample row, e.g. {"angular_velocity_sensor_x_rad_s", ...};
   /// constant over the run.
@@ -121,8 +135,8 @@ class Sensor {
   virtual void Sample(const SensorContext& context) = 0;
 
  private:
-  // Update once the schedule says a sample is due.
-  bool UpdateDue(const SensorContext& context);
+  // SampleIfDue once the schedule says a sample is due.
+  bool SampleDue(const SensorContext& context);
 
   std::string name_;
   RateSchedule schedule_;

@@ -7,7 +7,7 @@
 
 #include "engine/core/config.h"
 #include "engine/core/error.h"
-#include "engine/physics/box_sweep.h"
+#include "engine/physics/drag.h"
 #include "engine/physics/rigid_body_integrator.h"
 #include "engine/world/simulation.h"
 
@@ -35,6 +35,7 @@ void PhysicsConfig::Validate() const {
   RequireNonNegative("penetration_slop_m", penetration_slop_m);
   RequirePositive("sweep_fraction", sweep_fraction);
   RequirePositive("max_speed_m_s", max_speed_m_s);
+  ValidateNested(sleep, "sleep");
 }
 
 World::World(std::shared_ptr<const StaticScene> scene, Environment environment,
@@ -43,7 +44,6 @@ World::World(std::shared_ptr<const StaticScene> scene, Environment environment,
       environment_(std::move(environment)),
       physics_(physics),
       collision_(*scene_),
-      solver_(SolverConfig(physics)),
       body_solver_(SolverConfig(physics)) {}
 
 World::~World() = default;
@@ -54,6 +54,7 @@ std::size_t World::AddVehicle(std::unique_ptr<Vehicle> vehicle) {
           "duplicate vehicle name '" + vehicle->name() + "'");
   Slot slot;
   slot.body = collision_.AddBody(vehicle->body().config().box_size_m);
+  slot.solver = ContactSolver(SolverConfig(physics_));
   slot.vehicle = std::move(vehicle);
   slot.contacts.reserve(16);
   slot.touching.reserve(8);
@@ -129,6 +130,7 @@ Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {
                 slots_[vehicle].vehicle->name() + "'");
   }
   sensors.push_back(std::move(sensor));
+  ++sensor_count_;
   return *sensors.back();
 }
 
@@ -153,14 +155,36 @@ int World::FindVehicle(std::string_view name) const {
   return -1;
 }
 
-void World::StepPhysics(TimeNs now_ns, double dt_s) {
-  const bool several = slots_.size() > 1;
-  for (std::size_t i = 0; i < slots_.size(); ++i) {
-    Slot& slot = slots_[i];
-    if (several) slot.p_start_W = slot.vehicle->state().p_W;
-    if (!slot.held) StepVehicle(slot, i, now_ns, dt_s);
+void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
+  if (dt_s != sleep_dt_s_) SetSleepDelay(dt_s);
+  if (slots_.size() == 1) {
+    if (!slots_[0].held) StepVehicle(slots_[0], 0, now_ns, dt_s);
+  } else {
+    ParallelFor(pool, slots_.size(), [&](std::size_t i) {
+      Slot& slot = slots_[i];
+      slot.p_start_W = slot.vehicle->state().p_W;
+      if (!slot.held) StepVehicle(slot, i, now_ns, dt_s);
+    });
   }
-  if (several) ResolveVehicleContacts(now_ns, dt_s);
+  if (!collision_listeners_.empty()) ReportEvents();
+  if (slots_.size() > 1) ResolveVehicleContacts(now_ns, dt_s);
+}
+
+void World::SetSleepDelay(double dt_s) {
+  sleep_dt_s_ = dt_s;
+  // Whole ticks covering the delay (a delay of 0.5 s at 1 ms is 500, not 501 by rounding).
+  sleep_delay_ticks_ =
+      std::max(1, static_cast<int>(std::ceil(physics_.sleep.delay_s / dt_s - 1e-9)));
+}
+
+void World::ReportEvents() {
+  // The listeners hear of the new static contacts on this thread, in vehicle order.
+  for (Slot& slot : slots_) {
+    for (const CollisionEvent& event : slot.events) {
+      for (const auto& listener : collision_listeners_) listener(event);
+    }
+    slot.events.clear();
+  }
 }
 
 void World::CalcLocalConditions(std::size_t i, double* air_density_kg_m3,
@@ -186,6 +210,7 @@ void World::CalcVehiclePoses(std::vector<Eigen::Isometry3d>& T_WB) const {
 void World::SetHeld(std::size_t i, bool held) {
   Slot& slot = slots_[i];
   slot.held = held;
+  Wake(slot);
   if (!held) return;
   RigidBodyState& s = slot.vehicle->state();
   s.v_W.setZero();
@@ -194,6 +219,13 @@ void World::SetHeld(std::size_t i, bool held) {
   slot.accelerations.alpha_B.setZero();
   slot.accelerations.gravity_W = Vec3(0.0, 0.0, environment_.CalcGravity_m_s2(s.p_W));
   slot.contacts.clear();
+}
+
+void World::WakeUp(std::size_t i) { Wake(slots_[i]); }
+
+void World::Wake(Slot& slot) const {
+  slot.asleep = false;
+  slot.rest_ticks = 0;
 }
 
 void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const {
@@ -235,6 +267,16 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   }
   forcing.force_B = wrench.force_B;
   forcing.torque_B = wrench.torque_B;
+  if (slot.asleep) [[unlikely]] {
+    // Asleep it stays where it fell asleep, unless the forces on it grew or its state was changed
+    // from outside (compared to the bit: a sleeping body's state is never touched here).
+    const RigidBodyState& rest = slot.rest_state;
+    if (state.p_W == rest.p_W && state.v_W == rest.v_W && state.w_B == rest.w_B &&
+        state.q_WB.coeffs() == rest.q_WB.coeffs() && IsQuiet(slot, wrench, forcing)) {
+      return;
+    }
+    Wake(slot);
+  }
 
   StepRigidBody(body, forcing, dt_s, state, slot.accelerations);
   if (!IsFinite(state)) Fail(slot, now_ns, "state became non-finite in the integrator");
@@ -258,15 +300,49 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   collision_.FindContacts(slot.body, state.p_W, state.q_WB, 0.0, slot.contacts);
   if (swept) slot.contacts.push_back(swept_hit);
   if (slot.contacts.empty()) {
+    slot.rest_ticks = 0;
     if (!slot.touching.empty()) slot.touching.clear();
     return;
   }
-  const ContactResolution resolution = solver_.Resolve(body, slot.contacts, collision_.colliders(),
-                                                       forcing.gravity_m_s2, dt_s, state);
+  const ContactResolution resolution = slot.solver.Resolve(
+      body, slot.contacts, collision_.colliders(), forcing.gravity_m_s2, dt_s, state);
   // Contact impulses are part of the step's acceleration (an accelerometer feels the landing).
   slot.accelerations.a_W = (state.v_W - v0) / dt_s;
   slot.accelerations.alpha_B = (state.w_B - w0) / dt_s;
   ReportNewContacts(slot, index, now_ns + SecondsToNs(dt_s), resolution);
+  if (physics_.sleep.enabled) CountRest(slot, wrench, forcing);
+}
+
+bool World::IsQuiet(const Slot& slot, const Wrench& wrench, const StepForcing& forcing) const {
+  const RigidBodyModel& body = slot.vehicle->body();
+  const Vec3 air_B = slot.vehicle->state().q_WB.conjugate() * forcing.wind_W;
+  const Vec3 force_B =
+      wrench.force_B + CalcLinearDrag_B(body, forcing.air_density_kg_m3, Vec3(-air_B));
+  const double limit_N = physics_.sleep.force_fraction * body.mass_kg() * forcing.gravity_m_s2;
+  const double limit_Nm = limit_N * body.bounding_radius_m();
+  return force_B.squaredNorm() <= limit_N * limit_N &&
+         wrench.torque_B.squaredNorm() <= limit_Nm * limit_Nm;
+}
+
+void World::CountRest(Slot& slot, const Wrench& wrench, const StepForcing& forcing) {
+  RigidBodyState& state = slot.vehicle->state();
+  const SleepConfig& sleep = physics_.sleep;
+  const bool at_rest =
+      state.v_W.squaredNorm() < sleep.linear_speed_m_s * sleep.linear_speed_m_s &&
+      state.w_B.squaredNorm() < sleep.angular_speed_rad_s * sleep.angular_speed_rad_s &&
+      IsQuiet(slot, wrench, forcing);
+  if (!at_rest) {
+    slot.rest_ticks = 0;
+    return;
+  }
+  if (++slot.rest_ticks < sleep_delay_ticks_) return;
+  // Asleep: still, and its sensors read it at rest (gravity only), until something wakes it.
+  slot.asleep = true;
+  state.v_W.setZero();
+  state.w_B.setZero();
+  slot.accelerations.a_W.setZero();
+  slot.accelerations.alpha_B.setZero();
+  slot.rest_state = state;
 }
 
 void World::RefreshLocalEnvironment(Slot& slot, TimeNs now_ns, const Vec3& p_W) const {
@@ -317,177 +393,10 @@ void World::ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
       event.point_W = best->point_W;
       event.normal_W = best->normal_W;
       event.impulse_Ns = resolution.impulse_W.norm();
-      for (const auto& listener : collision_listeners_) listener(event);
+      slot.events.push_back(std::move(event));
     }
   }
   std::swap(slot.touching, slot.touching_next);
-}
-
-std::size_t World::FindVehiclePairContacts(std::size_t i, std::size_t j) {
-  Slot& a = slots_[i];
-  Slot& b = slots_[j];
-  if (a.held && b.held) return 0;
-  RigidBodyState& sa = a.vehicle->state();
-  RigidBodyState& sb = b.vehicle->state();
-  const RigidBodyModel& ma = a.vehicle->body();
-  const RigidBodyModel& mb = b.vehicle->body();
-  // Bounding spheres along the relative path of the tick (a held vehicle's start is its pose).
-  const Vec3 start_W = a.p_start_W - b.p_start_W;
-  const Vec3 motion_W = (sa.p_W - sb.p_W) - start_W;
-  const double reach_m = ma.bounding_radius_m() + mb.bounding_radius_m();
-  const double motion2 = motion_W.squaredNorm();
-  const double closest =
-      motion2 > 0.0 ? std::clamp(-start_W.dot(motion_W) / motion2, 0.0, 1.0) : 0.0;
-  if ((start_W + closest * motion_W).squaredNorm() > reach_m * reach_m) return 0;
-
-  // Continuous collision: when the two close by more than sweep_fraction of the thinner one's
-  // smallest half-extent in one tick, the exact time of impact of their boxes (attitudes of the
-  // end of the step) takes both back along their paths to where they have just met, leaving at
-  // most that much overlap: nothing passes through, however fast.
-  const double sweep_beyond_m =
-      physics_.sweep_fraction * std::min(ma.min_half_extent_m(), mb.min_half_extent_m());
-  if (motion2 > sweep_beyond_m * sweep_beyond_m) {
-    const OrientedBox box_a{a.p_start_W, sa.q_WB.toRotationMatrix(), 0.5 * ma.config().box_size_m};
-    const OrientedBox box_b{b.p_start_W, sb.q_WB.toRotationMatrix(), 0.5 * mb.config().box_size_m};
-    const double impact = CalcBoxTimeOfImpact(box_a, box_b, motion_W);
-    if (impact > 0.0 && impact <= 1.0) {
-      const double back_to = std::min(1.0, impact + sweep_beyond_m / std::sqrt(motion2));
-      if (back_to < 1.0) {
-        sa.p_W = a.p_start_W + back_to * (sa.p_W - a.p_start_W);
-        sb.p_W = b.p_start_W + back_to * (sb.p_W - b.p_start_W);
-      }
-    }
-  }
-
-  collision_.FindBodyContacts(a.body, sa.p_W, sa.q_WB, b.body, sb.p_W, sb.q_WB, pair_scratch_);
-  // Material pairs combine by averaging, as with static colliders.
-  const double restitution = 0.5 * (ma.config().restitution + mb.config().restitution);
-  const double friction = 0.5 * (ma.config().friction + mb.config().friction);
-  for (const Contact& c : pair_scratch_) {
-    BodyContact contact;
-    contact.a = static_cast<int>(i);
-    contact.b = static_cast<int>(j);
-    contact.point_W = c.point_W;
-    contact.normal_W = c.normal_W;
-    contact.depth_m = c.depth_m;
-    contact.restitution = restitution;
-    contact.friction = friction;
-    vehicle_contacts_.push_back(contact);
-  }
-  return pair_scratch_.size();
-}
-
-void World::ResolveVehicleContacts(TimeNs now_ns, double dt_s) {
-  vehicle_contacts_.clear();
-  pairs_.clear();
-  const std::size_t n = slots_.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const std::size_t first = vehicle_contacts_.size();
-      const std::size_t count = FindVehiclePairContacts(i, j);
-      if (count > 0) pairs_.push_back(VehiclePair{i, j, first, count});
-    }
-  }
-  if (pairs_.empty()) {
-    touching_pairs_.clear();
-    return;
-  }
-
-  // One solve over the vehicles in contact: their contacts with each other, and their static
-  // contacts of this tick (already resolved alone in StepVehicle; with them, a vehicle resting on
-  // the ground carries one that lands on it instead of being pushed into the ground). The static
-  // projection left those at most the slop deep.
-  solve_index_.assign(n, -1);
-  solve_bodies_.clear();
-  solve_vehicles_.clear();
-  auto add_body = [&](std::size_t k) {
-    if (solve_index_[k] >= 0) return;
-    solve_index_[k] = static_cast<int>(solve_bodies_.size());
-    Slot& slot = slots_[k];
-    solve_bodies_.push_back(ContactBody{&slot.vehicle->body(), &slot.vehicle->state(), slot.held});
-    solve_vehicles_.push_back(k);
-  };
-  for (const VehiclePair& pair : pairs_) {
-    add_body(pair.a);
-    add_body(pair.b);
-  }
-  solve_contacts_.clear();
-  for (BodyContact c : vehicle_contacts_) {
-    c.a = solve_index_[static_cast<std::size_t>(c.a)];
-    c.b = solve_index_[static_cast<std::size_t>(c.b)];
-    solve_contacts_.push_back(c);
-  }
-  double gravity_m_s2 = 0.0;
-  v_before_W_.resize(solve_bodies_.size());
-  w_before_B_.resize(solve_bodies_.size());
-  for (std::size_t s = 0; s < solve_bodies_.size(); ++s) {
-    const Slot& slot = slots_[solve_vehicles_[s]];
-    const RigidBodyState& state = *solve_bodies_[s].state;
-    v_before_W_[s] = state.v_W;
-    w_before_B_[s] = state.w_B;
-    if (slot.held) continue;
-    gravity_m_s2 = std::max(gravity_m_s2, slot.local.gravity_m_s2);
-    const RigidBodyConfig& material = slot.vehicle->body().config();
-    for (const Contact& c : slot.contacts) {
-      const Collider& other = collision_.colliders()[c.collider];
-      BodyContact contact;
-      contact.a = static_cast<int>(s);
-      contact.b = -1;
-      contact.point_W = c.point_W;
-      contact.normal_W = c.normal_W;
-      contact.depth_m = std::min(c.depth_m, physics_.penetration_slop_m);
-      contact.restitution = 0.5 * (material.restitution + other.restitution);
-      contact.friction = 0.5 * (material.friction + other.friction);
-      solve_contacts_.push_back(contact);
-    }
-  }
-  body_solver_.Resolve(solve_bodies_, solve_contacts_, gravity_m_s2, dt_s);
-
-  // The impulses are part of the step's acceleration (each vehicle's accelerometer feels them).
-  for (std::size_t s = 0; s < solve_bodies_.size(); ++s) {
-    Slot& slot = slots_[solve_vehicles_[s]];
-    if (slot.held) continue;
-    const RigidBodyState& state = *solve_bodies_[s].state;
-    slot.accelerations.a_W += (state.v_W - v_before_W_[s]) / dt_s;
-    slot.accelerations.alpha_B += (state.w_B - w_before_B_[s]) / dt_s;
-  }
-  ReportNewVehicleContacts(now_ns + SecondsToNs(dt_s));
-}
-
-void World::ReportNewVehicleContacts(TimeNs end_ns) {
-  touching_pairs_next_.clear();
-  for (const VehiclePair& pair : pairs_) {
-    touching_pairs_next_.emplace_back(pair.a, pair.b);
-    if (collision_listeners_.empty() ||
-        std::find(touching_pairs_.begin(), touching_pairs_.end(), touching_pairs_next_.back()) !=
-            touching_pairs_.end()) {
-      continue;
-    }
-    // Point and normal: the contact that pushed hardest; impulse: all of the pair's together (the
-    // solve's contacts begin with vehicle_contacts_, in the same order).
-    std::size_t best = pair.first;
-    Vec3 impulse_W = Vec3::Zero();
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-      impulse_W += body_solver_.impulse_W(k);
-      if (body_solver_.normal_impulse_Ns(k) > body_solver_.normal_impulse_Ns(best)) best = k;
-    }
-    const BodyContact& contact = vehicle_contacts_[best];
-    for (const bool first : {true, false}) {
-      const std::size_t self = first ? pair.a : pair.b;
-      const std::size_t other = first ? pair.b : pair.a;
-      CollisionEvent event;
-      event.time_ns = end_ns;
-      event.vehicle = self;
-      event.vehicle_name = slots_[self].vehicle->name();
-      event.object_name = slots_[other].vehicle->name();
-      event.other_vehicle = static_cast<int>(other);
-      event.point_W = contact.point_W;
-      event.normal_W = first ? contact.normal_W : Vec3(-contact.normal_W);
-      event.impulse_Ns = impulse_W.norm();
-      for (const auto& listener : collision_listeners_) listener(event);
-    }
-  }
-  std::swap(touching_pairs_, touching_pairs_next_);
 }
 
 }  // namespace airis::engine

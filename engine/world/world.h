@@ -11,10 +11,14 @@
 #include <vector>
 
 #include "engine/core/clock.h"
+#include "engine/core/worker_pool.h"
 #include "engine/environment/environment.h"
+#include "engine/physics/body_broadphase.h"
 #include "engine/physics/body_contact_solver.h"
 #include "engine/physics/collision_world.h"
 #include "engine/physics/contact_solver.h"
+#include "engine/physics/rigid_body_integrator.h"
+#include "engine/physics/sleep_config.h"
 #include "engine/scene/static_scene.h"
 #include "engine/world/ray_caster.h"
 #include "engine/world/sensor.h"
@@ -47,6 +51,7 @@ struct PhysicsConfig {
   /// (continuous collision: nothing tunnels through thin walls).
   double sweep_fraction = 0.5;
   double max_speed_m_s = 10000.0;  ///< a body faster than this stops the run (diverged)
+  SleepConfig sleep;               ///< bodies at rest on a static surface sleep
 
   template <class V>
   void Visit(V& v) {
@@ -57,7 +62,10 @@ struct PhysicsConfig {
     v.Field("sweep_fraction", sweep_fraction,
             "sweep a step longer than this fraction of the body's smallest half-extent");
     v.Field("max_speed_m_s", max_speed_m_s, "speed above which the run stops as diverged (m/s)");
+    v.Field("sleep", sleep,
+            "bodies at rest on a static surface stop being simulated (docs/physics.md)");
   }
+  /// Throws InvalidField naming the field (`sleep.delay_s` for a nested one).
   void Validate() const;
 };
 
@@ -105,9 +113,15 @@ class World {
   /// Holds vehicle `i` kinematically where its state puts it (true) or simulates it again (false).
   /// A held vehicle is not moved, pushed or collided by StepPhysics; its velocities are zeroed and
   /// its accelerations read as at rest (gravity only). For placing cameras at chosen poses (mission
-  /// step random_poses).
+  /// step random_poses). Either way it is awake.
   void SetHeld(std::size_t i, bool held);
   bool held(std::size_t i) const { return slots_[i].held; }
+  /// Whether vehicle `i` sleeps (PhysicsConfig::sleep: at rest on a static surface, not simulated
+  /// until something wakes it).
+  bool asleep(std::size_t i) const { return slots_[i].asleep; }
+  /// Wakes vehicle `i` (if asleep): it is simulated from the next step on, and must rest for the
+  /// whole sleep delay again before it sleeps. Changing its state from outside wakes it as well.
+  void WakeUp(std::size_t i);
   /// Air density (kg/m^3) and gravity (m/s^2) at vehicle `i`'s current position, from the same
   /// cached local model the physics step uses (no atmosphere evaluation unless the vehicle has not
   /// been stepped yet).
@@ -117,7 +131,7 @@ class World {
     return slots_[i].accelerations;
   }
   /// Contacts of vehicle `i` with the static scene found in the last step (after the sweep, before
-  /// their resolution).
+  /// their resolution); while it sleeps, those it fell asleep on.
   std::span<const Contact> contacts(std::size_t i) const { return slots_[i].contacts; }
   /// Vehicle-vehicle contacts found in the last step, before their resolution: `a` and `b` are
   /// vehicle indices (a < b), the normal points from b toward a.
@@ -125,24 +139,30 @@ class World {
   std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const {
     return slots_[i].sensors;
   }
+  /// Sensors on all vehicles together.
+  std::size_t sensor_count() const { return sensor_count_; }
 
   /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world; may be
   /// null).
   void set_ray_caster(std::unique_ptr<RayCaster> caster) { ray_caster_ = std::move(caster); }
   const RayCaster* ray_caster() const { return ray_caster_.get(); }
 
-  /// Calls `listener` for every collision event (in the simulation thread, during StepPhysics).
+  /// Calls `listener` for every collision event (on the thread that calls StepPhysics, during it,
+  /// in vehicle order whatever the number of threads).
   void AddCollisionListener(std::function<void(const CollisionEvent&)> listener) {
     collision_listeners_.push_back(std::move(listener));
   }
 
   /// Moves every vehicle over one step [now_ns, now_ns + dt]: actuators -> integrator -> swept and
-  /// discrete collision detection -> contact response, each vehicle against the static scene; then,
-  /// with several vehicles, contacts between vehicles (swept when they close fast) resolved
-  /// together with those vehicles' static contacts. Throws SimulationError naming the vehicle, the
-  /// time and the cause when a state becomes non-finite or absurd, or a body leaves the atmosphere
-  /// model's range.
-  void StepPhysics(TimeNs now_ns, double dt_s);
+  /// discrete collision detection -> contact response, each vehicle against the static scene (on
+  /// `pool`'s threads when given: each vehicle is independent here); then, with several vehicles,
+  /// contacts between vehicles (a broadphase over the vehicles' swept bounds finds the pairs; swept
+  /// when they close fast) resolved together with those vehicles' static contacts, on the calling
+  /// thread in the order of the vehicle indices. Results do not depend on the pool. A sleeping
+  /// vehicle only advances its actuators (PhysicsConfig::sleep). Throws SimulationError naming the
+  /// vehicle, the time and the cause when a state becomes non-finite or absurd, or a body leaves
+  /// the atmosphere model's range (with several failing, the one of least index).
+  void StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool = nullptr);
 
   const StaticScene& scene() const { return *scene_; }
   Environment& environment() { return environment_; }
@@ -170,7 +190,13 @@ class World {
     std::vector<Contact> contacts;
     std::vector<std::uint32_t> touching;       // colliders in contact in the last tick
     std::vector<std::uint32_t> touching_next;  // scratch
+    ContactSolver solver;                      // its own: vehicles step in parallel
+    std::vector<CollisionEvent> events;        // of this step, for the listeners
     Vec3 p_start_W = Vec3::Zero();  // position at the start of the tick (several vehicles)
+    // Sleeping (PhysicsConfig::sleep): ticks at rest in a row, and the state it fell asleep in.
+    int rest_ticks = 0;
+    bool asleep = false;
+    RigidBodyState rest_state;
   };
   // The vehicle-vehicle contacts of one pair of vehicles in vehicle_contacts_.
   struct VehiclePair {
@@ -178,6 +204,14 @@ class World {
     std::size_t first, count;  // range in vehicle_contacts_
   };
   void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
+  void SetSleepDelay(double dt_s);
+  void ReportEvents();  // the vehicles' new static contacts, to the listeners
+  // Whether the forces on the body other than gravity and contacts (the actuator wrench, the
+  // wind's drag at rest) are within the sleep bound.
+  bool IsQuiet(const Slot& slot, const Wrench& wrench, const StepForcing& forcing) const;
+  // Counts a tick at rest (or resets the count) and puts the body to sleep after the delay.
+  void CountRest(Slot& slot, const Wrench& wrench, const StepForcing& forcing);
+  void Wake(Slot& slot) const;
   void RefreshLocalEnvironment(Slot& slot, TimeNs now_ns, const Vec3& p_W) const;
   [[noreturn]] void Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const;
   void ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
@@ -192,12 +226,17 @@ class World {
   Environment environment_;
   PhysicsConfig physics_;
   CollisionWorld collision_;
-  ContactSolver solver_;
   BodyContactSolver body_solver_;
+  int sleep_delay_ticks_ = 0;  // sleep.delay_s in ticks of sleep_dt_s_
+  double sleep_dt_s_ = 0.0;
   std::vector<Slot> slots_;
+  std::size_t sensor_count_ = 0;
   std::unique_ptr<RayCaster> ray_caster_;
   std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
   // Vehicle-vehicle contact state (used only with several vehicles).
+  BodyBroadphase broadphase_;
+  std::vector<BodyBounds> swept_bounds_;  // per vehicle, over this tick
+  std::vector<BodyPair> near_pairs_;      // the broadphase's pairs
   std::vector<BodyContact> vehicle_contacts_;
   std::vector<VehiclePair> pairs_;                                   // touching pairs of this tick
   std::vector<std::pair<std::size_t, std::size_t>> touching_pairs_;  // of the last tick

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
+#include <thread>
+#include <vector>
+
 #include "tests/fixtures/box_scenes.h"
 #include "tests/fixtures/test_environment.h"
 
@@ -179,6 +184,105 @@ TEST(CollisionWorldTest, TwoBodiesFarFromTheOriginHaveExactFaceContacts) {
   world.FindBodyContacts(a, p_b + Vec3(0.181, 0.0, 0.0), Quat::Identity(), b, p_b, Quat::Identity(),
                          contacts);
   EXPECT_TRUE(contacts.empty());
+}
+
+// A scene with every kind of static shape a box meets: the ground (box-box), a triangle mesh, a
+// convex hull and a rotated box, 8 m apart along x.
+BoxSceneBuilder ShapesScene() {
+  BoxSceneBuilder b;
+  b.AddGround();
+  b.AddBox("mesh", Vec3(0.0, 0.0, -0.5), Vec3(4.0, 4.0, 1.0), -1, CollisionShape::kTriangleMesh);
+  b.AddBox("hull", Vec3(8.0, 0.0, -0.5), Vec3(4.0, 4.0, 1.0), -1, CollisionShape::kConvexHull);
+  b.AddBox("crate", Vec3(16.0, 0.0, -0.5), Vec3(4.0, 4.0, 1.0), -1, CollisionShape::kAuto,
+           Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ())));
+  return b;
+}
+
+// The pose of a body at step k of a path that slides, tilted and sunk 1-5 mm, over the ground and
+// onto and off each shape.
+void PathPose(int k, Vec3* p_W, Quat* q_WB) {
+  const double s = 0.01 * k;
+  const bool on_top = std::fmod(s, 8.0) < 4.0;  // over a shape (x = -2 to 2, 6 to 10, ...)
+  *p_W =
+      Vec3(-2.0 + s, 0.3 * std::sin(s), (on_top ? -1.0 : 0.0) - 0.018 + 0.002 * std::sin(7.0 * s));
+  *q_WB = Quat(Eigen::AngleAxisd(0.05 * std::sin(3.0 * s), Vec3::UnitX()) *
+               Eigen::AngleAxisd(s, Vec3::UnitZ()));
+}
+
+bool SameContacts(const std::vector<Contact>& a, const std::vector<Contact>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].point_W != b[i].point_W || a[i].normal_W != b[i].normal_W ||
+        a[i].depth_m != b[i].depth_m || a[i].collider != b[i].collider) {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(CollisionWorldTest, KeptAlgorithmsGiveTheContactsOfNewOnes) {
+  // GIVEN a body that slides along the path, keeping Bullet's algorithm for each collider it stays
+  // near, and in a copy of the world a new body at each pose (new algorithms every time)
+  BoxSceneBuilder b = ShapesScene();
+  CollisionWorld kept(b.scene());
+  CollisionWorld fresh(b.scene());
+  const int body = kept.AddBody(kQuadBox);
+  std::vector<Contact> with_history, without;
+  int touching = 0;
+  for (int k = 0; k < 2200; ++k) {
+    Vec3 p_W;
+    Quat q_WB;
+    PathPose(k, &p_W, &q_WB);
+    kept.FindContacts(body, p_W, q_WB, 0.0, with_history);
+    fresh.FindContacts(fresh.AddBody(kQuadBox), p_W, q_WB, 0.0, without);
+    // THEN the contacts are the same to the bit at every pose
+    ASSERT_TRUE(SameContacts(with_history, without)) << "step " << k;
+    touching += with_history.empty() ? 0 : 1;
+  }
+  EXPECT_GT(touching, 1800);  // it touched something most of the way
+}
+
+TEST(CollisionWorldTest, BodiesQueriedOnTwoThreadsGetTheContactsOfOneThread) {
+  // GIVEN 16 bodies at different points of the path, queried by two threads at once (8 each) in
+  // one world, and one after the other in another
+  BoxSceneBuilder b = ShapesScene();
+  CollisionWorld parallel(b.scene());
+  CollisionWorld serial(b.scene());
+  constexpr int kBodies = 16, kSteps = 400;
+  for (int i = 0; i < kBodies; ++i) {
+    parallel.AddBody(kQuadBox);
+    serial.AddBody(kQuadBox);
+  }
+  auto query = [](CollisionWorld& world, int body, int step, std::vector<Contact>& out) {
+    Vec3 p_W;
+    Quat q_WB;
+    PathPose(body * 130 + step, &p_W, &q_WB);
+    world.FindContacts(body, p_W, q_WB, 0.0, out);
+    if (step % 50 == 0) {  // and a sweep now and then
+      Contact hit;
+      const double f = world.Sweep(body, q_WB, p_W - Vec3(0.0, 0.0, 1.0), p_W, &hit);
+      out.push_back(Contact{Vec3::Constant(f), hit.normal_W, hit.depth_m, hit.collider});
+    }
+  };
+  std::vector<std::vector<std::vector<Contact>>> got(kBodies,
+                                                     std::vector<std::vector<Contact>>(kSteps));
+  auto run = [&](int first) {
+    for (int step = 0; step < kSteps; ++step) {
+      for (int body = first; body < kBodies; body += 2)
+        query(parallel, body, step, got[body][step]);
+    }
+  };
+  std::thread other(run, 1);
+  run(0);
+  other.join();
+  // THEN every query found what it finds alone
+  std::vector<Contact> expected;
+  for (int step = 0; step < kSteps; ++step) {
+    for (int body = 0; body < kBodies; ++body) {
+      query(serial, body, step, expected);
+      ASSERT_TRUE(SameContacts(got[body][step], expected)) << "body " << body << " step " << step;
+    }
+  }
 }
 
 }  // namespace

@@ -26,6 +26,22 @@ TEST(ExampleScenesTest, EmptyIsGroundOnly) {
   ASSERT_EQ(s.vehicles.size(), 1u);
 }
 
+TEST(ExampleScenesTest, SwarmIsAHundredParkedQuadsWithTheirSensors) {
+  const Scene s = LoadScene("scenes/swarm.yaml");
+  ASSERT_EQ(s.vehicles.size(), 100u);
+  for (std::size_t i = 0; i < s.vehicles.size(); ++i) {
+    const VehicleDescription& v = s.vehicles[i];
+    EXPECT_EQ(v.name, "drone" + std::string(i < 10 ? "0" : "") + std::to_string(i));
+    EXPECT_TRUE(v.on_ground) << v.name;
+    ASSERT_EQ(v.sensors.size(), 4u) << v.name;  // one list, shared through a YAML anchor
+    EXPECT_EQ(v.sensors[0].spec->kind(), "imu");
+    EXPECT_EQ(v.sensors[3].spec->kind(), "gps");
+  }
+  // 2 m apart on a 10 x 10 grid about the origin
+  EXPECT_EQ(s.vehicles[0].start.p_W.head<2>(), Eigen::Vector2d(-9.0, -9.0));
+  EXPECT_EQ(s.vehicles[99].start.p_W.head<2>(), Eigen::Vector2d(9.0, 9.0));
+}
+
 TEST(ExampleScenesTest, CityHasHundredsOfBuildingsStreetsCarsAndLamps) {
   const Scene s = LoadScene("scenes/city.yaml");
   const auto count = CountByClass(s);

@@ -1,13 +1,15 @@
-// `airis bench [physics|sensors|render|dataset] [--json]`: the benchmark tables for users, measured
-// on their machine.
+// `airis bench [physics|sensors|render|dataset] [--json]` and `airis bench vehicles [--count N]
+// [--resting M] [--threads T] [--json]`: the benchmark tables for users, measured on their machine.
 #include <cstdio>
 #include <memory>
 #include <string>
 
+#include "engine/core/error.h"
 #include "tools/bench/bench_dataset.h"
 #include "tools/bench/bench_physics.h"
 #include "tools/bench/bench_render.h"
 #include "tools/bench/bench_sensors.h"
+#include "tools/bench/bench_vehicles.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 
@@ -65,6 +67,32 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
       });
     });
   }
+
+  struct VehicleArgs {
+    std::string count = "100", resting = "0", threads = "1";
+  };
+  auto args = std::make_shared<VehicleArgs>();
+  CLI::App* vehicles = cmd->add_subcommand(
+      "vehicles",
+      "ticks per second of a swarm in scenes/city.yaml: N quads holding position with their four "
+      "sensors, M parked (run from the repository root)");
+  vehicles->add_option("--count", args->count, "flying quads (default 100)");
+  vehicles->add_option("--resting", args->resting, "parked quads among them (default 0)");
+  vehicles->add_option("--threads", args->threads, "threads that step the vehicles (default 1)");
+  vehicles->add_flag("--json", *json, "one JSON object instead of a table");
+  vehicles->callback([&exit_code, json, args] {
+    exit_code = RunReportingErrors([&] {
+      VehicleBenchOptions options;
+      options.swarm.flying = ParseWholeNumber("count", args->count, 0, 100000);
+      options.swarm.resting = ParseWholeNumber("resting", args->resting, 0, 100000);
+      options.swarm.threads = ParseThreads(args->threads);
+      if (options.swarm.flying + options.swarm.resting == 0) {
+        throw engine::ConfigError({}, "--count", "no vehicle to step (--count 0 --resting 0)");
+      }
+      Print("airis bench vehicles", RunVehicleBench(options), *json);
+      return 0;
+    });
+  });
 }
 
 }  // namespace airis::tools

@@ -107,4 +107,18 @@ std::uint64_t ParseSeed(const std::string& name, const std::string& text) {
   return value;
 }
 
+int ParseWholeNumber(const std::string& name, const std::string& text, int lo, int hi) {
+  int value = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || value < lo ||
+      value > hi) {
+    throw engine::ConfigError({}, "--" + name,
+                              "must be a whole number from " + std::to_string(lo) + " to " +
+                                  std::to_string(hi) + " (got '" + text + "')");
+  }
+  return value;
+}
+
+int ParseThreads(const std::string& text) { return ParseWholeNumber("threads", text, 1, 64); }
+
 }  // namespace airis::tools

@@ -39,4 +39,11 @@ void AddSceneOverrideOption(CLI::App* cmd, std::vector<std::string>& texts);
 /// option.
 std::uint64_t ParseSeed(const std::string& name, const std::string& text);
 
+/// Parses `text` as a whole number from `lo` to `hi` for option `--name`, or throws ConfigError
+/// naming the option.
+int ParseWholeNumber(const std::string& name, const std::string& text, int lo, int hi);
+
+/// Parses `--threads` (threads that step the vehicles): a whole number from 1 to 64.
+int ParseThreads(const std::string& text);
+
 }  // namespace airis::tools

@@ -1,6 +1,6 @@
 // `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--set KEY=VALUE]...
-//  [--cameras a,b] [--shard K/N] [--resume] [--formats npy,normals,tartanair] [--workers N]`:
-//  flies the mission and writes a labeled dataset.
+//  [--cameras a,b] [--shard K/N] [--resume] [--formats npy,normals,tartanair] [--workers N]
+//  [--threads N]`: flies the mission and writes a labeled dataset.
 // `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
 // `airis dataset ... --slurm N [--only-shards K,...]`: submits the shards and their merge to Slurm;
 // `airis dataset status DIR [--json]`: how far they got (docs/cluster.md).
@@ -39,6 +39,7 @@ namespace fs = std::filesystem;
 struct DatasetArgs : DatasetWriteArgs {
   std::string scene, mission, out, seed, shard;
   std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string threads = "1";
   std::string streams = "capture";
   bool resume = false;
   int slurm = 0;  // N of --slurm N; 0 = run here
@@ -102,6 +103,7 @@ int Run(const DatasetArgs& a) {
   o.scene.overrides = scenes::ParseSceneOverrides(a.overrides);
   o.mission = a.mission;
   o.shard = ParseShard(a.shard);
+  o.threads = ParseThreads(a.threads);
   o.full_streams = ParseStreams(a.streams);
   o.resume = a.resume;
   const StopOnSignals signals;
@@ -197,6 +199,7 @@ int SubmitToSlurm(const DatasetArgs& a) {
   if (!a.seed.empty()) ParseSeed("seed", a.seed);
   ParseDatasetWriteArgs(a, a.out);
   ParseStreams(a.streams);
+  ParseThreads(a.threads);
   DatasetOptionValues v;
   v.seed = a.seed;
   v.overrides = scenes::SceneOverrideTexts(scenes::ParseSceneOverrides(a.overrides));
@@ -206,6 +209,7 @@ int SubmitToSlurm(const DatasetArgs& a) {
   v.stream_format = a.stream_format;
   v.min_object_area_px = std::to_string(a.min_object_area_px);
   v.workers = std::to_string(a.workers);
+  v.threads = a.threads;
   plan.dataset.options = DatasetOptionWords(v);
   plan.out = fs::absolute(a.out).lexically_normal().string();
   if (plan.out.size() > 1 && plan.out.back() == '/') plan.out.pop_back();
@@ -286,6 +290,8 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   AddDatasetWriteOptions(cmd, *a);
   cmd->add_option("--shard", a->shard,
                   "write shard K of N (every N-th frame from the K-th); join with 'merge'");
+  cmd->add_option("--threads", a->threads,
+                  "threads that step the vehicles (default 1; the results do not depend on it)");
   cmd->add_option("--streams", a->streams,
                   "sensor, truth and command rows of the capture windows (capture, default) or "
                   "of the whole flight (flight)");

@@ -1,6 +1,6 @@
 // `airis px4 SCENE.yaml [--out DIR | --dataset DIR [--cameras a,b] [--formats ...] [--workers N]
 // [--stream-format F] [--min-object-area-px N]] [--seed N] [--set KEY=VALUE]... [--until SECONDS]
-// [--realtime [FACTOR]]` and `airis px4 airframe SCENE.yaml --vehicle NAME [--id N]`
+// [--realtime [FACTOR]] [--threads N]` and `airis px4 airframe SCENE.yaml --vehicle NAME [--id N]`
 // (docs/px4.md).
 #include <unistd.h>
 
@@ -30,6 +30,7 @@ struct Px4Args : DatasetWriteArgs {
   bool realtime_given = false;
   std::string until;
   std::string truth_rate = "100";
+  std::string threads = "1";
 };
 
 struct AirframeArgs {
@@ -56,6 +57,7 @@ int Serve(const Px4Args& a) {
     job.until_ns = engine::SecondsToNs(ParseFiniteNumber("until", a.until), "--until");
   }
   job.truth_rate_hz = ParseFiniteNumber("truth-rate", a.truth_rate);
+  job.threads = ParseThreads(a.threads);
   if (!a.dataset.empty()) job.dataset = ParseDatasetWriteArgs(a, a.dataset);
   job.log = PrintToStderr;
   const StopOnSignals signals;
@@ -137,6 +139,8 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
                   "station or a person)")
       ->expected(0, 1);
   cmd->add_option("--truth-rate", a->truth_rate, "ground-truth log rate (Hz, default 100)");
+  cmd->add_option("--threads", a->threads,
+                  "threads that step the vehicles (default 1; the results do not depend on it)");
   cmd->callback([a, cmd, airframe, &exit_code] {
     if (airframe->parsed()) return;
     a->realtime_given = cmd->count("--realtime") > 0;

@@ -1,5 +1,5 @@
 // `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--set KEY=VALUE]...
-// [--realtime [FACTOR]] [--until SECONDS]`
+// [--realtime [FACTOR]] [--until SECONDS] [--threads N]`
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,6 +28,7 @@ struct RunOptions {
   bool realtime_given = false;
   std::string until;
   std::string truth_rate = "100";
+  std::string threads = "1";
 };
 
 // One line, rewritten in place, when stderr is a terminal.
@@ -63,6 +64,7 @@ int Run(const RunOptions& o) {
   }
   job.truth_rate_hz = ParseFiniteNumber("truth-rate", o.truth_rate);
   if (job.truth_rate_hz <= 0.0) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+  job.threads = ParseThreads(o.threads);
 
   job.log = PrintToStderr;
   const StopOnSignals signals;
@@ -129,6 +131,8 @@ void AddRunCommand(CLI::App& app, int& exit_code) {
       ->expected(0, 1);
   cmd->add_option("--until", options->until, "stop after this many simulated seconds");
   cmd->add_option("--truth-rate", options->truth_rate, "ground-truth log rate (Hz, default 100)");
+  cmd->add_option("--threads", options->threads,
+                  "threads that step the vehicles (default 1; the results do not depend on it)");
   cmd->callback([options, cmd, &exit_code] {
     options->realtime_given = cmd->count("--realtime") > 0;
     exit_code = RunReportingErrors([&] {

@@ -11,7 +11,7 @@ namespace airis::tools {
 DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
                                const std::function<void(const JobProgress&)>& progress) {
   CheckDatasetWriteOptions(o);
-  SimulationJob job(o.scene);
+  SimulationJob job(o.scene, o.threads);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   const std::vector<std::size_t> vehicles = job.CheckMission(mission);
   AttachAutopilots(job, o.log);  // PX4 vehicles: their links open before anything is written

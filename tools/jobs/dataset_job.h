@@ -17,6 +17,7 @@ namespace airis::tools {
 struct DatasetJobOptions : DatasetWriteOptions {
   SceneSource scene;    ///< the scene file, the seed that replaces its own, its overrides
   std::string mission;  ///< mission file (YAML)
+  int threads = 1;      ///< threads that step the vehicles, 1 to 64 (results do not depend on it)
   /// Set to a signal number to stop: the frame in flight is finished, the outputs are written and
   /// the manifest says incomplete (a front end's signal handler sets it).
   const std::atomic<int>* stop = nullptr;

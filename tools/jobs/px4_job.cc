@@ -47,7 +47,7 @@ nlohmann::json Px4ManifestEntry(const std::vector<Px4VehicleReport>& vehicles) {
 Px4JobResult RunPx4Job(const Px4JobOptions& o,
                        const std::function<void(const JobProgress&)>& progress) {
   const std::optional<DatasetWriteOptions> dataset_options = SessionDataset(o);
-  SimulationJob job(o.scene);
+  SimulationJob job(o.scene, o.threads);
   CheckPacingOptions(o.realtime, o.truth_rate_hz, job.scene().physics.rate_hz, o.until_ns);
   if (!dataset_options) job.DisableImageSensors();
   const std::vector<AttachedAutopilot> px4 = AttachAutopilots(job, o.log);

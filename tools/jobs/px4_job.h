@@ -29,6 +29,7 @@ struct Px4JobOptions {
   std::optional<double> realtime;  ///< pace simulated time to wall time at this factor (> 0)
   engine::TimeNs until_ns = std::numeric_limits<engine::TimeNs>::max();  ///< stop then
   double truth_rate_hz = 100.0;
+  int threads = 1;  ///< threads that step the vehicles, 1 to 64 (results do not depend on it)
   const std::atomic<int>* stop = nullptr;       ///< a signal number stops the run (logs closed)
   std::function<void(const std::string&)> log;  ///< progress lines (PX4 connected, lockstep)
 };

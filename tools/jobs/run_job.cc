@@ -12,7 +12,7 @@ namespace airis::tools {
 
 RunJobResult RunMissionJob(const RunJobOptions& o,
                            const std::function<void(const JobProgress&)>& progress) {
-  SimulationJob job(o.scene);
+  SimulationJob job(o.scene, o.threads);
   CheckPacingOptions(o.realtime, o.truth_rate_hz, job.scene().physics.rate_hz, o.until_ns);
   const engine::Mission mission = scenes::LoadMissionFile(o.mission);
   job.CheckMission(mission);  // a mission that cannot be flown fails before anything is written

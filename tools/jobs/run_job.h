@@ -19,6 +19,7 @@ struct RunJobOptions {
   std::optional<double> realtime;  ///< pace simulated time to wall time at this factor (> 0)
   engine::TimeNs until_ns = std::numeric_limits<engine::TimeNs>::max();  ///< stop early
   double truth_rate_hz = 100.0;  ///< ground-truth rows per simulated second
+  int threads = 1;  ///< threads that step the vehicles, 1 to 64 (results do not depend on it)
   /// Set to a signal number to stop early (the logs are closed in place).
   const std::atomic<int>* stop = nullptr;
   /// Lines for the user from a vehicle flown by PX4 (connected, in lockstep, what it lacks).

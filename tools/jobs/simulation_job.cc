@@ -15,17 +15,18 @@ scenes::Scene LoadSceneSource(const SceneSource& source) {
                              : scenes::LoadSceneFromString(source.text, source.path, options);
 }
 
-SimulationJob::SimulationJob(const SceneSource& source) : SimulationJob(source, true) {}
+SimulationJob::SimulationJob(const SceneSource& source, int threads)
+    : SimulationJob(source, threads, true) {}
 
 SimulationJob SimulationJob::WithoutCameras(const SceneSource& source) {
-  return SimulationJob(source, false);
+  return SimulationJob(source, 1, false);
 }
 
-SimulationJob::SimulationJob(const SceneSource& source, bool cameras)
+SimulationJob::SimulationJob(const SceneSource& source, int threads, bool cameras)
     : wall_start_(std::chrono::steady_clock::now()), scene_(LoadSceneSource(source)) {
   simulation_ = std::make_unique<engine::Simulation>(
       cameras ? scenes::BuildWorld(scene_) : scenes::BuildWorldWithoutCameras(scene_),
-      engine::SimulationConfig{scene_.physics.rate_hz});
+      engine::SimulationConfig{scene_.physics.rate_hz, threads});
 }
 
 double SimulationJob::wall_s() const {

@@ -97,8 +97,10 @@ struct MissionFlight {
 /// Simulation that steps it. Its wall clock starts at construction, for progress and summaries.
 class SimulationJob {
  public:
-  /// Loads and builds. Throws ConfigError naming file, line and key for bad input.
-  explicit SimulationJob(const SceneSource& source);
+  /// Loads and builds; the Simulation steps its vehicles on `threads` threads (1 to 64; the
+  /// results do not depend on it). Throws ConfigError naming file, line and key for bad input,
+  /// InvalidField("threads") for a thread count outside that range.
+  explicit SimulationJob(const SceneSource& source, int threads = 1);
   /// Loads and builds without a GL context: cameras are checked, not made (`airis scene check`:
   /// what a run would refuse, this refuses). The simulation must not be stepped with cameras
   /// expected.
@@ -143,7 +145,7 @@ class SimulationJob {
   JobProgress Progress(const engine::MissionSession& session) const;
 
  private:
-  SimulationJob(const SceneSource& source, bool cameras);
+  SimulationJob(const SceneSource& source, int threads, bool cameras);
 
   std::chrono::steady_clock::time_point wall_start_;
   scenes::Scene scene_;

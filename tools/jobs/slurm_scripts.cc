@@ -52,6 +52,7 @@ std::vector<std::string> DatasetOptionWords(const DatasetOptionValues& v) {
   add("--stream-format", v.stream_format, "npy");
   add("--min-object-area-px", v.min_object_area_px, "16");
   add("--workers", v.workers, "2");
+  add("--threads", v.threads, "1");
   return words;
 }
 

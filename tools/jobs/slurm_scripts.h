@@ -32,6 +32,7 @@ struct DatasetOptionValues {
   std::string stream_format;           ///< --stream-format (npy, the default, is left out)
   std::string min_object_area_px;      ///< --min-object-area-px (16, the default, is left out)
   std::string workers;                 ///< --workers (2, the default, is left out)
+  std::string threads;                 ///< --threads (1, the default, is left out)
 };
 
 /// {"--seed", "7", "--set", "scene.lighting.ambient=0.5", "--formats", "npy", ...}: the options of

@@ -330,14 +330,17 @@ void BindSimulation(py::module_& m) {
   py::class_<PythonSimulation, std::shared_ptr<PythonSimulation>>(m, "_Simulation")
       .def(py::init([](const std::string& path, const std::string& text,
                        std::optional<std::uint64_t> seed, std::size_t max_samples,
-                       const std::vector<std::string>& overrides) {
+                       const std::vector<std::string>& overrides, int threads) {
              if (max_samples < 1) throw py::value_error("max_samples: must be >= 1");
              return std::make_shared<PythonSimulation>(
                  tools::SceneSource{path, text, seed, scenes::ParseSceneOverrides(overrides)},
-                 max_samples);
+                 max_samples, threads);
            }),
            py::arg("path"), py::arg("text") = "", py::arg("seed") = py::none(),
-           py::arg("max_samples") = 100000, py::arg("overrides") = std::vector<std::string>{})
+           py::arg("max_samples") = 100000, py::arg("overrides") = std::vector<std::string>{},
+           py::arg("threads") = 1)
+      .def_property_readonly("threads",
+                             [](PythonSimulation& s) { return s.simulation().threads(); })
       .def_property_readonly("time_ns",
                              [](PythonSimulation& s) { return s.simulation().clock().now_ns(); })
       .def_property_readonly("time_s",

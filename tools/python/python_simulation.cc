@@ -8,8 +8,9 @@
 
 namespace airis::python {
 
-PythonSimulation::PythonSimulation(const tools::SceneSource& source, std::size_t max_rows)
-    : job_(source) {
+PythonSimulation::PythonSimulation(const tools::SceneSource& source, std::size_t max_rows,
+                                   int threads)
+    : job_(source, threads) {
   job_.DisableImageSensors();
   // A vehicle with `autopilot: {kind: px4}` is PX4's here too (its link opens now; PX4 connects
   // on the first step), so that a scene flies the same from Python as from `airis run`.

@@ -22,8 +22,8 @@ namespace airis::python {
 class PythonSimulation {
  public:
   /// Loads and builds (ConfigError naming file, line and key); `max_rows` (>= 1) bounds each
-  /// sensor's unread samples.
-  PythonSimulation(const tools::SceneSource& source, std::size_t max_rows);
+  /// sensor's unread samples; `threads` step the vehicles (InvalidField outside 1 to 64).
+  PythonSimulation(const tools::SceneSource& source, std::size_t max_rows, int threads = 1);
 
   tools::SimulationJob& job() { return job_; }
   engine::Simulation& simulation() { return job_.simulation(); }

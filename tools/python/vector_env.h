@@ -9,6 +9,7 @@
 
 #include "engine/core/camera_frame.h"
 #include "engine/core/config.h"
+#include "engine/core/worker_pool.h"
 #include "engine/world/image_sensor.h"
 #include "engine/world/simulation.h"
 #include "scenes/scene.h"
@@ -16,7 +17,6 @@
 #include "tools/jobs/simulation_job.h"
 #include "tools/python/env_actions.h"
 #include "tools/python/env_tasks.h"
-#include "tools/python/worker_pool.h"
 
 namespace airis::engine {
 class CameraRenderer;
@@ -156,7 +156,7 @@ class VectorEnv {
   std::optional<engine::ImageStream> camera_;
   std::unique_ptr<engine::CameraRenderer> renderer_;
   std::vector<std::unique_ptr<Slot>> slots_;
-  WorkerPool pool_;
+  engine::WorkerPool pool_;
 };
 
 }  // namespace airis::python

@@ -2,13 +2,16 @@
 // root.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "engine/dataset/csv_reader.h"
+#include "engine/dataset/sha256.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tests/tools/cli/run_airis.h"
 #include "tools/cli/commands.h"
@@ -129,6 +132,47 @@ TEST(RunCommandTest, SensorRowsStartOnePeriodInAndGpsRowsHaveNoPositionBeforeThe
           << column << ": " << gps.rows[r];
     }
     EXPECT_GT(gps.Number(r, gps.Column("eph_m")), 0.0) << gps.rows[r];
+  }
+}
+
+TEST(RunCommandTest, OneAndTwoThreadsGiveIdenticalLogsOfAHundredVehicles) {
+  // GIVEN the swarm: 100 quads with four sensors each (the IMU at 1 kHz), one flying the mission,
+  // the others parked (asleep after 0.5 s), run for 2 s on one thread and on two
+  const fs::path one = FreshDir("threads_1"), two = FreshDir("threads_2");
+  const std::string cmd =
+      "run scenes/swarm.yaml --mission scenes/missions/swarm_lead.yaml --until 2 --out ";
+  ASSERT_EQ(RunAiris(cmd + one.string() + " --threads 1").exit_code, 0);
+  const Result r = RunAiris(cmd + two.string() + " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // THEN every log is the same, byte for byte: the truth (the states, the final ones included),
+  // commands, every sensor's samples, collisions and mission events; and so is their hash.
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(one)) files.push_back(e.path().filename());
+  std::sort(files.begin(), files.end());
+  std::string all_one, all_two;
+  for (const fs::path& f : files) {
+    const std::string a = ReadFile(one / f), b = ReadFile(two / f);
+    EXPECT_EQ(a, b) << f;
+    all_one += a;
+    all_two += b;
+  }
+  EXPECT_EQ(files.size(), 100u * 6u + 2u);  // truth, commands, 4 sensors each; collisions, events
+  EXPECT_EQ(engine::Sha256Hex(all_one), engine::Sha256Hex(all_two));
+  const std::string imu = ReadFile(one / "drone57.imu.csv");
+  EXPECT_EQ(std::count(imu.begin(), imu.end(), '\n'), 1 + 2000);  // a parked one samples on
+}
+
+TEST(RunCommandTest, ThreadCountOutsideOneToSixtyFourIsAnError) {
+  for (const char* bad : {"0", "65", "two"}) {
+    const Result r = RunAiris(
+        std::string("run scenes/empty.yaml --mission scenes/missions/city_orbit.yaml --threads ") +
+        bad);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(
+        r.err.find(std::string("error: --threads: must be a whole number from 1 to 64 (got '") +
+                   bad + "')"),
+        std::string::npos)
+        << r.err;
   }
 }
 

@@ -73,17 +73,20 @@ class Simulation(_airis._Simulation):
     `max_samples` unread samples (the oldest are dropped beyond it, counted in Sensor.dropped).
     `overrides` replaces keys of the scene before it is validated, as `airis run --set` does:
     `{"scene.lighting.sun_elevation_deg": 20, "scene.environment.wind.mean_ned_m_s": [5, 0, 0]}`
-    (docs/scene-format.md, "Overrides"). Raises ConfigError (`file:line:col: key: problem`, or
+    (docs/scene-format.md, "Overrides"). `threads` (1 to 64) step the vehicles (their physics,
+    sensors and controllers) as `airis run --threads` does: worth it from a few dozen vehicles, and
+    the results do not depend on it. Raises ConfigError (`file:line:col: key: problem`, or
     `--set KEY=VALUE: key: problem`) for bad input.
     """
 
-    def __init__(self, scene, seed=None, *, name=None, max_samples=100000, overrides=None):
+    def __init__(self, scene, seed=None, *, name=None, max_samples=100000, overrides=None,
+                 threads=1):
         path, text = _scene_source(scene, name)
         if overrides is not None and not isinstance(overrides, dict):
             raise TypeError(f"overrides: expected a dict of key path -> value "
                             f"(got {type(overrides).__name__})")
         texts = [f"{key}={_flow_yaml(value)}" for key, value in (overrides or {}).items()]
-        super().__init__(path, text, seed, max_samples, texts)
+        super().__init__(path, text, seed, max_samples, texts, threads)
         self._text = text
         handles = self.vehicle_handles
         for v in handles:

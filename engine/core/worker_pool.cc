@@ -1,15 +1,16 @@
-#include "tools/python/worker_pool.h"
+#include "engine/core/worker_pool.h"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-namespace airis::python {
+namespace airis::engine {
 namespace {
 
-// A step of a vectorized environment takes a fraction of a millisecond, and the next one comes
-// right after: a thread that sleeps on a condition variable between them loses tens of
-// microseconds to its wake-up each time. So both sides spin this long (about 50-100 us) first.
+// A step of a vectorized environment, or of a simulation's vehicles, takes a fraction of a
+// millisecond, and the next one comes right after: a thread that sleeps on a condition variable
+// between them loses tens of microseconds to its wake-up each time. So both sides spin this long
+// (about 50-100 us) first.
 constexpr int kSpins = 2000;
 
 void Pause() {
@@ -110,4 +111,4 @@ void WorkerPool::Run(std::size_t n, const std::function<void(std::size_t)>& body
   if (error_) std::rethrow_exception(error_);
 }
 
-}  // namespace airis::python
+}  // namespace airis::engine

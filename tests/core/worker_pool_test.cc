@@ -1,4 +1,4 @@
-#include "tools/python/worker_pool.h"
+#include "engine/core/worker_pool.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace airis::python {
+namespace airis::engine {
 namespace {
 
 TEST(WorkerPoolTest, RunsEveryIndexExactlyOnce) {
@@ -43,4 +43,4 @@ TEST(WorkerPoolTest, RefusesABadThreadCount) {
 }
 
 }  // namespace
-}  // namespace airis::python
+}  // namespace airis::engine

@@ -9,13 +9,15 @@
 #include <thread>
 #include <vector>
 
-namespace airis::python {
+namespace airis::engine {
 
 /// Runs a loop over [0, n) on a fixed number of threads: the calling thread and threads - 1
 /// workers that live as long as the pool. Indices are handed out in small chunks to whichever
 /// thread asks first, so a worker the OS does not schedule (a busy machine) only leaves more for
 /// the others; each index is run by exactly one thread. A body whose iterations touch disjoint
-/// state therefore gives the same results for any thread count and any schedule.
+/// state therefore gives the same results for any thread count and any schedule. The Simulation
+/// steps its vehicles on one; the Python module's vectorized environments step their worlds on
+/// another.
 class WorkerPool {
  public:
   /// @param threads 1 to 64 (1: everything on the calling thread, no workers). Throws
@@ -55,4 +57,16 @@ class WorkerPool {
   std::exception_ptr error_;
 };
 
-}  // namespace airis::python
+/// Calls body(i) for every i in [0, n): on `pool` when there is one with several threads, else in
+/// order on the calling thread, with no pool overhead (the body is inlined). Exceptions as
+/// WorkerPool::Run on a pool; in order, the first one stops the loop.
+template <class Body>
+void ParallelFor(WorkerPool* pool, std::size_t n, Body&& body) {
+  if (pool == nullptr || pool->threads() == 1 || n < 2) {
+    for (std::size_t i = 0; i < n; ++i) body(i);
+    return;
+  }
+  pool->Run(n, std::function<void(std::size_t)>(std::ref(body)));
+}
+
+}  // namespace airis::engine

@@ -1,0 +1,141 @@
+#include "engine/physics/static_collider_grid.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace airis::engine {
+
+StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds)
+    : bounds_(std::move(bounds)) {
+  const std::size_t n = bounds_.size();
+  aabbs_.resize(n);
+  first_cell_x_.assign(n, 0);
+  first_cell_y_.assign(n, 0);
+  std::vector<double> widths;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 reach = bounds_[i].R_WL.cwiseAbs() * bounds_[i].half_m;
+    aabbs_[i] = Aabb{bounds_[i].centre_W - reach, bounds_[i].centre_W + reach};
+    widths.push_back(2.0 * reach.head<2>().maxCoeff());
+    top_z_ = std::min(top_z_, aabbs_[i].lo.z());
+  }
+  if (n == 0) return;
+  std::vector<double> sorted = widths;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
+  const double median = sorted[n / 2];
+  // Objects whose footprint covers more than a quarter of everything's (ground planes, terrain)
+  // are tested one by one; everything else, long thin streets and walls included, goes into the
+  // grid, where a query sees only the cells around the vehicle.
+  Eigen::AlignedBox2d everything;
+  for (std::size_t i = 0; i < n; ++i) {
+    everything.extend(aabbs_[i].lo.head<2>());
+    everything.extend(aabbs_[i].hi.head<2>());
+  }
+  const double everything_area = everything.sizes().prod();
+  std::vector<std::uint32_t> gridded;
+  Eigen::AlignedBox2d plan;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double area = (aabbs_[i].hi - aabbs_[i].lo).head<2>().prod();
+    if (area > 0.25 * everything_area) {
+      large_.push_back(static_cast<std::uint32_t>(i));
+    } else {
+      gridded.push_back(static_cast<std::uint32_t>(i));
+      plan.extend(aabbs_[i].lo.head<2>());
+      plan.extend(aabbs_[i].hi.head<2>());
+    }
+  }
+  if (gridded.empty()) return;
+  // About one object per cell, cells no smaller than the median object, at most 2^22 cells.
+  const Eigen::Vector2d size = plan.sizes().cwiseMax(1e-3);
+  cell_m_ = std::max({median, std::sqrt(size.prod() / static_cast<double>(gridded.size())), 1e-3});
+  while ((size.x() / cell_m_ + 1.0) * (size.y() / cell_m_ + 1.0) > double(1 << 22)) cell_m_ *= 2.0;
+  inverse_cell_1_m_ = 1.0 / cell_m_;
+  origin_x_ = plan.min().x();
+  origin_y_ = plan.min().y();
+  nx_ = static_cast<int>(size.x() / cell_m_) + 1;
+  ny_ = static_cast<int>(size.y() / cell_m_) + 1;
+  cell_start_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 1, 0);
+  cell_top_z_.assign(cell_start_.size() - 1, std::numeric_limits<double>::infinity());
+  // Two passes: count per cell, then fill (CSR).
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1) {
+      for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+      cell_items_.resize(cell_start_.back());
+      fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+    }
+    for (std::uint32_t i : gridded) {
+      const CellRange r = CellsOf(aabbs_[i].lo, aabbs_[i].hi);
+      first_cell_x_[i] = r.x0;
+      first_cell_y_[i] = r.y0;
+      for (int y = r.y0; y <= r.y1; ++y) {
+        for (int x = r.x0; x <= r.x1; ++x) {
+          const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+                                static_cast<std::size_t>(x);
+          if (pass == 0) {
+            ++cell_start_[c + 1];
+            cell_top_z_[c] = std::min(cell_top_z_[c], aabbs_[i].lo.z());
+            grid_top_z_ = std::min(grid_top_z_, aabbs_[i].lo.z());
+          } else {
+            cell_items_[fill[c]++] = i;
+          }
+        }
+      }
+    }
+  }
+}
+
+StaticColliderGrid::CellRange StaticColliderGrid::CellsOf(const Vec3& lo, const Vec3& hi) const {
+  // Truncation is floor for the non-negative values that survive the clamp (no libm call).
+  auto cell = [&](double v, double origin, int count) {
+    const double c = (v - origin) * inverse_cell_1_m_;
+    return c <= 0.0 ? 0 : c >= count - 1 ? count - 1 : static_cast<int>(c);
+  };
+  return CellRange{cell(lo.x(), origin_x_, nx_), cell(hi.x(), origin_x_, nx_),
+                   cell(lo.y(), origin_y_, ny_), cell(hi.y(), origin_y_, ny_)};
+}
+
+void StaticColliderGrid::FindNear(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius,
+                                  std::vector<std::uint32_t>& out) const {
+  out.clear();
+  const double r2 = radius * radius;
+  // The AABBs, then the exact distance from the centre to the collider's oriented bounds: a
+  // collider merely AABB-near is dropped before any narrowphase.
+  auto consider = [&](std::uint32_t i) {
+    const Aabb& box = aabbs_[i];
+    if (lo.x() > box.hi.x() || lo.y() > box.hi.y() || lo.z() > box.hi.z() || hi.x() < box.lo.x() ||
+        hi.y() < box.lo.y() || hi.z() < box.lo.z()) {
+      return;
+    }
+    const ColliderBounds& b = bounds_[i];
+    const Vec3 d = b.R_WL.transpose() * (centre - b.centre_W);
+    const Vec3 outside = (d.cwiseAbs() - b.half_m).cwiseMax(0.0);
+    if (outside.squaredNorm() <= r2) out.push_back(i);
+  };
+  for (std::uint32_t i : large_) consider(i);
+  if (nx_ == 0 || hi.z() < grid_top_z_ || hi.x() < origin_x_ || hi.y() < origin_y_ ||
+      lo.x() > origin_x_ + nx_ * cell_m_ || lo.y() > origin_y_ + ny_ * cell_m_) {
+    return;
+  }
+  const CellRange r = CellsOf(lo, hi);
+  const bool one_cell = r.x0 == r.x1 && r.y0 == r.y1;
+  for (int y = r.y0; y <= r.y1; ++y) {
+    for (int x = r.x0; x <= r.x1; ++x) {
+      const std::size_t c =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
+      if (hi.z() < cell_top_z_[c]) continue;  // flying above everything in the cell
+      for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+        const std::uint32_t i = cell_items_[k];
+        // A collider spanning several cells of the query is considered once: in the first of them
+        // (least row, then least column), the cell where the two cell ranges begin to overlap.
+        if (!one_cell &&
+            (x != std::max(r.x0, first_cell_x_[i]) || y != std::max(r.y0, first_cell_y_[i]))) {
+          continue;
+        }
+        consider(i);
+      }
+    }
+  }
+}
+
+}  // namespace airis::engine
