@@ -119,7 +119,11 @@ std::vector<engine::MissionTrack> ReadTracks(const YamlReader& reader, const YAM
     engine::MissionTrack track;
     track.vehicle = name;
     track.abort_on_collision = own.abort_on_collision.value_or(header.abort_on_collision);
-    track.steps = ReadSteps(reader, entry.second, path + ".", "a vehicle's track needs its steps");
+    // Reported with the track's other mistakes (an unknown key that was meant to be 'steps').
+    reader.Collect([&] {
+      track.steps =
+          ReadSteps(reader, entry.second, path + ".", "a vehicle's track needs its steps");
+    });
     track.file = reader.Where(key_mark).file;
     track.key_path = path;
     track.where = reader.Where(key_mark);
@@ -162,9 +166,12 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
     engine::MissionTrack track;
     track.vehicle = header.vehicle;
     track.abort_on_collision = header.abort_on_collision;
-    track.steps = ReadSteps(reader, root, "",
-                            "a mission needs a list of steps (or 'vehicles': a track of steps per "
-                            "vehicle)");
+    // Reported with the header's mistakes (an unknown key that was meant to be 'steps').
+    reader.Collect([&] {
+      track.steps = ReadSteps(reader, root, "",
+                              "a mission needs a list of steps (or 'vehicles': a track of steps "
+                              "per vehicle)");
+    });
     track.file = file;
     YAML::Node value;
     YAML::Mark mark = root.Mark();

@@ -64,6 +64,7 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
   limits.has_ground = scene.has_ground;
   limits.max_speed_m_s = scene.vehicles.at(vehicle).spec->CalcMaxSpeed_m_s();
   limits.physics_rate_hz = scene.physics.rate_hz;
+  limits.vehicle = scene.vehicles.at(vehicle).name;
   // A capture step names cameras of its own vehicle: a camera (rig) or one of its image streams.
   for (const SensorDescription& s : scene.vehicles.at(vehicle).sensors) {
     std::vector<std::string> streams = s.spec->ImageStreamNames(s.name);

@@ -90,6 +90,9 @@ struct Scene {
   std::vector<GeneratedSummary> generated;
   /// The overrides it was loaded with (SceneLoadOptions): with `files`, what made this scene.
   std::vector<SceneOverride> overrides;
+  /// Where they landed, so that an error their values cause when the world is built (a vehicle
+  /// moved into a crate) names the override, as one found while loading does.
+  AppliedSceneOverrides applied_overrides;
 };
 
 /// What a loader applies over the file's own settings.

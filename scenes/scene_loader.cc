@@ -617,6 +617,7 @@ Scene Load(SceneDocument doc, const SceneLoadOptions& options) {
   try {
     Scene s = SceneAssembler(std::move(doc), options).Assemble();
     s.overrides = options.overrides;
+    s.applied_overrides = applied;
     return s;
   } catch (const engine::ConfigError& e) {
     applied.Rethrow(e);

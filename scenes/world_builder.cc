@@ -111,6 +111,17 @@ std::unique_ptr<engine::World> Build(const Scene& scene, std::uint64_t seed, Wor
   return world;
 }
 
+// Build, with an error that an override's value causes (a vehicle moved into a crate) naming the
+// override.
+std::unique_ptr<engine::World> BuildNamingOverrides(const Scene& scene, std::uint64_t seed,
+                                                    WorldResources& shared, bool cameras) {
+  try {
+    return Build(scene, seed, shared, cameras);
+  } catch (const engine::ConfigError& e) {
+    scene.applied_overrides.Rethrow(e);
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<engine::World> BuildWorld(const Scene& scene) {
@@ -120,12 +131,12 @@ std::unique_ptr<engine::World> BuildWorld(const Scene& scene) {
 
 std::unique_ptr<engine::World> BuildWorldWithoutCameras(const Scene& scene) {
   WorldResources resources;
-  return Build(scene, scene.seed, resources, /*cameras=*/false);
+  return BuildNamingOverrides(scene, scene.seed, resources, /*cameras=*/false);
 }
 
 std::unique_ptr<engine::World> BuildWorld(const Scene& scene, std::uint64_t seed,
                                           WorldResources& shared) {
-  return Build(scene, seed, shared, /*cameras=*/true);
+  return BuildNamingOverrides(scene, seed, shared, /*cameras=*/true);
 }
 
 }  // namespace airis::scenes

@@ -58,6 +58,7 @@ struct MissionLimits {
   bool has_ground = false;       ///< a ground plane at z = 0 (nothing below it can be reached)
   double max_speed_m_s = 0.0;    ///< the vehicle's top speed (its controller's limit)
   double physics_rate_hz = 0.0;  ///< the highest rate a capture may ask for
+  std::string vehicle;           ///< the track's vehicle, for messages
   /// The names a capture step may give: the track's vehicle's cameras and their image streams.
   std::vector<std::string> cameras;
   /// True when the box (world NED) lies entirely inside one solid object of the scene.

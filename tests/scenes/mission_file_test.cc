@@ -76,7 +76,9 @@ TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
 TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
   const std::string e =
       ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");
-  EXPECT_EQ(e, "missions/m.yaml:4:7: steps[1].takeoff.height_above_start_m: must be > 0 (got -5)");
+  EXPECT_EQ(e,
+            "missions/m.yaml:4:7: steps[1].takeoff.height_above_start_m: must be between 0 and "
+            "10000 (got -5)");
 }
 
 TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {

@@ -73,8 +73,10 @@ TEST(MissionTracksTest, MistakesInTracksNameTheirKeyPath) {
   EXPECT_EQ(ErrorOf("vehicles: {}\n"),
             "missions/m.yaml:1:1: vehicles: a map of vehicle names to their tracks, e.g. 'drone1: "
             "{steps: [...]}' (got a map)");
+  // Both mistakes of the track, the unknown key first.
   EXPECT_EQ(ErrorOf("vehicles:\n  a: {stepz: []}\n"),
-            "missions/m.yaml:2:7: vehicles.a.stepz: unknown key 'stepz' (did you mean 'steps'?)");
+            "missions/m.yaml:2:7: vehicles.a.stepz: unknown key 'stepz' (did you mean 'steps'?)\n"
+            "missions/m.yaml:2:6: vehicles.a.steps: missing: a vehicle's track needs its steps");
   EXPECT_EQ(ErrorOf("vehicles:\n  a: {abort_on_collision: true}\n"),
             "missions/m.yaml:2:6: vehicles.a.steps: missing: a vehicle's track needs its steps");
   EXPECT_EQ(ErrorOf("vehicles:\n  a: {steps: []}\n"),

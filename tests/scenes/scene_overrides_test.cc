@@ -52,10 +52,11 @@ Scene LoadWith(const std::string& path, const std::vector<std::string>& texts) {
   return LoadScene(path, o);
 }
 
-// The message of the ConfigError that loading with `texts` throws ("" if none).
+// The message of the ConfigError that loading with `texts` and building the world throw ("" if
+// none).
 std::string ErrorOf(const std::string& path, const std::vector<std::string>& texts) {
   try {
-    LoadWith(path, texts);
+    BuildWorldWithoutCameras(LoadWith(path, texts));
   } catch (const engine::ConfigError& e) {
     return e.what();
   }
@@ -180,7 +181,7 @@ TEST(SceneOverridesTest, BadValuesFailTheChecksOfAFilesValueNamingTheOverride) {
   EXPECT_EQ(range.rfind("--set scene.lighting.time_of_day_h=25: scene.lighting.time_of_day_h: ", 0),
             0u)
       << range;
-  // A problem found only when the scene is assembled: the second vehicle moved into the crate.
+  // A problem found only when the world is built: the second vehicle moved into the crate.
   const std::string inside = ErrorOf(path, {"vehicles[1].start.position_ned_m=[10, 0, -1]"});
   EXPECT_EQ(inside.rfind("--set vehicles[1].start.position_ned_m=[10, 0, -1]: "
                          "vehicles[1].start.position_ned_m: ",

@@ -54,11 +54,11 @@ std::string ChaseScene(bool up_sees_own_body) {
 }
 
 // The simulation of `text` with both vehicles held where they start (hovering exactly), stepped
-// once: every camera renders its first frame at the end of the first tick.
-std::unique_ptr<engine::Simulation> FlyOneTick(const Scene& scene) {
+// to 10 ms: every camera (100 Hz) renders its first frame there, one period after the start.
+std::unique_ptr<engine::Simulation> FlyToFirstFrame(const Scene& scene) {
   auto sim = std::make_unique<engine::Simulation>(BuildWorld(scene));
   for (std::size_t i = 0; i < sim->world().vehicle_count(); ++i) sim->world().SetHeld(i, true);
-  sim->Step();
+  sim->RunFor(0.01);
   return sim;
 }
 
@@ -95,10 +95,10 @@ Pixel Centre(const engine::CameraFrame& f) {
 //      has a box containing the target's projected centre.
 TEST(VehiclesSeenTest, CameraOnADroneSeesAnotherAtItsHullDistance) {
   const Scene scene = LoadSceneFromString(ChaseScene(false), "tests/chase.yaml");
-  const auto sim = FlyOneTick(scene);
+  const auto sim = FlyToFirstFrame(scene);
   const engine::VehicleBody& target = scene.static_scene.vehicle_bodies.at(1);
   const engine::CameraFrame& front = Frame(*sim, "front");
-  ASSERT_EQ(front.time_ns, 1'000'000);  // the first tick's end
+  ASSERT_EQ(front.time_ns, 10'000'000);  // the first frame of 100 Hz
 
   const Pixel c = Centre(front);
   const double expected_m = 6.0 - kHalfLength_m;
@@ -133,7 +133,7 @@ TEST(VehiclesSeenTest, CameraOnADroneSeesAnotherAtItsHullDistance) {
 //      vehicle, the one it is listed under included.
 TEST(VehiclesSeenTest, FixedCameraSeesTheVehicleItIsListedUnder) {
   const Scene scene = LoadSceneFromString(ChaseScene(false), "tests/chase.yaml");
-  const auto sim = FlyOneTick(scene);
+  const auto sim = FlyToFirstFrame(scene);
   const Pixel c = Centre(Frame(*sim, "tower"));
   const double expected_m = 5.0 - kHalfHeight_m;
   EXPECT_NEAR(c.depth_m, expected_m, expected_m * kFloatRelTolerance);
@@ -146,12 +146,12 @@ TEST(VehiclesSeenTest, FixedCameraSeesTheVehicleItIsListedUnder) {
 TEST(VehiclesSeenTest, OwnBodyOnlyWhenTheMountSeesIt) {
   {
     const Scene scene = LoadSceneFromString(ChaseScene(false), "tests/chase.yaml");
-    const Pixel c = Centre(Frame(*FlyOneTick(scene), "up"));
+    const Pixel c = Centre(Frame(*FlyToFirstFrame(scene), "up"));
     EXPECT_EQ(c.depth_m, engine::kSkyDepthM);
     EXPECT_EQ(c.instance_id, 0);
   }
   const Scene scene = LoadSceneFromString(ChaseScene(true), "tests/chase.yaml");
-  const Pixel c = Centre(Frame(*FlyOneTick(scene), "up"));
+  const Pixel c = Centre(Frame(*FlyToFirstFrame(scene), "up"));
   const double expected_m = 0.5 - kHalfHeight_m;
   EXPECT_NEAR(c.depth_m, expected_m, expected_m * kFloatRelTolerance);
   EXPECT_EQ(c.instance_id, static_cast<int>(scene.static_scene.vehicle_bodies[0].instance_id));
@@ -162,11 +162,11 @@ TEST(VehiclesSeenTest, OwnBodyOnlyWhenTheMountSeesIt) {
 // THEN the target is drawn at its new pose: the vehicle's pose is read for every frame.
 TEST(VehiclesSeenTest, EachFrameDrawsTheVehiclesWhereTheyAreNow) {
   const Scene scene = LoadSceneFromString(ChaseScene(false), "tests/chase.yaml");
-  const auto sim = FlyOneTick(scene);
+  const auto sim = FlyToFirstFrame(scene);
   sim->world().vehicle(1).state().p_W.x() = 8.0;
   sim->RunFor(0.01);
   const engine::CameraFrame& front = Frame(*sim, "front");
-  EXPECT_EQ(front.time_ns, 10'000'000);  // the camera's second frame (100 Hz)
+  EXPECT_EQ(front.time_ns, 20'000'000);  // the camera's second frame (100 Hz)
   const double expected_m = 8.0 - kHalfLength_m;
   EXPECT_NEAR(Centre(front).depth_m, expected_m, expected_m * kFloatRelTolerance);
 }
@@ -176,8 +176,8 @@ TEST(VehiclesSeenTest, EachFrameDrawsTheVehiclesWhereTheyAreNow) {
 // THEN the two frames are identical bit for bit (RGB, depth, labels).
 TEST(VehiclesSeenTest, SameSceneAndSeedGiveTheSamePixels) {
   const Scene scene = LoadSceneFromString(ChaseScene(false), "tests/chase.yaml");
-  const auto a = FlyOneTick(scene);
-  const auto b = FlyOneTick(scene);
+  const auto a = FlyToFirstFrame(scene);
+  const auto b = FlyToFirstFrame(scene);
   const engine::CameraFrame& fa = Frame(*a, "front");
   const engine::CameraFrame& fb = Frame(*b, "front");
   EXPECT_EQ(fa.rgba.pixels, fb.rgba.pixels);

@@ -179,7 +179,7 @@ TEST(LidarTest, PointCloudHoldsEveryReturnWithItsBeamTimeAndLambertianIntensity)
   Lidar lidar("lidar", NoiselessConfig(), engine::RandomStream(1));
   Truth truth;
   truth.state.v_W = Vec3(10.0, 0, 0);
-  lidar.Update(truth.At(0, env, &caster));
+  lidar.Update(truth.At(100'000'000, env, &caster));  // the first scan of 10 Hz: at 0.1 s
   const LidarScan& scan = lidar.latest();
   const engine::PointCloudSample& cloud = *lidar.point_cloud();
   // THEN the cloud holds exactly the beams that returned, in firing order, each with its range,

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "engine/core/config.h"
 #include "engine/mission/steps/step_checks.h"
 
 namespace airis::engine {
@@ -118,11 +119,15 @@ void CaptureStep::Check(const MissionLimits& limits, const StepPlan&) const {
         limits.cameras.end()) {
       continue;
     }
-    std::string known;
-    for (const std::string& c : limits.cameras) known += (known.empty() ? "" : ", ") + c;
-    throw InvalidField("cameras[" + std::to_string(i) + "]",
-                       "its vehicle has no camera '" + cameras[i] + "' (it has " +
-                           (known.empty() ? "none" : known) + ")");
+    std::string problem = "vehicle '" + limits.vehicle + "' has no camera '" + cameras[i] + "'";
+    if (const auto close = ClosestMatch(cameras[i], limits.cameras)) {
+      problem += " (did you mean '" + *close + "'?)";
+    } else {
+      std::string known;
+      for (const std::string& c : limits.cameras) known += (known.empty() ? "" : ", ") + c;
+      problem += " (it has " + (known.empty() ? std::string("none") : known) + ")";
+    }
+    throw InvalidField("cameras[" + std::to_string(i) + "]", problem);
   }
 }
 

@@ -128,10 +128,11 @@ TEST(Px4CommandTest, ASessionsDatasetIsCompleteConsistentAndMergesLikeAnyOther) 
   EXPECT_EQ(manifest["streams_span"], "flight");
   EXPECT_EQ(manifest["scene"]["overrides"], nlohmann::json({{"scene.lighting.ambient", "0.5"}}));
   EXPECT_EQ(manifest["counts"]["simulated_time_s"], 0.5);
-  // the camera recorded at its own rate for the whole session: t = 0.001, 0.1, ... 0.5
+  // the camera recorded at its own rate for the whole session: t = 0.1, 0.2, ... 0.5 (a sensor's
+  // first sample is one period after the start, docs/sensors.md)
   ASSERT_EQ(manifest["cameras"].size(), 1u);
   const std::int64_t frames = manifest["cameras"][0]["frames"];
-  EXPECT_EQ(frames, 6);
+  EXPECT_EQ(frames, 5);
   EXPECT_EQ(manifest["counts"]["frames"], frames);
   // every frame's files are listed with their size and SHA-256, and every listed file is whole
   const engine::CsvText checksums = engine::ReadCsvText(out / "checksums.csv");
@@ -147,8 +148,8 @@ TEST(Px4CommandTest, ASessionsDatasetIsCompleteConsistentAndMergesLikeAnyOther) 
   ASSERT_EQ(poses.rows.size(), static_cast<std::size_t>(frames));
   for (std::int64_t f = 0; f < frames; ++f) {
     EXPECT_EQ(poses.Integer(f, poses.Column("frame")), f);
-    // The camera's own 10 Hz from the start: the frame due at 0 is taken at the first tick (1 ms).
-    EXPECT_EQ(poses.Integer(f, 0), f == 0 ? 1'000'000 : f * 100'000'000) << poses.rows[f];
+    // The camera's own 10 Hz: frame f at (f + 1) / 10 s.
+    EXPECT_EQ(poses.Integer(f, 0), (f + 1) * 100'000'000) << poses.rows[f];
   }
   const auto coco = nlohmann::json::parse(testing::Bytes(out / "cam/coco_instances.json"));
   EXPECT_EQ(coco["images"].size(), static_cast<std::size_t>(frames));

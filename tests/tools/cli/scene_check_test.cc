@@ -74,7 +74,7 @@ TEST(SceneCheckTest, MissionCapturesAreListed) {
   const std::string mission = WriteTempFile("check_mission_m.yaml",
                                             "steps:\n"
                                             "  - takeoff: {height_above_start_m: 5}\n"
-                                            "  - capture: {cameras: [chase, eyes_left, rear]}\n"
+                                            "  - capture: {cameras: [eyes_left]}\n"
                                             "  - hover: {duration_s: 1}\n"
                                             "  - capture: {enabled: false}\n")
                                   .string();
@@ -84,14 +84,19 @@ TEST(SceneCheckTest, MissionCapturesAreListed) {
   // A capture step records the cameras of its track's vehicle: the first (hexa) here.
   EXPECT_NE(r.out.find("captures    " + mission + " records eyes_left\n"), std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("warning     mission steps[1] (capture) names camera 'chase', which vehicle "
-                       "'hexa' does not have (it has eyes_left, eyes_right, down)"),
+  // Another vehicle's camera is refused, as a run refuses it, at the camera's name.
+  const std::string other = WriteTempFile("check_mission_other.yaml",
+                                          "steps:\n"
+                                          "  - capture: {cameras: [chase]}\n"
+                                          "  - hover: {duration_s: 1}\n")
+                                .string();
+  const auto refused =
+      testing::RunAiris(&AddSceneCommand, "scene check " + scene + " --mission " + other);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find(other + ":2:25: steps[0].capture.cameras[0]: vehicle 'hexa' has no "
+                                     "camera 'chase' (it has eyes, eyes_left, eyes_right, down)"),
             std::string::npos)
-      << r.out;
-  EXPECT_NE(r.out.find("warning     mission steps[1] (capture) names camera 'rear', which vehicle "
-                       "'hexa' does not have"),
-            std::string::npos)
-      << r.out;
+      << refused.err;
 }
 
 TEST(SceneCheckTest, JsonCarriesTheSameReport) {

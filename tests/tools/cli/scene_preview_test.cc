@@ -99,7 +99,7 @@ TEST(ScenePreviewTest, CamerasOfSeveralVehiclesGoByTheirDatasetNames) {
       &AddSceneCommand,
       "scene preview scenes/chase.yaml --camera drone2_front --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(engine::DecodeRgbPng(engine::ReadFileBytes(out)).width, 3 * 320);  // drone2's camera
+  EXPECT_EQ(engine::DecodeRgbPng(engine::ReadFileBytes(out)).width, 3 * 480);  // drone2's camera
 }
 
 }  // namespace

@@ -150,7 +150,7 @@ TEST(ChaseDatasetTest, TheFilmedDroneIsInEveryFrameOfTheFilmingCameraAndOnTheCon
   EXPECT_EQ(annotated, frames.size());
 
   // The contact sheet (docs/dataset-format.md): 4 rows of frames spread from the first to the
-  // last, each RGB | depth | segmentation at full size (320 px is under the 480 px panel limit).
+  // last, each RGB | depth | segmentation at full size (480 px is the widest panel drawn unshrunk).
   // Every pixel of the filmed drone shows in its row's RGB panel as in the frame, and in its
   // segmentation panel in the drone's colour, which no other class in the frame has.
   const auto sheet = engine::DecodeRgbPng(engine::ReadFileBytes(root / "preview.png"));

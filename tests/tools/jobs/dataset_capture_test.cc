@@ -173,12 +173,12 @@ TEST(DatasetCaptureTest, ACaptureRateTheCameraCannotGiveIsRefusedAtTheStep) {
 TEST(DatasetCaptureTest, ACaptureStepNamingACameraItsVehicleLacksIsRefused) {
   EXPECT_EQ(ErrorOf(Job("typo", "vehicle: b\nsteps:\n  - capture: {cameras: [dwn]}\n")),
             (airis::testing::TestTempDir() / "typo.yaml").string() +
-                ":3:5: steps[0].capture.cameras[0]: vehicle 'b' has no camera 'dwn' (did you mean "
+                ":3:25: steps[0].capture.cameras[0]: vehicle 'b' has no camera 'dwn' (did you mean "
                 "'down'?)");
   // `down` is b's, not a's: a capture step records its own vehicle's cameras.
   const std::string other =
       ErrorOf(Job("other", "vehicles:\n  a: {steps: [{capture: {cameras: [down]}}]}\n"));
-  EXPECT_NE(other.find(":2:16: vehicles.a.steps[0].capture.cameras[0]: vehicle 'a' has no camera "
+  EXPECT_NE(other.find(":2:36: vehicles.a.steps[0].capture.cameras[0]: vehicle 'a' has no camera "
                        "'down' (it has front)"),
             std::string::npos)
       << other;

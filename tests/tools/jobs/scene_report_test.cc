@@ -37,15 +37,18 @@ TEST(SceneReportTest, HoverCommandIsWeightOverFullThrust) {
   EXPECT_FALSE(report.mission_file);
 }
 
-// GIVEN a preset with tilting rotors and a vehicle made too heavy to fly
+// GIVEN a preset with tilting rotors, and a quad made heavy enough (1.6 kg: thrust-to-weight 1.07
+//       at sea level, which a scene accepts) that it cannot hover in the thin air of a 4,000 m
+//       origin (density 0.819 against 1.225 kg/m^3)
 // WHEN the report resolves them
 // THEN the tilting rotors are marked, and the heavy one gets a warning that it cannot hover.
 TEST(SceneReportTest, TiltingRotorsAndAVehicleThatCannotHover) {
   const scenes::Scene scene = scenes::LoadSceneFromString(
+      "scene: {origin: {latitude_deg: 47, longitude_deg: 8, altitude_m: 4000}}\n"
       "vehicles:\n"
       "  - {name: tilt, preset: tilt_rotor}\n"
       "  - {name: brick, preset: quad_x, start: {position_ned_m: [5, 0, -0.2]},\n"
-      "     overrides: {mass_kg: 20}}\n",
+      "     overrides: {mass_kg: 1.6}}\n",
       "scenes/r.yaml");
   const SceneReport report = BuildSceneReport(scene);
   int tiltable = 0;

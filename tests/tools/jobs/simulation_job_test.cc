@@ -73,8 +73,8 @@ TEST(SimulationJobTest, OnGroundWithNothingBelowIsAnErrorNamingTheKey) {
         "  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, -5], on_ground: true}}\n"));
     FAIL() << "expected ConfigError";
   } catch (const engine::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("scenes/test.yaml:3:5: vehicles[0].start.on_ground: no "
-                                         "surface below the start position"),
+    EXPECT_NE(std::string(e.what()).find("scenes/test.yaml:3:67: vehicles[0].start.on_ground: no "
+                                         "surface below the start position to rest on"),
               std::string::npos)
         << e.what();
   }
@@ -118,7 +118,8 @@ TEST(SimulationJobTest, ThePhysicsBlockSetsTheTickRateThatSensorsAreCheckedAgain
 
 TEST(SimulationJobTest, AMissionNamingAnAbsentVehicleIsAnErrorListingTheScenesVehicles) {
   const SimulationJob job(
-      Text("vehicles: [{name: a, preset: quad_x}, {name: b, preset: hexa_x}]\n"));
+      Text("vehicles: [{name: a, preset: quad_x},\n"
+           "           {name: b, preset: hexa_x, start: {position_ned_m: [5, 0, -0.2]}}]\n"));
   engine::Mission m = scenes::ParseMission("vehicle: c\nsteps: [{wait: {}}]\n", "m.yaml");
   try {
     job.MissionVehicles(m);
