@@ -10,6 +10,7 @@
 
 #include "scenes/scene.h"
 #include "scenes/vehicle_kinds.h"
+#include "tests/scenes/scene_error_of.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::scenes {
@@ -17,15 +18,6 @@ namespace {
 
 using engine::ConfigError;
 using engine::Vec3;
-
-std::string ErrorOf(const std::string& text) {
-  try {
-    LoadSceneFromString(text, "scenes/v.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 const vehicles::MultirotorConfig& AirframeOf(const Scene& scene) {
   const auto* airframe =
@@ -87,54 +79,54 @@ TEST(AirframeOverridesTest, AListStillReplacesTheWholeList) {
 }
 
 TEST(AirframeOverridesTest, AnIndexOutOfRangeNamesTheRangeAtItsKey) {
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: hexa_x\n"
-                    "    overrides:\n"
-                    "      rotors:\n"
-                    "        6: {spin: cw}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: hexa_x\n"
+                         "    overrides:\n"
+                         "      rotors:\n"
+                         "        6: {spin: cw}\n"),
             "scenes/v.yaml:6:9: vehicles[0].overrides.rotors[6]: no entry 6 to change: the list "
             "has 6 entries (0 to 5)");
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    overrides:\n"
-                    "      rotors: {front: {spin: cw}}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    overrides:\n"
+                         "      rotors: {front: {spin: cw}}\n"),
             "scenes/v.yaml:5:16: vehicles[0].overrides.rotors: a map in place of a list changes "
             "entries by their 0-based index: expected an index (0 to 3) as key (got 'front')");
 }
 
 TEST(AirframeOverridesTest, AMistakeInsideAnIndexedRotorPointsAtItsKey) {
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    overrides:\n"
-                    "      rotors:\n"
-                    "        2:\n"
-                    "          max_rpm: -5\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    overrides:\n"
+                         "      rotors:\n"
+                         "        2:\n"
+                         "          max_rpm: -5\n"),
             "scenes/v.yaml:7:11: vehicles[0].overrides.rotors[2].max_rpm: must be > 0 (got -5)");
 }
 
 TEST(AirframeOverridesTest, OneRotorIsRefusedWhenTheSceneLoads) {
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    overrides:\n"
-                    "      rotors:\n"
-                    "        - {position_frd_m: [0, 0, 0], spin: ccw}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    overrides:\n"
+                         "      rotors:\n"
+                         "        - {position_frd_m: [0, 0, 0], spin: ccw}\n"),
             "scenes/v.yaml:5:7: vehicles[0].overrides.rotors: the flight controller needs at "
             "least 4 rotors to set thrust, roll, pitch and yaw independently (got 1)");
 }
 
 TEST(AirframeOverridesTest, RotorsAllSpinningOneWayAreRefusedWhenTheSceneLoads) {
   // Changing the two CW rotors of quad_x to CCW leaves no way to cancel the reaction torques.
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    overrides:\n"
-                    "      rotors:\n"
-                    "        2: {spin: ccw}\n"
-                    "        3: {spin: ccw}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    overrides:\n"
+                         "      rotors:\n"
+                         "        2: {spin: ccw}\n"
+                         "        3: {spin: ccw}\n"),
             "scenes/v.yaml:5:7: vehicles[0].overrides.rotors: all 4 rotors spin ccw: their "
             "reaction torques add up, so no command sets the yaw moment on its own (half of them "
             "must spin the other way; got spin: ccw on every rotor)");
@@ -142,15 +134,15 @@ TEST(AirframeOverridesTest, RotorsAllSpinningOneWayAreRefusedWhenTheSceneLoads) 
 
 TEST(AirframeOverridesTest, RotorsInALineAreRefusedNamingTheMissingMoment) {
   // Four rotors on the body's x axis cannot roll it.
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    overrides:\n"
-                    "      rotors:\n"
-                    "        - {position_frd_m: [0.3, 0, 0], spin: ccw}\n"
-                    "        - {position_frd_m: [0.1, 0, 0], spin: cw}\n"
-                    "        - {position_frd_m: [-0.1, 0, 0], spin: ccw}\n"
-                    "        - {position_frd_m: [-0.3, 0, 0], spin: cw}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    overrides:\n"
+                         "      rotors:\n"
+                         "        - {position_frd_m: [0.3, 0, 0], spin: ccw}\n"
+                         "        - {position_frd_m: [0.1, 0, 0], spin: cw}\n"
+                         "        - {position_frd_m: [-0.1, 0, 0], spin: ccw}\n"
+                         "        - {position_frd_m: [-0.3, 0, 0], spin: cw}\n"),
             "scenes/v.yaml:5:7: vehicles[0].overrides.rotors: the rotors cannot set the roll "
             "moment independently of the rest (check position_frd_m, thrust_direction_frd and "
             "spin)");
@@ -173,7 +165,7 @@ TEST(AirframeOverridesTest, TheExamplesOfTheVehiclesPageLoadOrFailAsItSays) {
     const std::string yaml = (*it)[1];
     ++blocks;
     SCOPED_TRACE(yaml);
-    const std::string error = ErrorOf(yaml);
+    const std::string error = SceneErrorOf(yaml);
     if (yaml.rfind("# refused: ", 0) == 0) {
       ++refused;
       const std::string expected = yaml.substr(11, yaml.find('\n') - 11);

@@ -6,31 +6,23 @@
 
 #include "scenes/scene.h"
 #include "scenes/scene_config.h"
+#include "tests/scenes/scene_error_of.h"
 
 namespace airis::scenes {
 namespace {
 
 using engine::ConfigError;
 
-std::string ErrorOf(const std::string& text) {
-  try {
-    LoadSceneFromString(text, "scenes/v.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 // GIVEN lighting with time_of_day_h and a sun angle
 // WHEN the scene loads
 // THEN it is refused, naming both keys; each way alone places the sun (angles as given, or from
 //      the time, latitude and date) and the scene records where.
 TEST(SunTest, TimeOfDayAndSunAnglesAreExclusive) {
-  EXPECT_EQ(ErrorOf("scene:\n  lighting:\n    time_of_day_h: 20\n    sun_elevation_deg: 30\n"),
+  EXPECT_EQ(SceneErrorOf("scene:\n  lighting:\n    time_of_day_h: 20\n    sun_elevation_deg: 30\n"),
             "scenes/v.yaml:4:5: scene.lighting.sun_elevation_deg: give time_of_day_h or "
             "sun_elevation_deg, not both (time_of_day_h places the sun from the latitude and "
             "date)");
-  EXPECT_EQ(ErrorOf("scene:\n  lighting: {sun_azimuth_deg: 10, time_of_day_h: 9}\n"),
+  EXPECT_EQ(SceneErrorOf("scene:\n  lighting: {sun_azimuth_deg: 10, time_of_day_h: 9}\n"),
             "scenes/v.yaml:2:14: scene.lighting.sun_azimuth_deg: give time_of_day_h or "
             "sun_azimuth_deg, not both (time_of_day_h places the sun from the latitude and date)");
 

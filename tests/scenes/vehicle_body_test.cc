@@ -9,21 +9,13 @@
 
 #include "scenes/scene.h"
 #include "scenes/vehicle_kinds.h"
+#include "tests/scenes/scene_error_of.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::scenes {
 namespace {
 
 using engine::ConfigError;
-
-std::string ErrorOf(const std::string& text) {
-  try {
-    LoadSceneFromString(text, "scenes/v.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 // Positions and sizes go through float part transforms: float rounding of metre-sized values.
 constexpr double kFloatTolerance_m = 1e-6;
@@ -131,20 +123,21 @@ TEST(VehicleBodyTest, MeshBodyIsPlacedInTheBodyFrame) {
 
 TEST(VehicleBodyTest, BodyMistakesNameFileLineAndKey) {
   const std::string vehicle = "vehicles:\n  - name: d\n    preset: quad_x\n    body:\n";
-  const std::string unknown_class = ErrorOf(vehicle + "      class: drones\n");
+  const std::string unknown_class = SceneErrorOf(vehicle + "      class: drones\n");
   EXPECT_EQ(unknown_class.rfind("scenes/v.yaml:5:7: vehicles[0].body.class: unknown class 'drones' "
                                 "(did you mean 'drone'?)",
                                 0),
             0u)
       << unknown_class;
-  EXPECT_EQ(ErrorOf(vehicle + "      mesh: no_such.obj\n"),
+  EXPECT_EQ(SceneErrorOf(vehicle + "      mesh: no_such.obj\n"),
             "scenes/v.yaml:5:7: vehicles[0].body.mesh: mesh file not found: scenes/no_such.obj");
-  EXPECT_EQ(ErrorOf(vehicle + "      mesh: assets/landing_pad.obj\n      rotor_color: [1, 0, 0]\n"),
-            "scenes/v.yaml:6:7: vehicles[0].body.rotor_color: colours the discs of a generated "
-            "body; a mesh keeps its own (or takes color)");
-  EXPECT_EQ(ErrorOf(vehicle + "      scale: [1, 0, 1]\n"),
+  EXPECT_EQ(
+      SceneErrorOf(vehicle + "      mesh: assets/landing_pad.obj\n      rotor_color: [1, 0, 0]\n"),
+      "scenes/v.yaml:6:7: vehicles[0].body.rotor_color: colours the discs of a generated "
+      "body; a mesh keeps its own (or takes color)");
+  EXPECT_EQ(SceneErrorOf(vehicle + "      scale: [1, 0, 1]\n"),
             "scenes/v.yaml:5:18: vehicles[0].body.scale[1]: must be > 0 (got 0)");
-  EXPECT_EQ(ErrorOf(vehicle + "      colour: [1, 0, 0]\n"),
+  EXPECT_EQ(SceneErrorOf(vehicle + "      colour: [1, 0, 0]\n"),
             "scenes/v.yaml:5:7: vehicles[0].body.colour: unknown key 'colour' (did you mean "
             "'color'?)");
 }
@@ -153,7 +146,7 @@ TEST(VehicleBodyTest, BodyMistakesNameFileLineAndKey) {
 // WHEN the scene loads
 // THEN it is refused: a world-attached camera sees every vehicle, the key would be meaningless.
 TEST(VehicleBodyTest, SeesOwnBodyIsForCamerasOnTheVehicle) {
-  const std::string error = ErrorOf(
+  const std::string error = SceneErrorOf(
       "vehicles:\n"
       "  - name: d\n"
       "    preset: quad_x\n"

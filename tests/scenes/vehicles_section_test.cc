@@ -8,6 +8,7 @@
 #include "scenes/vehicle_kinds.h"
 #include "scenes/world_builder.h"
 #include "sensors/imu.h"
+#include "tests/scenes/scene_error_of.h"
 #include "vehicles/multirotor/multirotor.h"
 
 namespace airis::scenes {
@@ -15,17 +16,8 @@ namespace {
 
 using engine::ConfigError;
 
-std::string ErrorOf(const std::string& text) {
-  try {
-    LoadSceneFromString(text, "scenes/v.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(VehiclesSectionTest, UnknownPresetListsThePresets) {
-  EXPECT_EQ(ErrorOf("vehicles:\n  - name: d\n    preset: quad_xx\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n  - name: d\n    preset: quad_xx\n"),
             "scenes/v.yaml:3:5: vehicles[0].preset: unknown preset 'quad_xx' (did you mean "
             "'quad_x'?); presets: "
             "quad_x, quad_plus, hexa_x, octo_x, tilt_rotor");
@@ -50,14 +42,14 @@ TEST(VehiclesSectionTest, OverridesChangeOnlyTheKeysGiven) {
 }
 
 TEST(VehiclesSectionTest, OverrideMistakesNameFileLineAndKey) {
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    overrides:\n"
-                    "      mas_kg: 2\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    overrides:\n"
+                         "      mas_kg: 2\n"),
             "scenes/v.yaml:5:7: vehicles[0].overrides.mas_kg: unknown key 'mas_kg' (did you mean "
             "'mass_kg'?)");
-  const std::string bad_value = ErrorOf(
+  const std::string bad_value = SceneErrorOf(
       "vehicles:\n"
       "  - name: d\n"
       "    preset: quad_x\n"
@@ -89,27 +81,27 @@ TEST(VehiclesSectionTest, SensorsAreReadThroughTheirConfigs) {
 }
 
 TEST(VehiclesSectionTest, SensorMistakesNameFileLineAndKey) {
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    sensors:\n"
-                    "      - imu:\n"
-                    "          rate_hz: -5\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    sensors:\n"
+                         "      - imu:\n"
+                         "          rate_hz: -5\n"),
             "scenes/v.yaml:6:11: vehicles[0].sensors[0].imu.rate_hz: must be > 0 (got -5)");
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    sensors:\n"
-                    "      - imu: {}\n"
-                    "      - imu: {}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    sensors:\n"
+                         "      - imu: {}\n"
+                         "      - imu: {}\n"),
             "scenes/v.yaml:6:9: vehicles[0].sensors[1]: duplicate sensor name 'imu' on vehicle 'd' "
             "(name one "
             "with `name:`)");
-  EXPECT_EQ(ErrorOf("vehicles:\n"
-                    "  - name: d\n"
-                    "    preset: quad_x\n"
-                    "    sensors:\n"
-                    "      - {name: x}\n"),
+  EXPECT_EQ(SceneErrorOf("vehicles:\n"
+                         "  - name: d\n"
+                         "    preset: quad_x\n"
+                         "    sensors:\n"
+                         "      - {name: x}\n"),
             "scenes/v.yaml:5:9: vehicles[0].sensors[0]: expected one sensor: imu, barometer, "
             "magnetometer, gps, rangefinder, lidar, camera or stereo_camera");
 }
@@ -181,12 +173,13 @@ TEST(VehiclesSectionTest, VehiclesMayShareACameraNameButNotADatasetName) {
       "  - {name: a, preset: quad_x, sensors: [{name: front, camera: {rate_hz: 5}}]}\n"
       "  - {name: b, preset: quad_x, start: {position_ned_m: [0, 5, -0.2]},\n"
       "     sensors: [{name: front, camera: {rate_hz: 5}}]}\n";
-  EXPECT_EQ(ErrorOf(two), "no error");  // datasets call them a_front and b_front
-  EXPECT_EQ(ErrorOf(two + "  - {name: c, preset: quad_x, start: {position_ned_m: [0, 9, -0.2]},\n"
-                          "     sensors: [{name: a_front, camera: {rate_hz: 5}}]}\n"),
-            "scenes/v.yaml:6:17: vehicles[2].sensors[0].name: camera 'a_front' and camera 'front' "
-            "of vehicle 'a' would share the dataset name 'a_front' (a camera name that several "
-            "vehicles use becomes <vehicle>_<camera>); rename one");
+  EXPECT_EQ(SceneErrorOf(two), "no error");  // datasets call them a_front and b_front
+  EXPECT_EQ(
+      SceneErrorOf(two + "  - {name: c, preset: quad_x, start: {position_ned_m: [0, 9, -0.2]},\n"
+                         "     sensors: [{name: a_front, camera: {rate_hz: 5}}]}\n"),
+      "scenes/v.yaml:6:17: vehicles[2].sensors[0].name: camera 'a_front' and camera 'front' "
+      "of vehicle 'a' would share the dataset name 'a_front' (a camera name that several "
+      "vehicles use becomes <vehicle>_<camera>); rename one");
 }
 
 }  // namespace
