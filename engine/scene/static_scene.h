@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "engine/core/config.h"
 #include "engine/core/frames.h"
 #include "engine/core/limits.h"
+#include "engine/scene/heightfield.h"
 
 namespace airis::engine {
 
@@ -120,6 +122,20 @@ struct SceneLighting {
   float fog_distance_m = 0.0f;  ///< distance at which fog reaches 63%, 0 = no fog
 };
 
+/// A block of the terrain's samples that is one object of the scene: drawn and hit by rays through
+/// the object's meshes (the block's triangles), collided as a heightfield over the same samples.
+struct TerrainChunk {
+  std::uint32_t object = 0;  ///< index into StaticScene::objects
+  int row0 = 0, col0 = 0;    ///< its first sample
+  int rows = 0, cols = 0;    ///< its samples (cells + 1 each way; neighbours share their edge)
+};
+
+/// The ground's shape where it is not flat: a heightfield cut into chunks.
+struct StaticTerrain {
+  std::shared_ptr<const Heightfield> heightfield;  ///< null when the scene has no terrain
+  std::vector<TerrainChunk> chunks;
+};
+
 /// Everything that does not move: meshes (each stored once), materials, models, placed objects, the
 /// class table and lighting; and the looks of the vehicles, which the renderer draws where the
 /// vehicles are. Built by scenes/, read by collision (Bullet) and ray casting (Embree), which use
@@ -134,6 +150,7 @@ struct StaticScene {
   std::vector<VehicleBody> vehicle_bodies;
   std::vector<SemanticClass> classes;  ///< indexed by nothing: look up by id with FindClass
   SceneLighting lighting;
+  StaticTerrain terrain;
 
   /// The class with `id`, or nullptr.
   const SemanticClass* FindClass(std::uint8_t id) const;

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "engine/core/frames.h"
+
+namespace airis::engine {
+
+/// Terrain heights on a regular grid over the ground plan, and the surface they define.
+///
+/// Sample (r, c) lies at north = origin_n + r * spacing, east = origin_e + c * spacing; its height
+/// is up, in metres above the NED origin (its z_W is -height). The surface is the grid's cells each
+/// cut into two triangles along the diagonal from sample (r + 1, c) to (r, c + 1): the
+/// triangulation Bullet's btHeightfieldTerrainShape uses (unflipped), so that sampling, collision,
+/// rays (Embree, on the same triangles) and rendering all see one surface. Within a triangle the
+/// height is linear; at the samples it is the sample.
+class Heightfield {
+ public:
+  /// `heights_m` holds rows x cols heights (m, up), row-major (row = north index). Throws
+  /// std::invalid_argument on fewer than 2 x 2 samples, a spacing that is not > 0 or a height
+  /// that is not finite.
+  Heightfield(const Eigen::Vector2d& origin_ne_m, double spacing_m, int rows, int cols,
+              std::vector<double> heights_m);
+
+  int rows() const { return rows_; }  ///< samples along north
+  int cols() const { return cols_; }  ///< samples along east
+  double spacing_m() const { return spacing_m_; }
+  /// North, east of sample (0, 0) (m).
+  const Eigen::Vector2d& origin_ne_m() const { return origin_ne_m_; }
+  /// Height of sample (r, c) (m, up). Requires 0 <= r < rows, 0 <= c < cols.
+  double height_m(int r, int c) const {
+    return heights_m_[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols_) +
+                      static_cast<std::size_t>(c)];
+  }
+  double min_height_m() const { return min_height_m_; }
+  double max_height_m() const { return max_height_m_; }
+  /// The far corner [north, east] of the grid (m).
+  Eigen::Vector2d end_ne_m() const;
+  /// True when (north, east) lies on the grid (edges included).
+  bool Contains(double north_m, double east_m) const;
+
+  /// Height of the surface at (north, east) (m, up); a point off the grid takes the height of the
+  /// nearest point of its edge.
+  double CalcHeight_m(double north_m, double east_m) const;
+  /// Unit normal of the surface's triangle under (north, east), world NED, pointing up (z < 0);
+  /// off the grid as CalcHeight_m.
+  Vec3 CalcNormal_W(double north_m, double east_m) const;
+  /// Smooth normal at sample (r, c) for shading: the central difference of its neighbours (one
+  /// sided at the edges), world NED, pointing up.
+  Vec3 CalcSampleNormal_W(int r, int c) const;
+
+ private:
+  // The cell under (north, east) and the position in it (u north, v east, each in [0, 1]).
+  void Locate(double north_m, double east_m, int* r, int* c, double* u, double* v) const;
+
+  Eigen::Vector2d origin_ne_m_;
+  double spacing_m_;
+  int rows_, cols_;
+  std::vector<double> heights_m_;
+  double min_height_m_ = 0.0, max_height_m_ = 0.0;
+};
+
+}  // namespace airis::engine
