@@ -2,6 +2,7 @@
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
 #include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
 #include <btBulletCollisionCommon.h>
 
@@ -11,6 +12,7 @@
 
 #include "engine/core/error.h"
 #include "engine/physics/static_collider_grid.h"
+#include "engine/scene/heightfield.h"
 
 namespace airis::engine {
 namespace {
@@ -112,6 +114,29 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
   btVector3 direction;
 };
 
+// Terrain points are measured against the triangle under the body's deepest point: where a box
+// crosses the edge two triangles share, Bullet's convex-triangle test reports the distance to the
+// edge along the edge's normal, which tilts toward the edge, and a body sliding over a smooth slope
+// stops or hops there (the internal-edge problem of triangle meshes). Each point of contacts
+// [first, end) keeps the body's point Bullet found (point + normal * distance) and gets the normal
+// and depth of the surface under it; points that end up farther than `margin_m` from the surface
+// are dropped.
+void ToTerrainSurface(const Heightfield& field, double margin_m, std::size_t first,
+                      std::vector<Contact>& contacts) {
+  std::size_t kept = first;
+  for (std::size_t i = first; i < contacts.size(); ++i) {
+    Contact c = contacts[i];
+    const Vec3 p_body_W = c.point_W - c.depth_m * c.normal_W;
+    c.normal_W = field.CalcNormal_W(p_body_W.x(), p_body_W.y());
+    // Vertical penetration times the normal's vertical part: the distance to the triangle's plane.
+    c.depth_m = (p_body_W.z() + field.CalcHeight_m(p_body_W.x(), p_body_W.y())) * -c.normal_W.z();
+    if (c.depth_m < -margin_m) continue;
+    c.point_W = p_body_W + c.depth_m * c.normal_W;
+    contacts[kept++] = c;
+  }
+  contacts.resize(kept);
+}
+
 // Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
 // per world). Our dispatcher (below) never draws from them, so they are made as small as Bullet
 // allows: a process can hold thousands of worlds (the Python module's vectorized environments).
@@ -159,6 +184,13 @@ class HeapDispatcher final : public btCollisionDispatcher {
 struct CollisionWorld::Bullet {
   btDefaultCollisionConfiguration configuration{SmallPools()};
   HeapDispatcher dispatcher{&configuration};
+  // Terrain's own: Bullet's multipoint convex-convex contacts (each of the body's triangle pairs
+  // perturbs the body's attitude a little to find up to three more points on the face), so that a
+  // box resting on a heightfield gets its face's contacts in one query, as box-box gives them on
+  // the ground plane. With one point per triangle a box on terrain rocks from corner to corner and
+  // walks downhill. Its algorithms come from the heap too, and are freed like the others.
+  btDefaultCollisionConfiguration terrain_configuration{SmallPools()};
+  HeapDispatcher terrain_dispatcher{&terrain_configuration};
   btDispatcherInfo dispatch_info;  // Bullet's defaults
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays;
@@ -167,6 +199,8 @@ struct CollisionWorld::Bullet {
   std::vector<btBvhTriangleMeshShape*>
       mesh_shapes;  // per scene mesh, built on first use (owned above)
   std::vector<std::unique_ptr<btCollisionObject>> statics;
+  std::vector<std::vector<float>> heightfield_data;  // per terrain chunk, Bullet's layout
+  std::shared_ptr<const Heightfield> terrain;        // the scene's, or null
   // Oriented bounds of every static collider, indexed like colliders_, and the grid over them.
   std::vector<ColliderBounds> bounds;
   StaticColliderGrid grid;
@@ -225,6 +259,31 @@ struct CollisionWorld::Bullet {
     return shape;
   }
 
+  // A terrain chunk as Bullet's heightfield (it keeps a pointer to the heights) and where it goes:
+  // samples become z_W = -height, Bullet's x along north (rows), y along east (columns), its
+  // unflipped cut (the diagonal from (x + 1, y) to (x, y + 1)) the one Heightfield uses; Bullet
+  // centres the shape on its bounds, so the transform puts the centre back.
+  btCollisionShape* HeightfieldShape(const Heightfield& field, const TerrainChunk& chunk,
+                                     btTransform* T_WC) {
+    auto& data = heightfield_data.emplace_back();
+    data.reserve(static_cast<std::size_t>(chunk.rows) * static_cast<std::size_t>(chunk.cols));
+    for (int c = 0; c < chunk.cols; ++c) {
+      for (int r = 0; r < chunk.rows; ++r) {
+        data.push_back(static_cast<float>(-field.height_m(chunk.row0 + r, chunk.col0 + c)));
+      }
+    }
+    const auto [lo, hi] = std::minmax_element(data.begin(), data.end());
+    auto* shape =
+        new btHeightfieldTerrainShape(chunk.rows, chunk.cols, data.data(), *lo, *hi, 2, false);
+    const double s = field.spacing_m();
+    shape->setLocalScaling(btVector3(btScalar(s), btScalar(s), 1));
+    const Vec3 centre(field.origin_ne_m().x() + s * (chunk.row0 + 0.5 * (chunk.rows - 1)),
+                      field.origin_ne_m().y() + s * (chunk.col0 + 0.5 * (chunk.cols - 1)),
+                      0.5 * (double(*lo) + double(*hi)));
+    *T_WC = ToBt(Mat3::Identity(), centre);
+    return Own(shape);
+  }
+
   void AddStatic(btCollisionShape* shape, const btTransform& T_WC, int collider_index) {
     auto object = std::make_unique<btCollisionObject>();
     object->setCollisionShape(shape);
@@ -248,7 +307,15 @@ struct CollisionWorld::Bullet {
 
 CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_unique<Bullet>()) {
   Bullet& b = *bullet_;
+  b.terrain_configuration.setConvexConvexMultipointIterations();
+  b.terrain = scene.terrain.heightfield;
   b.mesh_shapes.assign(scene.meshes.size(), nullptr);
+  std::vector<const TerrainChunk*> chunk_of(scene.objects.size(), nullptr);
+  for (const TerrainChunk& chunk : scene.terrain.chunks) {
+    Require(chunk.object < scene.objects.size() && scene.terrain.heightfield != nullptr,
+            "terrain.chunks", "a chunk names no object of the scene");
+    chunk_of[chunk.object] = &chunk;
+  }
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const StaticObject& object = scene.objects[oi];
     const std::string field = "objects[" + std::to_string(oi) + "]";
@@ -276,6 +343,15 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       return static_cast<int>(colliders_.size() - 1);
     };
 
+    if (chunk_of[oi] != nullptr) {
+      // Terrain: the heightfield over the chunk's samples (its meshes are the same triangles).
+      btTransform T_WC;
+      btCollisionShape* shape =
+          b.HeightfieldShape(*scene.terrain.heightfield, *chunk_of[oi], &T_WC);
+      const std::uint32_t mat = model.parts.empty() ? 0 : model.parts.front().material;
+      b.AddStatic(shape, T_WC, make_collider(mat));
+      continue;
+    }
     if (object.collision == CollisionShape::kBox) {
       // The model's bounding box, placed by T_WO (rotation and scale separated).
       Mat3 R, S;
@@ -416,13 +492,22 @@ void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q
       }
     }
     if (algorithm == nullptr) {
+      HeapDispatcher& dispatcher =
+          other->getCollisionShape()->getShapeType() == TERRAIN_SHAPE_PROXYTYPE
+              ? b.terrain_dispatcher
+              : b.dispatcher;
       algorithm =
-          b.dispatcher.findAlgorithm(&body_wrap, &other_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+          dispatcher.findAlgorithm(&body_wrap, &other_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
       if (algorithm == nullptr) continue;
     }
     body.algorithms_next.push_back({collider, algorithm});
     ContactCollector collector(&body_wrap, &other_wrap, margin_m, collider, contacts);
+    const std::size_t first = contacts.size();
     algorithm->processCollision(&body_wrap, &other_wrap, b.dispatch_info, &collector);
+    if (b.terrain != nullptr &&
+        other->getCollisionShape()->getShapeType() == TERRAIN_SHAPE_PROXYTYPE) {
+      ToTerrainSurface(*b.terrain, margin_m, first, contacts);
+    }
   }
   // Colliders no longer near give their algorithms back.
   for (const Bullet::Body::Algorithm& kept : body.algorithms) {

@@ -49,8 +49,10 @@ struct Contact {
 /// thick slab under its surface (on its local +z side, i.e. below it in NED) so nothing passes
 /// through it; other meshes become a convex hull or a BVH triangle mesh as CollisionShape says
 /// (kAuto: hull up to 128 triangles); kBox is the object's oriented bounding box; kNone objects are
-/// skipped. Bullet computes in single precision: contact points are good to ~1e-4 m at 1 km from
-/// the origin.
+/// skipped. Terrain chunks (StaticScene::terrain) collide as Bullet's heightfield over their
+/// samples (each one collider, with the material of its model's first part); each chunk is a
+/// collider of the grid with its own bounds, so a body above the local terrain finds nothing near.
+/// Bullet computes in single precision: contact points are good to ~1e-4 m at 1 km from the origin.
 class CollisionWorld {
  public:
   /// Builds the static colliders of `scene` (the scene may be destroyed afterwards).

@@ -81,15 +81,25 @@ ContactResolution ContactSolver::Resolve(const RigidBodyModel& body,
   state.v_W = v;
   state.w_B = R_WB.transpose() * w_W;
 
-  // Push the body out of the colliders along the normals, leaving the slop (a few Gauss-Seidel
-  // sweeps so contacts with different normals, such as a floor and a wall, are all satisfied).
+  // Push the body out of the colliders, leaving the slop (a few Gauss-Seidel sweeps so contacts
+  // with different normals, such as a floor and a wall, are all satisfied): straight up out of a
+  // surface that static friction could hold the body on (tilted less than atan(mu)), along the
+  // normal out of a steeper one. On a slope a push along the normal would leave the downhill part
+  // of each tick's fall under gravity, a creep of g sin(slope) dt^2 / 2 per tick (0.1 m a minute
+  // at 20 degrees) of a body that friction holds; straight up undoes the fall exactly (a body that
+  // slides on such a slope trails by as much per tick as the push along the normal leads it).
+  const Vec3 up_W(0.0, 0.0, -1.0);
   Vec3 shift = Vec3::Zero();
   for (int sweep = 0; sweep < 4; ++sweep) {
     bool moved = false;
-    for (const Contact& c : contacts) {
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const Contact& c = contacts[i];
       const double remaining = c.depth_m - c.normal_W.dot(shift) - config_.penetration_slop_m;
       if (remaining > 0.0) {
-        shift += remaining * c.normal_W;
+        const double mu = rows_[i].mu;
+        const double n_up = c.normal_W.dot(up_W);
+        const bool holds = n_up > 0.0 && n_up * n_up * (1.0 + mu * mu) >= 1.0;
+        shift += holds ? (remaining / n_up) * up_W : remaining * c.normal_W;
         moved = true;
       }
     }

@@ -32,8 +32,10 @@ struct ContactResolution {
 /// every contact point at once: a non-penetration impulse with Newton restitution on the approach
 /// speed measured before the solve, and Coulomb friction (tangential impulse inside the disc mu *
 /// normal impulse). Material pairs combine by averaging (restitution and friction), as PhysX does
-/// by default. Penetration deeper than the slop is then removed by moving the body along the
-/// contact normals (no energy is added: velocities are not touched by the projection).
+/// by default. Penetration deeper than the slop is then removed by moving the body (no energy is
+/// added: velocities are not touched by the projection): straight up out of a surface tilted less
+/// than atan(mu), which static friction could hold the body on, so that a body at rest on a slope
+/// does not creep downhill; along the normal out of a steeper one.
 /// Allocation-free once `scratch` has grown.
 class ContactSolver {
  public:

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tests/fixtures/box_scenes.h"
+#include "tests/fixtures/terrain_scenes.h"
 #include "tests/fixtures/test_environment.h"
 
 namespace airis::engine {
@@ -283,6 +284,40 @@ TEST(CollisionWorldTest, BodiesQueriedOnTwoThreadsGetTheContactsOfOneThread) {
       ASSERT_TRUE(SameContacts(got[body][step], expected)) << "body " << body << " step " << step;
     }
   }
+}
+
+}  // namespace
+}  // namespace airis::engine
+
+namespace airis::engine {
+namespace {
+
+TEST(CollisionWorldTest, TerrainCollidesOnTheHeightfieldsOwnTriangles) {
+  // GIVEN a checkerboard of heights 0 and 1 m on a 1 m grid: in each cell the two diagonals give
+  // different surfaces. At (u, v) = (0.3, 0.5) of a cell whose corners (r + 1, c) and (r, c + 1)
+  // are high, the heightfield's cut (between those two) puts the surface at 0.8 m; the other cut
+  // would put it at 0.2 m.
+  const auto scene = airis::testing::MakeTerrainScene(4.0, 1.0, 0.8, [](double n, double e) {
+    return static_cast<double>((std::lround(n) + std::lround(e)) & 1);
+  });
+  const Heightfield& field = *scene->terrain.heightfield;
+  const double n = -2.0 + 0.3, e = -2.0 + 0.5;  // corner (-2, -2) is low, (-1, -2), (-2, -1) high
+  ASSERT_NEAR(field.CalcHeight_m(n, e), 0.8, 1e-12);
+  CollisionWorld world(*scene);
+  EXPECT_EQ(world.colliders().size(), scene->terrain.chunks.size());
+  const int body = world.AddBody(Vec3::Constant(0.004));
+  std::vector<Contact> contacts;
+  // THEN a 4 mm box sunk 1 mm into the surface at 0.8 m touches the terrain (Bullet's heightfield
+  // cuts its cells as Heightfield does)
+  world.FindContacts(body, Vec3(n, e, -0.8 - 0.002 + 0.001), Quat::Identity(), 0.0, contacts);
+  ASSERT_FALSE(contacts.empty());
+  for (const Contact& c : contacts) {
+    EXPECT_EQ(world.colliders()[c.collider].class_id, airis::testing::kTerrainClass);
+    EXPECT_LT(c.normal_W.z(), 0.0);  // from the terrain up toward the body
+  }
+  // and at 0.2 m, where the other cut's surface would be, it is inside the hill, touching nothing.
+  world.FindContacts(body, Vec3(n, e, -0.2 - 0.002 + 0.001), Quat::Identity(), 0.0, contacts);
+  EXPECT_TRUE(contacts.empty());
 }
 
 }  // namespace
