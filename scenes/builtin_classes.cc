@@ -21,6 +21,8 @@ std::vector<engine::SemanticClass> BuiltInClasses() {
       {13, "water", Eigen::Vector3f(0.10f, 0.40f, 0.90f), true},
       // The vehicles' own bodies (vehicles[].body.class), so drones can be detected and tracked.
       {14, "drone", Eigen::Vector3f(0.00f, 0.85f, 0.75f)},
+      // Generated or elevation-model terrain (the `terrain` block).
+      {15, "terrain", Eigen::Vector3f(0.55f, 0.45f, 0.30f), true},
   };
 }
 

@@ -38,6 +38,24 @@ bool InClearing(const ForestConfig& c, const Vector2d& p) {
   return false;
 }
 
+// Slope of the terrain under `p` (rad); 0 on flat ground.
+double SlopeAt(const engine::Heightfield* terrain, const Vector2d& p) {
+  if (terrain == nullptr) return 0.0;
+  return std::acos(std::clamp(-terrain->CalcNormal_W(p.x(), p.y()).z(), -1.0, 1.0));
+}
+
+// z_W of the base of a trunk of radius `radius_m` at `p`: the lowest surface point under it (four
+// points on its rim and its centre), so that no tree floats on a slope; 0 on flat ground.
+double BaseZ(const engine::Heightfield* terrain, const Vector2d& p, double radius_m) {
+  if (terrain == nullptr) return 0.0;
+  double lowest = terrain->CalcHeight_m(p.x(), p.y());
+  for (const Vector2d& d : {Vector2d(1, 0), Vector2d(-1, 0), Vector2d(0, 1), Vector2d(0, -1)}) {
+    const Vector2d q = p + radius_m * d;
+    lowest = std::min(lowest, terrain->CalcHeight_m(q.x(), q.y()));
+  }
+  return -lowest;
+}
+
 }  // namespace
 
 void CalcAreaBounds(const AreaConfig& area, Vector2d* lo, Vector2d* hi) {
@@ -194,7 +212,9 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
     const std::int64_t variant = rng.UniformInt(0, c.variants_per_species - 1);
     const double u_height = rng.Uniform01();
     const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
-    if (u_keep >= keep || !AreaContains(c.area, p) || InClearing(c, p)) continue;
+    const double max_slope_rad = c.max_slope_deg * std::numbers::pi / 180.0;
+    const double slope_factor = std::max(0.0, 1.0 - SlopeAt(r.terrain, p) / max_slope_rad);
+    if (u_keep >= keep * slope_factor || !AreaContains(c.area, p) || InClearing(c, p)) continue;
     std::size_t s = 0;
     for (double acc = c.species[0].weight; acc < u_species && s + 1 < c.species.size();) {
       acc += c.species[++s].weight;
@@ -202,7 +222,10 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
     const double height = Lerp(c.species[s].height_m, u_height);
     if (!b.AddObject(
             variants[s][variant],
-            engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
+            engine::MakePose(
+                Vector3d(p.x(), p.y(),
+                         BaseZ(r.terrain, p, 0.5 * c.species[s].trunk_diameter_fraction * height)),
+                yaw, 0, 0, Vector3d::Constant(height)),
             r.tree_class, CollisionShape::kAuto,
             name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
       report.out_of_instance_ids = true;
@@ -225,11 +248,12 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
       const double height = Lerp(g.height_m, rng.Uniform01());
       const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
       if (!AreaContains(c.area, p) || InClearing(c, p)) continue;
-      if (!b.AddObject(
-              bush_model,
-              engine::MakePose(Vector3d(p.x(), p.y(), 0.0), yaw, 0, 0, Vector3d::Constant(height)),
-              r.bush_class, CollisionShape::kAuto,
-              name + "/bush" + std::to_string(report.bushes))) {
+      if (SlopeAt(r.terrain, p) >= c.max_slope_deg * std::numbers::pi / 180.0) continue;
+      if (!b.AddObject(bush_model,
+                       engine::MakePose(Vector3d(p.x(), p.y(), BaseZ(r.terrain, p, 0.0)), yaw, 0, 0,
+                                        Vector3d::Constant(height)),
+                       r.bush_class, CollisionShape::kAuto,
+                       name + "/bush" + std::to_string(report.bushes))) {
         report.out_of_instance_ids = true;
         return report;
       }

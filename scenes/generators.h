@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/core/random.h"
+#include "engine/scene/heightfield.h"
 #include "engine/scene/static_scene_builder.h"
 #include "scenes/scene_config.h"
 
@@ -44,10 +45,15 @@ GeneratorReport GenerateCity(const CityConfig& config, const CityResources& reso
 struct ForestResources {
   std::uint8_t tree_class = 0;
   std::uint8_t bush_class = 0;
+  /// The scene's terrain, or null on flat ground (z = 0).
+  const engine::Heightfield* terrain = nullptr;
 };
 
 /// Expands a forest into `builder`: Poisson-disc trees (Bridson 2007, "Fast Poisson disk sampling
-/// in arbitrary dimensions") thinned to the density, species models shared, bushes scattered.
+/// in arbitrary dimensions") thinned to the density, species models shared, bushes scattered. On
+/// terrain each tree and bush stands on the surface (its base at the lowest point under its trunk),
+/// the tree density falls linearly with the slope to none at max_slope_deg, and no bush grows that
+/// steep; the random draws are the same as on flat ground (the slope thins the same candidates).
 GeneratorReport GenerateForest(const ForestConfig& config, const ForestResources& resources,
                                const std::string& name, engine::RandomStream& stream,
                                engine::StaticSceneBuilder& builder);

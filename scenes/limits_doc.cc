@@ -52,6 +52,8 @@ std::span<const LimitDoc> Limits() {
       {"street blocks of one city", Count(kMaxCityBlocks), "`city.area`, `city.block_size_ne_m`"},
       {"Poisson-disc grid cells of one forest", Count(kMaxForestGridCells),
        "`forest.area`, `forest.min_spacing_m`"},
+      {"samples of the terrain heightfield", Count(kMaxTerrainSamples),
+       "`terrain.extent_ne_m`, `terrain.resolution_m`"},
       {"lines of one survey", Count(kMaxSurveyLines), "`survey.polygon_ne_m`, `survey.spacing_m`"},
       {"rays of one lidar scan (channels x columns)", Count(kMaxLidarRaysPerScan),
        "`lidar.channels`, `lidar.horizontal_resolution_deg`"},

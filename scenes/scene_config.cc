@@ -153,6 +153,7 @@ void AreaConfig::Validate() const {
 
 void CityConfig::Validate() const {
   ValidateNested(area, "area");
+  RequireNonNegative("max_level_change_m", max_level_change_m);
   Require(area.polygon_m.empty(), "area.polygon_ne_m",
           "a city covers a rectangle; polygons are for forests");
   RequirePositive("block_size_ne_m[0]", block_size_m[0]);
@@ -227,6 +228,8 @@ void ForestConfig::Validate() const {
     ValidateNested(clearings[i], Index("clearings", i));
   ValidateNested(ground_cover, "ground_cover");
   RequireInRange("variants_per_species", variants_per_species, 1, 64);
+  RequirePositive("max_slope_deg", max_slope_deg);
+  RequireInRange("max_slope_deg", max_slope_deg, 0.0, 90.0);
   Require(!tree_class.empty(), "tree_class", "must not be empty");
   const double cells = CalcForestGridCells(*this);
   Require(cells <= static_cast<double>(engine::kMaxForestGridCells), "min_spacing_m",

@@ -195,6 +195,7 @@ struct ObjectConfig {
   std::string class_name = "structure";
   engine::CollisionShape collision = engine::CollisionShape::kAuto;
   RepeatConfig repeat;
+  bool on_terrain = false;
 
   template <class V>
   void Visit(V& v) {
@@ -218,6 +219,9 @@ struct ObjectConfig {
     v.Field("collision", collision,
             "auto fits the object: primitive, else convex hull or triangles");
     v.Field("repeat", repeat, "rows of identical copies");
+    v.Field("on_terrain", on_terrain,
+            "true: position_ned_m's z (and each copy's) is measured from the terrain's surface at "
+            "its north, east (0 = on it, negative above); needs `terrain`");
   }
   void Validate() const;
 };
@@ -274,6 +278,7 @@ struct CityConfig {
   std::string sidewalk_class = "sidewalk";
   std::string lamp_class = "lamp_post";
   std::string car_class = "car";
+  double max_level_change_m = 20.0;
 
   template <class V>
   void Visit(V& v) {
@@ -311,6 +316,9 @@ struct CityConfig {
     v.Field("sidewalk_class", sidewalk_class, "class of sidewalks");
     v.Field("lamp_class", lamp_class, "class of lamp posts");
     v.Field("car_class", car_class, "class of cars");
+    v.Field("max_level_change_m", max_level_change_m,
+            "on terrain: the city stands on one terrace levelled at the mean height of the ground "
+            "under its area; refused when that ground's heights span more than this (m)");
   }
   void Validate() const;
 };
@@ -393,6 +401,7 @@ struct ForestConfig {
   std::vector<ClearingConfig> clearings;
   GroundCoverConfig ground_cover;
   int variants_per_species = 6;
+  double max_slope_deg = 35.0;
   std::string tree_class = "tree";
 
   template <class V>
@@ -406,6 +415,9 @@ struct ForestConfig {
     v.Field("ground_cover", ground_cover, "bushes");
     v.Field("variants_per_species", variants_per_species,
             "distinct tree models per species (shared by all its trees), 1..64");
+    v.Field("max_slope_deg", max_slope_deg,
+            "on terrain: no trees or bushes on ground this steep; tree density falls linearly "
+            "from density_per_ha on level ground to 0 here (deg)");
     v.Field("tree_class", tree_class, "class of trees");
   }
   void Validate() const;

@@ -67,6 +67,10 @@ class DocumentReader {
       doc_->ground = Sourced<GroundConfig>{*config.ground,          file, "ground", root["ground"],
                                            KeyMark(root, "ground"), 0};
     }
+    if (config.terrain) {
+      doc_->terrain = Sourced<TerrainConfig>{
+          *config.terrain, file, "terrain", root["terrain"], KeyMark(root, "terrain"), 0};
+    }
     if (config.physics) {
       doc_->physics = Sourced<engine::PhysicsConfig>{
           *config.physics, file, "physics", root["physics"], KeyMark(root, "physics"), 0};

@@ -17,6 +17,7 @@
 #include "engine/world/world.h"
 #include "scenes/scene_config.h"
 #include "scenes/sensor_kinds.h"
+#include "scenes/terrain.h"
 #include "scenes/vehicle_body.h"
 #include "scenes/yaml_reader.h"
 
@@ -60,6 +61,7 @@ struct SceneFileConfig {
   std::vector<std::string> include;
   std::optional<SceneSettingsConfig> scene;
   std::optional<GroundConfig> ground;
+  std::optional<TerrainConfig> terrain;
   std::optional<engine::PhysicsConfig> physics;
   std::vector<ClassConfig> classes;
   std::vector<ObjectConfig> objects;
@@ -72,6 +74,9 @@ struct SceneFileConfig {
     v.Field("scene", scene,
             "name, seed, origin, environment, lighting (this file's wins over includes)");
     v.Field("ground", ground, "ground plane (this file's wins over includes)");
+    v.Field("terrain", terrain,
+            "generated hills under everything, instead of the ground plane (docs/terrain.md; "
+            "this file's wins over includes)");
     v.Field("physics", physics,
             "tick rate and contact solver settings (this file's wins over includes)");
     v.Field("classes", classes, "semantic classes added to the built-in table");
@@ -123,6 +128,7 @@ struct SceneDocument {
   std::vector<std::shared_ptr<const SourceFile>> files;
   std::optional<Sourced<SceneSettingsConfig>> scene;
   std::optional<Sourced<GroundConfig>> ground;
+  std::optional<Sourced<TerrainConfig>> terrain;
   std::optional<Sourced<engine::PhysicsConfig>> physics;
   std::vector<Sourced<ClassConfig>> classes;
   std::vector<Sourced<ObjectConfig>> objects;

@@ -18,6 +18,7 @@
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_overrides.h"
+#include "scenes/terrain.h"
 #include "scenes/vehicle_kinds.h"
 
 namespace airis::scenes {
@@ -73,10 +74,22 @@ class SceneAssembler {
     s.sun = sun_;
     GroundConfig ground;
     if (doc_.ground) ground = doc_.ground->config;
+    const engine::RandomStreams streams(s.seed);
+    if (doc_.terrain) {
+      // Terrain replaces the ground plane (its lowest point is at z = 0).
+      if (doc_.ground && ground.enabled) {
+        errors.Try([&] {
+          doc_.ground->Fail("enabled",
+                            "a scene with `terrain` has no ground plane (the terrain "
+                            "is the ground); remove `ground` or set enabled: false");
+        });
+      }
+      ground.enabled = false;
+      errors.Try([&] { AddTerrainBlock(*doc_.terrain, streams); });
+    }
     s.has_ground = ground.enabled;
     if (ground.enabled) errors.Try([&] { AddGround(ground); });
     for (const auto& o : doc_.objects) errors.Try([&] { AddObjects(o); });
-    const engine::RandomStreams streams(s.seed);
     for (const auto& g : doc_.generators) {
       errors.Try([&] { s.generated.push_back(Generate(g, streams)); });
     }
@@ -225,6 +238,45 @@ class SceneAssembler {
         engine::CollisionShape::kAuto, "ground", material);
   }
 
+  void AddTerrainBlock(const Sourced<TerrainConfig>& entry, const engine::RandomStreams& streams) {
+    const TerrainConfig& c = entry.config;
+    const std::uint8_t cls = ClassOf(entry, "class", c.class_name);
+    engine::RandomStream stream = streams.Stream("terrain");
+    engine::Heightfield field = GenerateTerrain(c, stream);
+    // Each city stands on a terrace levelled under its area before the terrain is chunked.
+    for (const auto& g : doc_.generators) {
+      if (!g.config.city) continue;
+      const CityConfig& city = *g.config.city;
+      Eigen::Vector2d lo, hi;
+      CalcAreaBounds(city.area, &lo, &hi);
+      const TerraceResult terrace = LevelTerrain(lo, hi, &field);
+      const double span_m = terrace.highest_m - terrace.lowest_m;
+      if (span_m > city.max_level_change_m) {
+        g.Fail("city.area", "the terrain under the city spans " + engine::FormatRounded(span_m) +
+                                " m of height (" + engine::FormatRounded(terrace.lowest_m) +
+                                " to " + engine::FormatRounded(terrace.highest_m) +
+                                " m), more than city.max_level_change_m = " +
+                                engine::FormatNumber(city.max_level_change_m) +
+                                " m: the ground is too steep to level for it (move the city to "
+                                "flatter ground, make it smaller or raise the limit)");
+      }
+      city_levels_m_[&g] = terrace.height_m;
+    }
+    const std::size_t triangles =
+        2 * static_cast<std::size_t>(field.rows() - 1) * static_cast<std::size_t>(field.cols() - 1);
+    if (stored_triangles_ + triangles > engine::kMaxSceneTriangles) {
+      entry.Fail("resolution_m", "the terrain's " + std::to_string(triangles) +
+                                     " triangles exceed the scene's limit of " +
+                                     std::to_string(engine::kMaxSceneTriangles) +
+                                     " (docs/limits.md)");
+    }
+    stored_triangles_ += triangles;
+    if (!AddTerrain(c, std::move(field), cls, builder_)) {
+      entry.Fail("", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
+                         " objects (instance ids are 16-bit)");
+    }
+  }
+
   void AddObjects(const Sourced<ObjectConfig>& entry) {
     const ObjectConfig& c = entry.config;
     if (!c.name.empty()) {
@@ -236,6 +288,10 @@ class SceneAssembler {
       }
     }
     const std::uint8_t cls = ClassOf(entry, "class", c.class_name);
+    const engine::Heightfield* terrain = builder_.scene().terrain.heightfield.get();
+    if (c.on_terrain && terrain == nullptr) {
+      entry.Fail("on_terrain", "the scene has no `terrain` to place the object on");
+    }
     const RepeatConfig& r = c.repeat;
     // Checked before anything is placed or reserved: how many copies, and where the last ones go.
     const std::uint64_t copies = static_cast<std::uint64_t>(r.count) * r.rows;
@@ -276,7 +332,8 @@ class SceneAssembler {
     builder_.ReserveObjects(copies);
     for (int row = 0; row < r.rows; ++row) {
       for (int i = 0; i < r.count; ++i) {
-        const Vec3 p = c.position_m + i * r.step_m + row * r.row_step_m;
+        Vec3 p = c.position_m + i * r.step_m + row * r.row_step_m;
+        if (c.on_terrain) p.z() -= terrain->CalcHeight_m(p.x(), p.y());
         std::string name = base;
         if (r.rows > 1) name += "_" + std::to_string(row);
         if (r.count > 1 || r.rows > 1) name += "_" + std::to_string(i);
@@ -314,12 +371,21 @@ class SceneAssembler {
       r.car_class = ClassOf(entry, "city.car_class", c.car_class);
       if (!c.car_mesh.empty())
         r.car_model = MeshModel(entry, "city.car_mesh", c.car_mesh, c.car_mesh_axes);
+      const std::size_t first = builder_.scene().objects.size();
       report = GenerateCity(c, r, summary.name, stream, builder_);
+      // On terrain: up onto its terrace.
+      if (const auto level = city_levels_m_.find(&entry); level != city_levels_m_.end()) {
+        auto& objects = builder_.scene().objects;
+        for (std::size_t i = first; i < objects.size(); ++i) {
+          objects[i].T_WO.translation().z() -= level->second;
+        }
+      }
     } else {
       const ForestConfig& f = *g.forest;
       ForestResources r;
       r.tree_class = ClassOf(entry, "forest.tree_class", f.tree_class);
       r.bush_class = ClassOf(entry, "forest.ground_cover.class", f.ground_cover.class_name);
+      r.terrain = builder_.scene().terrain.heightfield.get();
       report = GenerateForest(f, r, summary.name, stream, builder_);
     }
     if (report.out_of_instance_ids) {
@@ -444,6 +510,23 @@ class SceneAssembler {
             "vehicle '" + c.name + "' starts " + engine::FormatRounded(lowest_z) +
                 " m into the ground (its body box reaches z = " + engine::FormatRounded(lowest_z) +
                 " m; NED z is down, so heights are negative; or set start.on_ground)");
+      }
+    }
+    if (const engine::Heightfield* terrain = builder_.scene().terrain.heightfield.get();
+        terrain != nullptr && !v.on_ground) {
+      // The body box's lowest corner against the terrain under the centre (the box is small
+      // beside a cell of terrain).
+      const engine::Vec3 half = 0.5 * v.spec->CalcRigidBodyConfig().box_size_m;
+      const engine::Mat3 R = v.start.q_WB.toRotationMatrix();
+      const double lowest_z = v.start.p_W.z() + R.row(2).cwiseAbs().dot(half);
+      const double surface_z = -terrain->CalcHeight_m(v.start.p_W.x(), v.start.p_W.y());
+      if (lowest_z > surface_z + kStartTolerance_m) {
+        entry.Fail(
+            "start.position_ned_m",
+            "vehicle '" + c.name + "' starts " + engine::FormatRounded(lowest_z - surface_z) +
+                " m into the terrain (its surface is at z = " + engine::FormatRounded(surface_z) +
+                " m there; set start.on_ground to "
+                "start on it)");
       }
     }
     const double speed = v.start.v_W.norm();
@@ -579,6 +662,7 @@ class SceneAssembler {
   std::map<std::string, const Sourced<ObjectConfig>*> named_objects_;
   std::map<std::string, const Sourced<GeneratorConfig>*> generator_names_;
   std::size_t stored_triangles_ = 0;
+  std::map<const Sourced<GeneratorConfig>*, double> city_levels_m_;  // terraces on terrain (m, up)
   engine::StaticSceneBuilder builder_{BuiltInClasses()};
   std::map<std::pair<std::string, int>, std::uint32_t> mesh_models_;
   SunPosition sun_;  // set by MakeLighting

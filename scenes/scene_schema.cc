@@ -27,6 +27,7 @@ std::vector<SchemaSection> SceneSchemaSections() {
   out.push_back({"top level", FieldTableMarkdown(top)});
   out.push_back(Section<SceneSettingsConfig>("scene", "scene."));
   out.push_back(Section<GroundConfig>("ground", "ground."));
+  out.push_back(Section<TerrainConfig>("terrain", "terrain."));
   out.push_back(Section<engine::PhysicsConfig>("physics", "physics."));
   out.push_back(Section<ClassConfig>("classes[]", "classes[]."));
   out.push_back(Section<ObjectConfig>("objects[]", "objects[]."));

@@ -42,6 +42,8 @@ inline constexpr double kMaxFlightHeight_m = 10'000.0;
 inline constexpr std::size_t kMaxCityBlocks = 16'384;
 /// Cells of one forest generator's Poisson-disc grid (its area / (min_spacing_m / sqrt 2)^2).
 inline constexpr std::size_t kMaxForestGridCells = 4'000'000;
+/// Samples of a scene's terrain heightfield (its extent / resolution, each way, plus one).
+inline constexpr std::size_t kMaxTerrainSamples = 4'194'304;
 /// Lines of one survey step (the polygon's width across the lines / spacing_m).
 inline constexpr std::size_t kMaxSurveyLines = 10'000;
 /// Rays of one lidar scan (channels x columns).

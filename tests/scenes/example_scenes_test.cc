@@ -71,6 +71,22 @@ TEST(ExampleScenesTest, ForestHasThousandsOfTreesOnAFewMeshes) {
   EXPECT_LE(s.static_scene.meshes.size(), 5u);
 }
 
+TEST(ExampleScenesTest, ValleyHasHillsAForestOnThemAndATownOnATerrace) {
+  const Scene s = LoadScene("scenes/valley.yaml");
+  ASSERT_NE(s.static_scene.terrain.heightfield, nullptr);
+  const engine::Heightfield& f = *s.static_scene.terrain.heightfield;
+  EXPECT_EQ(f.rows(), 301);
+  // relief_m, less the little the town's terrace raised the lowest ground by.
+  EXPECT_NEAR(f.max_height_m() - f.min_height_m(), 260.0, 0.1);
+  EXPECT_FALSE(s.has_ground);
+  const auto count = CountByClass(s);
+  EXPECT_GE(count.at("tree"), 5000u);
+  EXPECT_GE(count.at("building"), 20u);
+  EXPECT_EQ(count.at("terrain"), 25u);  // 300 x 300 cells in chunks of 64
+  ASSERT_EQ(s.vehicles.size(), 1u);
+  EXPECT_TRUE(s.vehicles[0].on_ground);
+}
+
 TEST(ExampleScenesTest, LandingPadLoadsTheMeshAssetThroughAssimp) {
   const Scene s = LoadScene("scenes/landing_pad.yaml");
   const auto& objects = s.static_scene.objects;

@@ -24,7 +24,7 @@ TEST(SceneSchemaTest, DocsListEveryKeyOfTheFormat) {
   const std::string scene_doc = ReadDoc("docs/scene-format.md");
   const std::string vehicles_doc = ReadDoc("docs/vehicles.md");
   const std::vector<SchemaSection> sections = SceneSchemaSections();
-  ASSERT_EQ(sections.size(), 18u);  // 9 blocks, 1 vehicle kind, 8 sensor kinds
+  ASSERT_EQ(sections.size(), 19u);  // 10 blocks, 1 vehicle kind, 8 sensor kinds
   for (const auto& s : sections) {
     const bool airframe = s.title.rfind("vehicles[].overrides", 0) == 0;
     const char* page = airframe ? "docs/vehicles.md" : "docs/scene-format.md";
