@@ -75,7 +75,7 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
     rules.stuff[c["id"].get<int>()] = c["stuff"].get<bool>();
     if (c["stuff"].get<bool>()) stuff_names.insert(c["name"].get<std::string>());
   }
-  EXPECT_EQ(stuff_names, (std::set<std::string>{"ground", "road", "sidewalk", "water"}));
+  EXPECT_EQ(stuff_names, (std::set<std::string>{"ground", "road", "sidewalk", "water", "terrain"}));
   // The scene's vehicle is an instance of its own, after every object, of the thing class drone.
   std::vector<nlohmann::json> vehicles;
   for (const auto& i : labels["instances"]) {
