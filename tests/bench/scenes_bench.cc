@@ -9,6 +9,7 @@
 #include "scenes/generators.h"
 #include "scenes/scene.h"
 #include "scenes/scene_stats.h"
+#include "scenes/terrain.h"
 
 namespace airis::scenes {
 namespace {
@@ -56,6 +57,42 @@ void BM_GenerateForest10k(benchmark::State& state) {
   ReportScene(state, warm);
 }
 BENCHMARK(BM_GenerateForest10k)->Unit(benchmark::kMillisecond);
+
+// Generated terrain of 10 km x 10 km at 10 m (1,001 x 1,001 samples, 6 octaves): the heights,
+// then the 256 chunks of 64 x 64 cells (meshes with normals and materials) the scene gets.
+TerrainConfig TenKilometreTerrain() {
+  TerrainConfig c;
+  c.extent_m = Eigen::Vector2d(10000, 10000);
+  c.resolution_m = 10.0;
+  c.relief_m = 400.0;
+  c.feature_size_m = 3000.0;
+  c.octaves = 6;
+  return c;
+}
+
+void BM_GenerateTerrain10km(benchmark::State& state) {
+  const TerrainConfig config = TenKilometreTerrain();
+  for (auto _ : state) {
+    engine::RandomStream stream(1);
+    engine::Heightfield field = GenerateTerrain(config, stream);
+    benchmark::DoNotOptimize(field.max_height_m());
+  }
+  state.SetItemsProcessed(state.iterations() * 1001 * 1001);
+}
+BENCHMARK(BM_GenerateTerrain10km)->Unit(benchmark::kMillisecond);
+
+void BM_TerrainChunks10km(benchmark::State& state) {
+  const TerrainConfig config = TenKilometreTerrain();
+  engine::RandomStream stream(1);
+  const engine::Heightfield field = GenerateTerrain(config, stream);
+  for (auto _ : state) {
+    engine::StaticSceneBuilder b(BuiltInClasses());
+    AddTerrain(config, field, 15, b);
+    benchmark::DoNotOptimize(b.scene().objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 1001 * 1001);
+}
+BENCHMARK(BM_TerrainChunks10km)->Unit(benchmark::kMillisecond);
 
 // The Poisson-disc sampling alone (Bridson, r = 3 m over 36 ha, before thinning to the density).
 void BM_PoissonDisc36ha(benchmark::State& state) {
