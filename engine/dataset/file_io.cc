@@ -1,12 +1,12 @@
 #include "engine/dataset/file_io.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 
 #include "engine/dataset/sha256.h"
 
@@ -54,9 +54,34 @@ void WriteFileAtomically(const std::filesystem::path& path, const std::string& t
 }
 
 std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) FailIo("open", path, errno);
-  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {});
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) FailIo("open", path, errno);
+  // In blocks of the size the file has when opened, then on to the end: one read() per block
+  // rather than a stream iterator's per-byte calls (merging reads megabytes of streams), and a
+  // file that grows while it is read (a journal being written) is read to its end all the same.
+  std::vector<std::uint8_t> bytes;
+  struct stat st {};
+  std::size_t block = 1 << 16;
+  if (::fstat(fd, &st) == 0 && st.st_size > 0) block = static_cast<std::size_t>(st.st_size) + 1;
+  for (;;) {
+    const std::size_t done = bytes.size();
+    bytes.resize(done + block);
+    const ssize_t n = ::read(fd, bytes.data() + done, block);
+    if (n < 0 && errno == EINTR) {
+      bytes.resize(done);
+      continue;
+    }
+    if (n < 0) {
+      const int err = errno;
+      ::close(fd);
+      FailIo("read", path, err);
+    }
+    bytes.resize(done + static_cast<std::size_t>(n));
+    if (n == 0) break;
+    block = 1 << 16;
+  }
+  ::close(fd);
+  return bytes;
 }
 
 std::filesystem::path PathUnder(const std::filesystem::path& root,

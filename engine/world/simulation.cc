@@ -4,6 +4,46 @@
 #include "engine/core/error.h"
 
 namespace airis::engine {
+namespace {
+
+SensorContext MakeSensorContext(World& world, std::size_t i, TimeNs now_ns) {
+  return SensorContext{now_ns,
+                       &world.vehicle(i).state(),
+                       &world.accelerations(i),
+                       &world.environment(),
+                       world.ray_caster(),
+                       &world,
+                       i};
+}
+
+// Vehicle i's sensors other than cameras sample when due (on whichever thread steps it).
+void SampleSensors(World& world, std::size_t i, TimeNs now_ns) {
+  const auto sensors = world.sensors(i);
+  if (sensors.empty()) return;
+  const SensorContext context = MakeSensorContext(world, i, now_ns);
+  for (const auto& sensor : sensors) {
+    if (sensor->image() == nullptr) sensor->SampleIfDue(context);
+  }
+}
+
+// On the calling thread, in the order of vehicles and sensors: images render (the GL context is
+// this thread's), and every listener hears of its sensor's sample of this tick.
+void NotifySensorListeners(World& world, TimeNs now_ns) {
+  for (std::size_t i = 0; i < world.vehicle_count(); ++i) {
+    const auto sensors = world.sensors(i);
+    if (sensors.empty()) continue;
+    const SensorContext context = MakeSensorContext(world, i, now_ns);
+    for (const auto& sensor : sensors) {
+      if (sensor->image() != nullptr) {
+        sensor->Update(context);
+      } else if (sensor->has_listeners() && sensor->last_sample_ns() == now_ns) {
+        sensor->NotifyListeners();
+      }
+    }
+  }
+}
+
+}  // namespace
 
 void SimulationConfig::Validate() const {
   (void)SimClock::FromRateHz(physics_rate_hz);
@@ -26,7 +66,6 @@ void Simulation::Step() {
   clock_.Advance();
 
   const TimeNs now_ns = clock_.now_ns();
-  if (world_->sensor_count() > 0) UpdateSensors(now_ns);
   const auto control_context = [&](std::size_t i) {
     Vehicle& vehicle = world_->vehicle(i);
     ControlContext context{now_ns,           dt_s,
@@ -35,51 +74,35 @@ void Simulation::Step() {
     world_->CalcLocalConditions(i, &context.air_density_kg_m3, &context.gravity_m_s2);
     return context;
   };
-  if (!autopilots_.empty()) {
-    for (std::size_t i = 0; i < autopilots_.size(); ++i) {
-      if (autopilots_[i]) autopilots_[i]->Publish(control_context(i));
-    }
-    for (std::size_t i = 0; i < autopilots_.size(); ++i) {
-      if (autopilots_[i]) autopilots_[i]->Collect(world_->vehicle(i));
-    }
+  const std::size_t n = world_->vehicle_count();
+  if (autopilots_.empty()) {
+    // Without an autopilot to read the samples first, a vehicle's controller needs only its own
+    // vehicle's state and sensors, and what runs on this thread after the sensors (cameras
+    // render the poses, listeners record samples) neither reads nor changes the commands it
+    // sets: each vehicle samples and controls in one pass, one fork and join a tick fewer, with
+    // the same results.
+    ParallelFor(pool_.get(), n, [&](std::size_t i) {
+      SampleSensors(*world_, i, now_ns);
+      world_->vehicle(i).UpdateControl(control_context(i));
+    });
+    if (world_->sensor_count() > 0) NotifySensorListeners(*world_, now_ns);
+    return;
   }
-  ParallelFor(pool_.get(), world_->vehicle_count(),
+  if (world_->sensor_count() > 0) UpdateSensors(now_ns);
+  for (std::size_t i = 0; i < autopilots_.size(); ++i) {
+    if (autopilots_[i]) autopilots_[i]->Publish(control_context(i));
+  }
+  for (std::size_t i = 0; i < autopilots_.size(); ++i) {
+    if (autopilots_[i]) autopilots_[i]->Collect(world_->vehicle(i));
+  }
+  ParallelFor(pool_.get(), n,
               [&](std::size_t i) { world_->vehicle(i).UpdateControl(control_context(i)); });
 }
 
 void Simulation::UpdateSensors(TimeNs now_ns) {
-  const std::size_t n = world_->vehicle_count();
-  const auto sensor_context = [&](std::size_t i) {
-    return SensorContext{now_ns,
-                         &world_->vehicle(i).state(),
-                         &world_->accelerations(i),
-                         &world_->environment(),
-                         world_->ray_caster(),
-                         world_.get(),
-                         i};
-  };
-  ParallelFor(pool_.get(), n, [&](std::size_t i) {
-    const auto sensors = world_->sensors(i);
-    if (sensors.empty()) return;
-    const SensorContext context = sensor_context(i);
-    for (const auto& sensor : sensors) {
-      if (sensor->image() == nullptr) sensor->SampleIfDue(context);
-    }
-  });
-  // Images render here (the GL context is this thread's), and every listener hears of its
-  // sensor's sample here, in the order of vehicles and sensors.
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto sensors = world_->sensors(i);
-    if (sensors.empty()) continue;
-    const SensorContext context = sensor_context(i);
-    for (const auto& sensor : sensors) {
-      if (sensor->image() != nullptr) {
-        sensor->Update(context);
-      } else if (sensor->has_listeners() && sensor->last_sample_ns() == now_ns) {
-        sensor->NotifyListeners();
-      }
-    }
-  }
+  ParallelFor(pool_.get(), world_->vehicle_count(),
+              [&](std::size_t i) { SampleSensors(*world_, i, now_ns); });
+  NotifySensorListeners(*world_, now_ns);
 }
 
 void Simulation::SetAutopilot(std::size_t vehicle, std::unique_ptr<Autopilot> autopilot) {

@@ -28,7 +28,9 @@
 #include "tools/jobs/dataset_merge.h"
 #include "tools/jobs/dataset_status.h"
 #include "tools/jobs/process_run.h"
+#include "tools/jobs/shard_progress.h"
 #include "tools/jobs/slurm_submission.h"
+#include "tools/jobs/submission_merge.h"
 
 namespace airis::tools {
 namespace {
@@ -45,6 +47,7 @@ struct DatasetArgs : DatasetWriteArgs {
   int slurm = 0;  // N of --slurm N; 0 = run here
   std::string only_shards;
   SlurmArgs slurm_args;
+  std::string then_merge;  // --then-merge DIR: the folder of the Slurm submission this shard is in
 };
 
 // "1:23" or "12:03:04" for a wall time in seconds.
@@ -89,6 +92,37 @@ std::string ResumeCommand(const DatasetArgs& a) {
   return c + " --resume";
 }
 
+// --then-merge DIR, after this shard completed: the last shard task of a Slurm submission to
+// finish merges DIR/shards/1..N into DIR, saving the merge job's scheduling pass. A merge that
+// fails here leaves the shard complete and the task successful: the merge job runs it again and its
+// log says why.
+void MergeIfLast(const std::string& out, int shards) {
+  try {
+    const SubmissionMerge m = MergeSubmission(out, shards);
+    switch (m.outcome) {
+      case SubmissionMerge::Outcome::kMerged:
+        std::printf("dataset merged: the last of %d shards, %lld frames in %.1f s into %s\n",
+                    m.summary.shards, static_cast<long long>(m.summary.frames), m.summary.wall_s,
+                    out.c_str());
+        break;
+      case SubmissionMerge::Outcome::kAlreadyMerged:
+        std::printf("dataset merged already in %s\n", out.c_str());
+        break;
+      case SubmissionMerge::Outcome::kShardsLeft:
+        std::printf("not merging yet: %zu of %d shards still to finish\n", m.unfinished.size(),
+                    shards);
+        break;
+      case SubmissionMerge::Outcome::kNoLock:
+        std::printf("not merging here: no file lock on %s (%s); the merge job merges\n",
+                    SubmissionMergeLockPath(out).c_str(), m.lock_error.c_str());
+        break;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "the merge after this shard failed (the merge job tries again): %s\n",
+                 e.what());
+  }
+}
+
 int Run(const DatasetArgs& a) {
   for (const auto& [value, name] :
        {std::pair{&a.scene, "scene"}, {&a.mission, "--mission"}, {&a.out, "--out"}}) {
@@ -103,6 +137,9 @@ int Run(const DatasetArgs& a) {
   o.scene.overrides = scenes::ParseSceneOverrides(a.overrides);
   o.mission = a.mission;
   o.shard = ParseShard(a.shard);
+  if (!a.then_merge.empty() && a.shard.empty()) {
+    throw engine::ConfigError({}, "--then-merge", "only with --shard K/N");
+  }
   o.threads = ParseThreads(a.threads);
   o.full_streams = ParseStreams(a.streams);
   o.resume = a.resume;
@@ -151,6 +188,7 @@ int Run(const DatasetArgs& a) {
     std::fprintf(stderr, "error: %s\n", r.failure.c_str());
     return 1;
   }
+  if (!a.then_merge.empty()) MergeIfLast(a.then_merge, o.shard.count);
   return 0;
 }
 
@@ -181,9 +219,12 @@ int SubmitToSlurm(const DatasetArgs& a) {
       throw engine::ConfigError(
           {}, name, "required (airis dataset SCENE --mission FILE --out DIR --slurm N)");
   }
-  if (!a.shard.empty()) {
-    throw engine::ConfigError({}, "--shard",
-                              "not with --slurm: the job array runs every shard K/N itself");
+  for (const auto& [value, name] :
+       {std::pair{&a.shard, "--shard"}, {&a.then_merge, "--then-merge"}}) {
+    if (!value->empty()) {
+      throw engine::ConfigError({}, name,
+                                "not with --slurm: the job array runs every shard K/N itself");
+    }
   }
   if (a.resume) {
     throw engine::ConfigError({}, "--resume",
@@ -238,7 +279,14 @@ int Status(const std::string& out, bool as_json) {
   return 0;
 }
 
-int Merge(const std::vector<std::string>& shards, const std::string& out) {
+int Merge(const std::vector<std::string>& shards, const std::string& out, bool skip_if_merged) {
+  if (skip_if_merged) {
+    if (const ShardProgress p = ReadShardProgress(out); p.complete && !p.merge_in_progress) {
+      std::printf("dataset merged already (by the last shard task): %lld frames in %s\n",
+                  static_cast<long long>(p.frames), out.c_str());
+      return 0;
+    }
+  }
   const MergeSummary m =
       MergeDatasetShards(std::vector<fs::path>(shards.begin(), shards.end()), out);
   std::printf("dataset merged: %d shards, %lld frames, %lld lidar scans in %.1f s\n", m.shards,
@@ -267,8 +315,12 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   merge->add_option("shards", *shards, "the shard folders, all N of them")->required();
   merge->add_option("--out", *merge_out, "merged dataset folder; must be empty or absent")
       ->required();
-  merge->callback([shards, merge_out, &exit_code] {
-    exit_code = RunReportingErrors([&] { return Merge(*shards, *merge_out); });
+  auto skip_if_merged = std::make_shared<bool>(false);
+  merge->add_flag("--skip-if-merged", *skip_if_merged,
+                  "succeed without merging when --out holds their complete merge already (the "
+                  "merge job of --slurm: its last shard task usually merged)");
+  merge->callback([shards, merge_out, skip_if_merged, &exit_code] {
+    exit_code = RunReportingErrors([&] { return Merge(*shards, *merge_out, *skip_if_merged); });
   });
   auto status_dir = std::make_shared<std::string>();
   auto status_json = std::make_shared<bool>(false);
@@ -302,6 +354,9 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--only-shards", a->only_shards,
                   "with --slurm: run only these shards again (comma-separated), e.g. failed ones");
   AddSlurmOptions(cmd, a->slurm_args);
+  cmd->add_option("--then-merge", a->then_merge,
+                  "with --shard K/N: once this shard is complete, merge DIR/shards/1..N into DIR "
+                  "if they all are (the tasks of --slurm do this)");
   cmd->callback([a, cmd, merge, status, schema, &exit_code] {
     if (merge->parsed() || status->parsed() || schema->parsed()) return;
     exit_code = RunReportingErrors([&] {

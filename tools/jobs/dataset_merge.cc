@@ -147,24 +147,31 @@ void CopyTree(const std::vector<Shard>& shards, const fs::path& sub, const fs::p
   }
 }
 
+// The first shard's file `rel` whose bytes differ from the first shard's (each file read once);
+// empty when every shard holds the same.
+fs::path FirstDifferent(const std::vector<Shard>& shards, const fs::path& rel) {
+  const auto first = engine::ReadFileBytes(shards.front().dir / rel);
+  for (std::size_t i = 1; i < shards.size(); ++i) {
+    if (engine::ReadFileBytes(shards[i].dir / rel) != first) return shards[i].dir / rel;
+  }
+  return {};
+}
+
 // Rows of one CSV from every shard in time order (first column, integer ns). Rows two shards both
 // hold (a stereo frame that each shard rendered for one eye) are written once; the headers must
-// agree.
+// agree. A file every shard wrote alike (the whole flight's log) is that file, linked.
 void JoinCsv(const std::vector<Shard>& shards, const fs::path& rel, const fs::path& out) {
+  if (FirstDifferent(shards, rel).empty()) {
+    CopyNew(shards.front().dir / rel, out / rel);
+    return;
+  }
   std::vector<engine::CsvText> parts;
-  bool identical = true;
   for (const Shard& s : shards) {
     parts.push_back(engine::ReadCsvText(s.dir / rel));
     if (parts.back().header != parts.front().header) {
       throw DatasetIoError(parts.back().path.string() + ": header differs from " +
                            parts.front().path.string());
     }
-    identical = identical && parts.back().rows == parts.front().rows;
-  }
-  if (identical) {
-    engine::WriteFileAtomically(out / rel,
-                                engine::JoinCsvText(parts.front().header, parts.front().rows));
-    return;
   }
   std::vector<std::pair<std::int64_t, const std::string*>> rows;  // stable within a shard
   for (const auto& p : parts) {
@@ -318,17 +325,15 @@ MergeSummary MergeDatasetShards(const std::vector<fs::path>& dirs, const fs::pat
       JoinCsv(shards, e.path().filename(), out);
   }
   JoinChecksums(shards, out);
-  // Binary streams: every shard flew the same flight and logged the same samples.
+  // Binary streams: every shard flew the same flight and logged the same samples, checked; the
+  // first shard's file is linked (or copied) into place.
   for (const auto& e : fs::directory_iterator(shards.front().dir)) {
     if (!e.is_regular_file() || e.path().extension() != ".npy") continue;
-    const auto bytes = engine::ReadFileBytes(e.path());
-    for (const Shard& s : shards) {
-      if (engine::ReadFileBytes(s.dir / e.path().filename()) != bytes) {
-        throw DatasetIoError((s.dir / e.path().filename()).string() + " differs from " +
-                             e.path().string() + ": the shards did not log the same flight");
-      }
+    if (const fs::path other = FirstDifferent(shards, e.path().filename()); !other.empty()) {
+      throw DatasetIoError(other.string() + " differs from " + e.path().string() +
+                           ": the shards did not log the same flight");
     }
-    engine::WriteFileAtomically(out / e.path().filename(), bytes);
+    CopyNew(e.path(), out / e.path().filename());
   }
   CopyTree(shards, "tartanair", out, {"pose_left.txt", "pose_right.txt"});
   bool preview = false;

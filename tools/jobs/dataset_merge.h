@@ -16,9 +16,10 @@ struct MergeSummary {
 
 /// Joins the folders of `airis dataset --shard K/N` runs (all N of one dataset, complete) into
 /// `out` (created; it must be empty or absent: nothing is overwritten), so that it holds what the
-/// unsharded run writes (docs/dataset-format.md, "Shards"): frame files copied; poses.csv and
-/// camera streams joined in time order; each camera's COCO file joined with annotation ids
-/// renumbered in frame order; lidar scans copied and their poses.csv joined in scan order;
+/// unsharded run writes (docs/dataset-format.md, "Shards"): frame files hard-linked (copied
+/// across file systems); poses.csv and CSV streams joined in time order, and streams that every
+/// shard logged alike (.npy, checked) linked; each camera's COCO file joined with annotation ids
+/// renumbered in frame order; lidar scans linked and their poses.csv joined in scan order;
 /// TartanAir pose files and preview.png made again; the manifest
 /// (written last) without the shard entry and with the summed frame counts. Throws DatasetIoError
 /// naming the shard folder and the problem when a shard is missing, repeated, incomplete, or made

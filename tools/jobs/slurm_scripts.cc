@@ -182,7 +182,10 @@ std::string MakeShardScript(const SlurmDatasetPlan& plan) {
        "fi\n";
   s += "# Mesa's llvmpipe renders with one thread per CPU of the node unless told otherwise.\n";
   s += "export LP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n";
-  s += "exec " + CommandLine(command) + " \\\n  --out \"$out\" --shard \"$k/" + n + "\" $resume\n";
+  s += "# Once its shard is complete, the task that finds every shard complete merges them into\n"
+       "# the dataset (under slurm/merge.lock); merge.sh then finds the work done.\n";
+  s += "exec " + CommandLine(command) + " \\\n  --out \"$out\" --shard \"$k/" + n +
+       "\" $resume --then-merge " + ShellQuote(plan.out) + "\n";
   return s;
 }
 
@@ -200,8 +203,9 @@ std::string MakeMergeScript(const SlurmDatasetPlan& plan) {
   s += "shards=()\n";
   s += "for k in $(seq 1 " + n + "); do shards+=(" + ShellQuote(ShardsFolder(plan.out) + "/") +
        "\"$k\"); done\n";
+  s += "# The last shard task to finish has usually merged them already.\n";
   s += "exec " + ShellQuote(plan.dataset.airis) + " dataset merge \"${shards[@]}\" --out " +
-       ShellQuote(plan.out) + "\n";
+       ShellQuote(plan.out) + " --skip-if-merged\n";
   return s;
 }
 

@@ -216,6 +216,54 @@ TEST(DatasetLayoutTest, AWholeDatasetMergesAloneIntoTheSameBytesWithLinkedFrames
   EXPECT_TRUE(fs::equivalent(merged / "down/rgb/000000.png", whole / "down/rgb/000000.png"));
 }
 
+// `--then-merge DIR` (what the tasks of `--slurm N` run, docs/cluster.md): each shard writes
+// DIR/shards/K; a shard that finishes while another is missing leaves DIR alone, the last one to
+// finish merges them into DIR, the bytes of the unsharded run; the merge job after them
+// (`merge --skip-if-merged`) then finds the work done and changes nothing.
+TEST(DatasetLayoutTest, TheLastShardToFinishMergesTheSubmission) {
+  const fs::path dir = airis::testing::TestTempDir() / "airis_balls_submission";
+  fs::remove_all(dir);
+  const auto shard = [&](int k, const std::string& then_merge) {
+    return RunAiris("dataset " + BallsScene().string() + " --mission " + BallsMission().string() +
+                    " --cameras down --out " + (dir / "shards" / std::to_string(k)).string() +
+                    " --shard " + std::to_string(k) + "/2" + then_merge);
+  };
+  auto r = shard(2, " --then-merge " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("not merging yet: 1 of 2 shards still to finish"), std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(dir / "manifest.json"));
+  r = shard(1, " --then-merge " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("dataset merged: the last of 2 shards"), std::string::npos) << r.out;
+
+  auto merged = AllFiles(dir);
+  std::erase_if(merged, [](const auto& f) {
+    return f.first.starts_with("shards/") || f.first.starts_with("slurm/");
+  });
+  const auto whole = AllFiles(MakeBalls("submission_whole", "--cameras down"));
+  ASSERT_GT(whole.size(), 10u);
+  EXPECT_EQ(merged.size(), whole.size());
+  for (const auto& [name, bytes] : whole) {
+    ASSERT_TRUE(merged.count(name)) << name;
+    EXPECT_TRUE(merged.at(name) == bytes) << name << " differs";
+  }
+
+  const std::string merge_job = "dataset merge " + (dir / "shards/1").string() + " " +
+                                (dir / "shards/2").string() + " --out " + dir.string();
+  r = RunAiris(merge_job + " --skip-if-merged");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("dataset merged already"), std::string::npos) << r.out;
+  EXPECT_TRUE(Bytes(dir / "manifest.json") == whole.at("manifest.json"));
+  // Without the flag, a merge into a merged folder is refused as before: nothing is overwritten.
+  EXPECT_EQ(RunAiris(merge_job).exit_code, 2);
+  // --then-merge belongs to a shard run.
+  r = RunAiris("dataset " + BallsScene().string() + " --mission " + BallsMission().string() +
+               " --out " + (dir / "x").string() + " --then-merge " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--then-merge: only with --shard K/N"), std::string::npos) << r.err;
+}
+
 TEST(DatasetLayoutTest, MergeRefusesShardsThatDoNotMakeOneDataset) {
   const fs::path s1 = MakeBalls("bad_shard1", "--shard 1/2 --cameras down");
   const fs::path s2 = MakeBalls("bad_shard2", "--shard 2/2 --cameras down");

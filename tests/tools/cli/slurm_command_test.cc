@@ -40,7 +40,8 @@ TEST(SlurmCommandTest, DryRunPrintsTheScriptsAndSubmitsNothing) {
             "#SBATCH --account=lab\n",
         " dataset " + scene + " --mission " +
             (fs::current_path() / "scenes/missions/city_survey.yaml").string() +
-            " --seed 5 \\\n  --out \"$out\" --shard \"$k/3\" $resume\n",
+            " --seed 5 \\\n  --out \"$out\" --shard \"$k/3\" $resume --then-merge " + out.string() +
+            "\n",
         "sbatch --parsable --array=1-3 " + out.string() + "/slurm/shard.sh\n",
         "sbatch --parsable '--dependency=afterok:<array job id>' --kill-on-invalid-dep=yes " +
             out.string() + "/slurm/merge.sh\n"}) {
@@ -140,7 +141,9 @@ TEST(SlurmCommandTest, OverridesReachEveryShardTaskAndAreCheckedBeforeSubmitting
   // sorted by key, normal spelling, shell-quoted where the shell would split
   const std::string expected =
       " --set 'scene.environment.wind.mean_ned_m_s=[5, 0, 0]' --set "
-      "scene.lighting.fog_distance_m=300 \\\n  --out \"$out\" --shard \"$k/2\" $resume\n";
+      "scene.lighting.fog_distance_m=300 \\\n  --out \"$out\" --shard \"$k/2\" $resume "
+      "--then-merge " +
+      out.string() + "\n";
   EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\nnot in\n" << r.out;
 
   const auto bad = Dataset(kCity + " --out " + out.string() +

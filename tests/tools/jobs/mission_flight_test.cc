@@ -1,5 +1,5 @@
 // Missions flown in a real Simulation: contacts and collisions, several vehicles' tracks in one
-// lockstep, barriers, tracks flown through an autopilot, and the chase example
+// lockstep, barriers, tracks flown through an autopilot, and the chase and swarm formation examples
 // (docs/mission-format.md). Tests run from the repository root.
 #include <gtest/gtest.h>
 
@@ -273,6 +273,70 @@ TEST(ChaseExampleTest, BothTracksCompleteAndTheDistanceStaysInItsBand) {
   EXPECT_GT(samples, 25000);  // about 33 s of path at 1 kHz
   EXPECT_GT(min_m, offset_m - 0.3);
   EXPECT_LT(max_m, offset_m + 0.3);
+}
+
+// GIVEN the swarm formation example (100 drones on a 10 x 10 grid, 2 m apart) WHEN flown THEN every
+// track completes without a collision, and while the grid flies its square every drone keeps its
+// spot in the grid: its offset from drone00 stays within 2 x 0.15 m of the two spots' offset (each
+// drone within 0.15 m of its own path's reference, as in the chase), so no two drones come closer
+// than the 2 m spacing less 0.3 m. At the end each drone is back on the ground at its own spot,
+// within 0.3 m (the landing's drift in the 2 m/s wind of the scene).
+TEST(SwarmExampleTest, OneHundredDronesFlyTheGridAsOneBlockAndLandOnTheirSpots) {
+  SceneSource scene;
+  scene.path = "scenes/swarm.yaml";
+  SimulationJob job(scene);
+  const engine::World& world = job.world();
+  ASSERT_EQ(world.vehicle_count(), 100u);
+  std::vector<Eigen::Vector3d> start_W;
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    start_W.push_back(world.vehicle(v).state().p_W);
+  }
+  int on_path = 0;  // tracks between their path's start and its end
+  bool path_seen = false;
+  double max_offset_error_m = 0.0, min_distance_m = 1e9;
+  int samples = 0;
+  MissionFlight flight;
+  flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
+    if (e.step_kind != "path") return;
+    if (e.what == "started") ++on_path;
+    if (e.what == "done") --on_path;
+    path_seen = path_seen || on_path == 100;
+  };
+  engine::TimeNs next_sample_ns = 0;
+  flight.callbacks.after_tick = [&](engine::TimeNs now_ns) {
+    // Every 10 ms while all 100 fly their paths: 4,950 pairs a sample.
+    if (on_path != 100 || now_ns < next_sample_ns) return;
+    next_sample_ns = now_ns + 10'000'000;
+    ++samples;
+    const Eigen::Vector3d lead_W = world.vehicle(0).state().p_W;
+    for (std::size_t i = 0; i < world.vehicle_count(); ++i) {
+      const Eigen::Vector3d p_W = world.vehicle(i).state().p_W;
+      const Eigen::Vector2d offset = (p_W - lead_W).head<2>();
+      const Eigen::Vector2d spot = (start_W[i] - start_W[0]).head<2>();
+      max_offset_error_m = std::max(max_offset_error_m, (offset - spot).norm());
+      for (std::size_t j = i + 1; j < world.vehicle_count(); ++j) {
+        min_distance_m = std::min(min_distance_m, (world.vehicle(j).state().p_W - p_W).norm());
+      }
+    }
+  };
+  const MissionOutcome out =
+      job.FlyMission(scenes::LoadMissionFile("scenes/missions/swarm_formation.yaml"), flight);
+  ASSERT_TRUE(out.succeeded()) << out.failure;
+  EXPECT_EQ(out.collisions, 0);
+  ASSERT_EQ(out.tracks.size(), 100u);
+  for (const TrackOutcome& t : out.tracks) {
+    EXPECT_EQ(t.steps_done, t.steps) << t.vehicle;
+    EXPECT_LT(t.max_tracking_error_m, 0.15) << t.vehicle;
+  }
+  EXPECT_TRUE(path_seen);
+  EXPECT_GT(samples, 3000);  // the 111 m square at 3 m/s: over 30 s of paths flown together
+  EXPECT_LT(max_offset_error_m, 0.3);
+  EXPECT_GT(min_distance_m, 2.0 - 0.3);
+  for (std::size_t v = 0; v < world.vehicle_count(); ++v) {
+    const Eigen::Vector3d p_W = world.vehicle(v).state().p_W;
+    EXPECT_LT((p_W - start_W[v]).head<2>().norm(), 0.3) << world.vehicle(v).name();
+    EXPECT_NEAR(p_W.z(), start_W[v].z(), 0.1) << world.vehicle(v).name();
+  }
 }
 
 }  // namespace
