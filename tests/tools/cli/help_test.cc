@@ -101,9 +101,8 @@ TEST(HelpTest, EveryValueHasATypeAndUnit) {
       if (o->get_expected_max() == 0 || o->get_name() == "--help") continue;  // a flag
       ++options;
       const std::string type = o->get_type_name();
-      EXPECT_TRUE(type != "" && type.find("TEXT") == std::string::npos &&
-                  type.find("FLOAT") == std::string::npos && type.rfind("INT", 0) != 0 &&
-                  type.rfind("UINT", 0) != 0)
+      EXPECT_TRUE(type != "" && type.find("TEXT") == std::string::npos && type != "FLOAT" &&
+                  type != "INT" && type != "UINT")
           << path << " " << o->get_name() << ": " << type;
     }
     const std::string help = cmd.help();
