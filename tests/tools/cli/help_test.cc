@@ -26,13 +26,13 @@ Output Airis(const std::vector<std::string>& args) {
 }
 
 TEST(HelpTest, AnUnknownCommandNamesTheClosestAndTheKnownOnes) {
-  const Output r = Airis({"rnu", "scenes/city.yaml"});
+  const Output r = Airis({"datset", "scenes/city.yaml"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(
-      r.err.rfind("error: unknown command 'rnu' (did you mean 'run'?); the commands of airis: "
-                  "env, scene, run, dataset, px4, campaign, bench, help\n",
-                  0),
-      0u)
+  EXPECT_EQ(r.err.rfind(
+                "error: unknown command 'datset' (did you mean 'dataset'?); the commands of airis: "
+                "env, scene, run, dataset, px4, campaign, bench, help\n",
+                0),
+            0u)
       << r.err;
   const Output fly = Airis({"fly"});
   EXPECT_EQ(fly.exit_code, 2);
