@@ -2,6 +2,7 @@
 // instance maps, and COCO annotation extraction, on its worker threads) and the whole `airis
 // dataset` job of the README demo. docs/performance.md has the table.
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -47,7 +48,9 @@ std::shared_ptr<engine::CameraFrame> StreetFrame() {
 }
 
 void BM_DatasetWriter640x480(benchmark::State& state) {
-  const fs::path root = fs::temp_directory_path() / "airis_bench_dataset_writer";
+  // This process's own folder: two benchmark runs never write into each other's.
+  const fs::path root =
+      fs::temp_directory_path() / ("airis_bench_dataset_writer_" + std::to_string(::getpid()));
   fs::remove_all(root);
   fs::create_directories(root);
   engine::DatasetWriter::Options options;

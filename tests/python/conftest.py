@@ -1,6 +1,7 @@
 """Shared fixtures of the Python module's tests: the repository, the airis binary, small scenes."""
 
 import os
+import shutil
 import subprocess
 import sys
 
@@ -106,3 +107,9 @@ def write(tmp_path):
 
 def run(args, **kwargs):
     return subprocess.run(args, check=True, capture_output=True, text=True, cwd=REPO, **kwargs)
+
+
+def pytest_unconfigure(config):
+    """Removes the run's own --basetemp folder (tests/python/CMakeLists.txt): nothing left behind."""
+    if config.option.basetemp:
+        shutil.rmtree(config.option.basetemp, ignore_errors=True)

@@ -10,8 +10,8 @@ from conftest import run
 
 def test_env_at_equals_airis_env(airis_bin):
     got = airis.env_at(47.6, -122.1, 120.0)
-    out = json.loads(run([airis_bin, "env", "--lat", "47.6", "--lon", "-122.1", "--alt-m", "120",
-                          "--json"]).stdout)
+    out = json.loads(run([airis_bin, "env", "--latitude-deg", "47.6", "--longitude-deg", "-122.1",
+                          "--altitude-m", "120", "--json"]).stdout)
     flat = json.dumps(out)
     assert f"{got['pressure_pa']!r}" in flat or str(round(got["pressure_pa"], 3)) in flat
     assert got["magnetic_model"].startswith("WMM")

@@ -60,11 +60,11 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
   for (const Entry& e : kEntries) {
     CLI::App* sub = cmd->add_subcommand(e.name, e.help);
     sub->add_flag("--json", *json, "one JSON object instead of a table");
-    sub->callback([&exit_code, json, &e] {
-      exit_code = RunReportingErrors([&] {
+    SetCommandCallback(sub, exit_code, [json, &e]() -> std::function<int()> {
+      return [json, &e] {
         Print(std::string("airis bench ") + e.name, e.run(), *json);
         return 0;
-      });
+      };
     });
   }
 
@@ -76,22 +76,24 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
       "vehicles",
       "ticks per second of a swarm in scenes/city.yaml: N quads holding position with their four "
       "sensors, M parked (run from the repository root)");
-  vehicles->add_option("--count", args->count, "flying quads (default 100)");
-  vehicles->add_option("--resting", args->resting, "parked quads among them (default 0)");
-  vehicles->add_option("--threads", args->threads, "threads that step the vehicles (default 1)");
+  vehicles->add_option("--count", args->count, "flying quads, 0 to 100000 (default 100)")
+      ->type_name("N");
+  vehicles->add_option("--resting", args->resting, "parked quads among them (default 0)")
+      ->type_name("N");
+  AddThreadsOption(vehicles, args->threads);
   vehicles->add_flag("--json", *json, "one JSON object instead of a table");
-  vehicles->callback([&exit_code, json, args] {
-    exit_code = RunReportingErrors([&] {
-      VehicleBenchOptions options;
-      options.swarm.flying = ParseWholeNumber("count", args->count, 0, 100000);
-      options.swarm.resting = ParseWholeNumber("resting", args->resting, 0, 100000);
-      options.swarm.threads = ParseThreads(args->threads);
-      if (options.swarm.flying + options.swarm.resting == 0) {
-        throw engine::ConfigError({}, "--count", "no vehicle to step (--count 0 --resting 0)");
-      }
+  SetCommandCallback(vehicles, exit_code, [json, args]() -> std::function<int()> {
+    VehicleBenchOptions options;
+    options.swarm.flying = ParseWholeNumber("count", args->count, 0, 100000);
+    options.swarm.resting = ParseWholeNumber("resting", args->resting, 0, 100000);
+    options.swarm.threads = ParseThreads(args->threads);
+    if (options.swarm.flying + options.swarm.resting == 0) {
+      throw engine::ConfigError({}, "--count", "no vehicle to step (--count 0 --resting 0)");
+    }
+    return [options, json] {
       Print("airis bench vehicles", RunVehicleBench(options), *json);
       return 0;
-    });
+    };
   });
 }
 

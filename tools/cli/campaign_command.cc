@@ -26,11 +26,6 @@ struct CampaignArgs {
 };
 
 int Submit(const CampaignArgs& a) {
-  if (!a.slurm) {
-    throw engine::ConfigError({}, "--slurm",
-                              "required: a campaign is submitted to Slurm (each dataset alone "
-                              "runs here with airis dataset)");
-  }
   const scenes::CampaignConfig campaign = scenes::LoadCampaignFile(a.file);
   CampaignSubmitOptions o;
   o.airis = CurrentExecutable();
@@ -55,6 +50,20 @@ int Submit(const CampaignArgs& a) {
   }
   std::printf("  status  airis campaign status %s\n", o.out.c_str());
   return 0;
+}
+
+// Checks the options; returns the work: read the campaign file and submit (or describe) it.
+std::function<int()> CheckSubmit(const CampaignArgs& a) {
+  if (!a.slurm) {
+    throw engine::ConfigError({}, "--slurm",
+                              "required: a campaign is submitted to Slurm (each dataset alone "
+                              "runs here with airis dataset)");
+  }
+  if (a.shards < 1) {
+    throw engine::ConfigError({}, "--shards",
+                              "must be at least 1 (got " + std::to_string(a.shards) + ")");
+  }
+  return [a] { return Submit(a); };
 }
 
 int Status(const std::string& out, bool as_json) {
@@ -96,22 +105,27 @@ void AddCampaignCommand(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<CampaignArgs>();
   CLI::App* submit = cmd->add_subcommand(
       "submit", "submit one shard array and merge job per entry and seed (docs/cluster.md)");
-  submit->add_option("campaign", a->file, "campaign file (YAML)")->required();
+  submit->add_option("campaign", a->file, "campaign file (YAML)")->required()->type_name("PATH");
   submit->add_option("--out", a->out, "campaign folder: one dataset folder per entry and seed")
-      ->required();
+      ->required()
+      ->type_name("DIR");
   submit->add_flag("--slurm", a->slurm, "submit to Slurm (required)");
-  submit->add_option("--shards", a->shards,
-                     "array tasks per dataset for entries without 'shards' (default 1)");
+  submit
+      ->add_option("--shards", a->shards,
+                   "array tasks per dataset for entries without 'shards' (default 1)")
+      ->type_name("N");
   AddSlurmOptions(submit, a->slurm_args);
-  submit->callback([a, &exit_code] { exit_code = RunReportingErrors([&] { return Submit(*a); }); });
+  SetCommandCallback(submit, exit_code, [a] { return CheckSubmit(*a); });
 
   auto dir = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
   CLI::App* status = cmd->add_subcommand("status", "how far each dataset of a campaign got");
-  status->add_option("dir", *dir, "the --out folder of airis campaign submit")->required();
+  status->add_option("dir", *dir, "the --out folder of airis campaign submit")
+      ->required()
+      ->type_name("DIR");
   status->add_flag("--json", *as_json, "print JSON");
-  status->callback([dir, as_json, &exit_code] {
-    exit_code = RunReportingErrors([&] { return Status(*dir, *as_json); });
+  SetCommandCallback(status, exit_code, [dir, as_json]() -> std::function<int()> {
+    return [dir, as_json] { return Status(*dir, *as_json); };
   });
 }
 

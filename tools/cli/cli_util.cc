@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "engine/core/clock.h"
 #include "engine/core/error.h"
 #include "engine/dataset/file_io.h"
 #include "engine/mavlink/link/link.h"
@@ -24,6 +25,10 @@ int RunReportingErrors(const std::function<int()>& body) {
       std::fprintf(stderr, "note: stopped after %zu errors; fix these and run again\n",
                    e.errors().size());
     }
+    return 2;
+  } catch (const engine::InvalidField& e) {
+    // A value a model refused before it was given a place in a file (a duration, a rate).
+    std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   } catch (const engine::SimulationError& e) {
     std::fprintf(stderr, "simulation stopped: %s\n", e.what());
@@ -65,11 +70,74 @@ void RefuseEmptyValues(const CLI::App& command) {
   }
 }
 
+namespace {
+
+// --check-args on `cmd` or a command above it.
+bool CheckArgsOnly(const CLI::App* cmd) {
+  for (const CLI::App* at = cmd; at != nullptr; at = at->get_parent()) {
+    const CLI::Option* flag = at->get_option_no_throw("--check-args");
+    if (flag != nullptr && flag->count() > 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void SetCommandCallback(CLI::App* cmd, int& exit_code,
+                        std::function<std::function<int()>()> prepare) {
+  cmd->callback([cmd, &exit_code, prepare = std::move(prepare)] {
+    // A subcommand chosen (`dataset merge`) ran its own callback, which this one follows.
+    if (!cmd->get_subcommands().empty()) return;
+    exit_code = RunReportingErrors([&] {
+      RefuseEmptyValues(*cmd);
+      const std::function<int()> work = prepare();
+      if (!CheckArgsOnly(cmd)) return work();
+      std::printf("ok: the command line is valid\n");
+      return 0;
+    });
+  });
+}
+
+std::string OptionForKey(const std::string& key) {
+  std::string option = "--" + key;
+  for (char& c : option) {
+    if (c == '_') c = '-';
+  }
+  return option;
+}
+
 void AddSceneOverrideOption(CLI::App* cmd, std::vector<std::string>& texts) {
   cmd->add_option("--set", texts,
                   "replace a key of the scene, e.g. --set scene.lighting.sun_elevation_deg=20 "
                   "(repeatable; docs/scene-format.md, \"Overrides\")")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->type_name("KEY.PATH=YAML");
+}
+
+void AddRealtimeOption(CLI::App* cmd, std::string& text) {
+  cmd->add_option("--realtime", text,
+                  "pace to wall time at this factor (default as fast as possible; 1 when given "
+                  "without a value; for a ground station or a person)")
+      ->expected(0, 1)
+      ->type_name("[FACTOR]");
+}
+
+void AddUntilOption(CLI::App* cmd, std::string& text) {
+  cmd->add_option("--until-s", text, "stop after this many simulated seconds")
+      ->type_name("SECONDS");
+}
+
+void AddTruthRateOption(CLI::App* cmd, std::string& text) {
+  cmd->add_option("--truth-rate-hz", text,
+                  "ground-truth log rate, up to the scene's physics rate (default 100)")
+      ->type_name("HZ");
+}
+
+void AddThreadsOption(CLI::App* cmd, std::string& text) {
+  cmd->add_option("--threads", text,
+                  "threads that step the vehicles, 1 to 64 (default 1; the results do not depend "
+                  "on it)")
+      ->type_name("N");
 }
 
 void PrintToStderr(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
@@ -117,6 +185,14 @@ int ParseWholeNumber(const std::string& name, const std::string& text, int lo, i
                                   std::to_string(hi) + " (got '" + text + "')");
   }
   return value;
+}
+
+engine::TimeNs ParseSeconds(const std::string& name, const std::string& text) {
+  try {
+    return engine::SecondsToNs(ParseFiniteNumber(name, text));
+  } catch (const engine::InvalidField& e) {
+    throw engine::ConfigError({}, "--" + name, e.problem());
+  }
 }
 
 int ParseThreads(const std::string& text) { return ParseWholeNumber("threads", text, 1, 64); }

@@ -7,16 +7,22 @@
 namespace airis::tools {
 
 void AddDatasetWriteOptions(CLI::App* cmd, DatasetWriteArgs& a) {
-  cmd->add_option("--cameras", a.cameras, "record only these cameras (comma-separated)");
+  cmd->add_option("--cameras", a.cameras, "record only these cameras (comma-separated)")
+      ->type_name("NAME,...");
   cmd->add_option("--formats", a.formats,
                   "extra outputs: npy (float depth), normals, tartanair (the TartanAir layout "
-                  "too); comma-separated");
-  cmd->add_option("--workers", a.workers, "image encoding threads (default 2)");
+                  "too); comma-separated")
+      ->type_name("FORMAT,...");
+  cmd->add_option("--encode-threads", a.encode_threads,
+                  "image encoding threads, 1 to 64 (default 2)")
+      ->type_name("N");
   cmd->add_option(
-      "--stream-format", a.stream_format,
-      "sensor, truth and command streams as npy (NumPy structured arrays, default) or csv");
+         "--stream-format", a.stream_format,
+         "sensor, truth and command streams as npy (NumPy structured arrays, default) or csv")
+      ->type_name("npy|csv");
   cmd->add_option("--min-object-area-px", a.min_object_area_px,
-                  "instances with fewer visible pixels get no COCO annotation (default 16)");
+                  "instances with fewer visible pixels get no COCO annotation (default 16)")
+      ->type_name("PIXELS");
 }
 
 std::vector<std::string> SplitList(const std::string& text) {
@@ -57,7 +63,7 @@ DatasetWriteOptions ParseDatasetWriteArgs(const DatasetWriteArgs& a, const std::
   o.out = out;
   o.cameras = SplitList(a.cameras);
   o.outputs = ParseFormats(a.formats);
-  o.workers = a.workers;
+  o.workers = a.encode_threads;
   o.min_object_area_px = a.min_object_area_px;
   o.stream_format = ParseStreamFormat(a.stream_format);
   return o;

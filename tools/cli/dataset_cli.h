@@ -1,7 +1,7 @@
 #pragma once
 
 // The options that say how a dataset is written, shared by `airis dataset` and `airis px4
-// --dataset` (docs/dataset-format.md): --cameras, --formats, --workers, --stream-format,
+// --dataset` (docs/dataset-format.md): --cameras, --formats, --encode-threads, --stream-format,
 // --min-object-area-px.
 
 #include <CLI/CLI.hpp>
@@ -18,12 +18,12 @@ namespace airis::tools {
 struct DatasetWriteArgs {
   std::string cameras;  ///< a,b
   std::string formats;  ///< npy,normals,tartanair
-  int workers = 2;
+  int encode_threads = 2;
   std::int64_t min_object_area_px = 16;
   std::string stream_format = "npy";
 };
 
-/// Adds --cameras, --formats, --workers, --stream-format and --min-object-area-px to `cmd`.
+/// Adds --cameras, --formats, --encode-threads, --stream-format and --min-object-area-px to `cmd`.
 void AddDatasetWriteOptions(CLI::App* cmd, DatasetWriteArgs& args);
 
 /// "a,b" as {"a", "b"} (empty items dropped).

@@ -1,5 +1,5 @@
 // `airis dataset SCENE.yaml --mission MISSION.yaml --out DIR [--seed N] [--set KEY=VALUE]...
-//  [--cameras a,b] [--shard K/N] [--resume] [--formats npy,normals,tartanair] [--workers N]
+//  [--cameras a,b] [--shard K/N] [--resume] [--formats npy,normals,tartanair] [--encode-threads N]
 //  [--threads N]`: flies the mission and writes a labeled dataset.
 // `airis dataset merge SHARD... --out DIR`: joins the shards of one dataset.
 // `airis dataset ... --slurm N [--only-shards K,...]`: submits the shards and their merge to Slurm;
@@ -123,7 +123,8 @@ void MergeIfLast(const std::string& out, int shards) {
   }
 }
 
-int Run(const DatasetArgs& a) {
+// The job the command line asks for, every value checked (files are read by the job).
+DatasetJobOptions ParseDatasetArgs(const DatasetArgs& a) {
   for (const auto& [value, name] :
        {std::pair{&a.scene, "scene"}, {&a.mission, "--mission"}, {&a.out, "--out"}}) {
     if (value->empty())
@@ -143,6 +144,10 @@ int Run(const DatasetArgs& a) {
   o.threads = ParseThreads(a.threads);
   o.full_streams = ParseStreams(a.streams);
   o.resume = a.resume;
+  return o;
+}
+
+int Run(DatasetJobOptions o, const DatasetArgs& a) {
   const StopOnSignals signals;
   o.stop = signals.flag();
   o.log = PrintToStderr;
@@ -211,8 +216,9 @@ std::vector<int> ParseShardList(const std::string& text) {
   return shards;
 }
 
-// `--slurm N`: the job scripts into DIR/slurm/, sbatch of the shard array and the merge.
-int SubmitToSlurm(const DatasetArgs& a) {
+// `--slurm N`: checks the options; returns the work: the job scripts into DIR/slurm/, sbatch of
+// the shard array and the merge.
+std::function<int()> SubmitToSlurm(const DatasetArgs& a) {
   for (const auto& [value, name] :
        {std::pair{&a.scene, "scene"}, {&a.mission, "--mission"}, {&a.out, "--out"}}) {
     if (value->empty())
@@ -249,7 +255,7 @@ int SubmitToSlurm(const DatasetArgs& a) {
   v.streams = a.streams;
   v.stream_format = a.stream_format;
   v.min_object_area_px = std::to_string(a.min_object_area_px);
-  v.workers = std::to_string(a.workers);
+  v.encode_threads = std::to_string(a.encode_threads);
   v.threads = a.threads;
   plan.dataset.options = DatasetOptionWords(v);
   plan.out = fs::absolute(a.out).lexically_normal().string();
@@ -258,15 +264,18 @@ int SubmitToSlurm(const DatasetArgs& a) {
   plan.resources = a.slurm_args.ToResources();
   const std::vector<int> only =
       a.only_shards.empty() ? std::vector<int>{} : ParseShardList(a.only_shards);
-  if (a.slurm_args.dry_run) {
-    ValidateSlurmPlan(plan);
-    CheckDatasetInputs(plan);
-    std::printf("%s", DescribeSlurmSubmission(plan, only).c_str());
+  const bool dry_run = a.slurm_args.dry_run;
+  return [plan, only, dry_run] {
+    if (dry_run) {
+      ValidateSlurmPlan(plan);
+      CheckDatasetInputs(plan);
+      std::printf("%s", DescribeSlurmSubmission(plan, only).c_str());
+      return 0;
+    }
+    const SlurmSubmission s = SubmitDatasetToSlurm(plan, only);
+    PrintSubmission(plan, s);
     return 0;
-  }
-  const SlurmSubmission s = SubmitDatasetToSlurm(plan, only);
-  PrintSubmission(plan, s);
-  return 0;
+  };
 }
 
 int Status(const std::string& out, bool as_json) {
@@ -312,64 +321,74 @@ void AddDatasetCommand(CLI::App& app, int& exit_code) {
   auto merge_out = std::make_shared<std::string>();
   CLI::App* merge = cmd->add_subcommand(
       "merge", "join the shard folders of one dataset (--shard K/N runs) into one");
-  merge->add_option("shards", *shards, "the shard folders, all N of them")->required();
+  merge->add_option("shards", *shards, "the shard folders, all N of them")
+      ->required()
+      ->type_name("DIR...");
   merge->add_option("--out", *merge_out, "merged dataset folder; must be empty or absent")
-      ->required();
+      ->required()
+      ->type_name("DIR");
   auto skip_if_merged = std::make_shared<bool>(false);
   merge->add_flag("--skip-if-merged", *skip_if_merged,
                   "succeed without merging when --out holds their complete merge already (the "
                   "merge job of --slurm: its last shard task usually merged)");
-  merge->callback([shards, merge_out, skip_if_merged, &exit_code] {
-    exit_code = RunReportingErrors([&] { return Merge(*shards, *merge_out, *skip_if_merged); });
-  });
+  SetCommandCallback(merge, exit_code,
+                     [shards, merge_out, skip_if_merged]() -> std::function<int()> {
+                       return [shards, merge_out, skip_if_merged] {
+                         return Merge(*shards, *merge_out, *skip_if_merged);
+                       };
+                     });
   auto status_dir = std::make_shared<std::string>();
   auto status_json = std::make_shared<bool>(false);
   CLI::App* status = cmd->add_subcommand(
       "status", "frames per shard, failed or missing shards and the merge of a --slurm dataset");
-  status->add_option("dir", *status_dir, "the --out folder of airis dataset --slurm")->required();
+  status->add_option("dir", *status_dir, "the --out folder of airis dataset --slurm")
+      ->required()
+      ->type_name("DIR");
   status->add_flag("--json", *status_json, "print JSON (docs/cluster.md, \"Status\")");
-  status->callback([status_dir, status_json, &exit_code] {
-    exit_code = RunReportingErrors([&] { return Status(*status_dir, *status_json); });
+  SetCommandCallback(status, exit_code, [status_dir, status_json]() -> std::function<int()> {
+    return [status_dir, status_json] { return Status(*status_dir, *status_json); };
   });
   CLI::App* schema = cmd->add_subcommand(
       "schema", "print the columns of every stream and table a dataset holds, as Markdown tables");
-  schema->callback([&exit_code] { exit_code = RunReportingErrors([] { return PrintColumns(); }); });
-  cmd->add_option("scene", a->scene, "scene file (YAML)");
-  cmd->add_option("--mission", a->mission, "mission file (YAML)");
-  cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume");
-  cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)");
+  SetCommandCallback(schema, exit_code, [] { return std::function<int()>(PrintColumns); });
+  cmd->add_option("scene", a->scene, "scene file (YAML)")->type_name("PATH");
+  cmd->add_option("--mission", a->mission, "mission file (YAML)")->type_name("PATH");
+  cmd->add_option("--out", a->out, "dataset folder; must be empty unless --resume")
+      ->type_name("DIR");
+  cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)")->type_name("UINT64");
   AddSceneOverrideOption(cmd, a->overrides);
   AddDatasetWriteOptions(cmd, *a);
   cmd->add_option("--shard", a->shard,
-                  "write shard K of N (every N-th frame from the K-th); join with 'merge'");
-  cmd->add_option("--threads", a->threads,
-                  "threads that step the vehicles (default 1; the results do not depend on it)");
+                  "write shard K of N (every N-th frame from the K-th); join with 'merge'")
+      ->type_name("K/N");
+  AddThreadsOption(cmd, a->threads);
   cmd->add_option("--streams", a->streams,
                   "sensor, truth and command rows of the capture windows (capture, default) or "
-                  "of the whole flight (flight)");
+                  "of the whole flight (flight)")
+      ->type_name("capture|flight");
   cmd->add_flag("--resume", a->resume,
                 "continue an interrupted run in --out (same result as uninterrupted)");
   cmd->add_option("--slurm", a->slurm,
-                  "submit to Slurm as N shard tasks and a merge job into --out (docs/cluster.md)");
+                  "submit to Slurm as N shard tasks and a merge job into --out (docs/cluster.md)")
+      ->type_name("N");
   cmd->add_option("--only-shards", a->only_shards,
-                  "with --slurm: run only these shards again (comma-separated), e.g. failed ones");
+                  "with --slurm: run only these shards again (comma-separated), e.g. failed ones")
+      ->type_name("K,...");
   AddSlurmOptions(cmd, a->slurm_args);
   cmd->add_option("--then-merge", a->then_merge,
                   "with --shard K/N: once this shard is complete, merge DIR/shards/1..N into DIR "
-                  "if they all are (the tasks of --slurm do this)");
-  cmd->callback([a, cmd, merge, status, schema, &exit_code] {
-    if (merge->parsed() || status->parsed() || schema->parsed()) return;
-    exit_code = RunReportingErrors([&] {
-      RefuseEmptyValues(*cmd);
-      if (a->slurm != 0) return SubmitToSlurm(*a);
-      for (const char* option : {"--only-shards", "--dry-run", "--partition", "--time",
-                                 "--cpus-per-task", "--mem", "--sbatch-arg"}) {
-        if (cmd->count(option) > 0) {
-          throw engine::ConfigError({}, option, "only with --slurm N");
-        }
+                  "if they all are (the tasks of --slurm do this)")
+      ->type_name("DIR");
+  SetCommandCallback(cmd, exit_code, [a, cmd]() -> std::function<int()> {
+    if (a->slurm != 0) return SubmitToSlurm(*a);
+    for (const char* option : {"--only-shards", "--dry-run", "--partition", "--time",
+                               "--cpus-per-task", "--mem", "--sbatch-arg"}) {
+      if (cmd->count(option) > 0) {
+        throw engine::ConfigError({}, option, "only with --slurm N");
       }
-      return Run(*a);
-    });
+    }
+    DatasetJobOptions o = ParseDatasetArgs(*a);
+    return [o, a] { return Run(o, *a); };
   });
 }
 

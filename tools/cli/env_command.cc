@@ -27,37 +27,11 @@ struct EnvOptions {
   bool json = false;
 };
 
-// The command line's option for each field of EnvironmentQuery, for its messages.
-const char* OptionOf(const std::string& field) {
-  if (field == "latitude_deg") return "--lat";
-  if (field == "longitude_deg") return "--lon";
-  if (field == "altitude_m") return "--alt-m";
-  if (field == "date_decimal_year") return "--date";
-  return "--magnetic";
-}
-
-int RunEnv(const EnvOptions& options) {
-  EnvironmentQuery q;
-  q.latitude_deg = ParseFiniteNumber("lat", options.lat);
-  q.longitude_deg = ParseFiniteNumber("lon", options.lon);
-  q.altitude_m = ParseFiniteNumber("alt-m", options.alt_m);
-  q.date_decimal_year = ParseFiniteNumber("date", options.date);
-  const auto kind = engine::ParseEnum<engine::MagneticModelKind>(options.magnetic);
-  if (!kind) {
-    throw ConfigError({}, "--magnetic",
-                      "must be " + engine::EnumChoices<engine::MagneticModelKind>() + " (got '" +
-                          options.magnetic + "')");
-  }
-  q.magnetic = *kind;
-  EnvironmentReport r;
-  try {
-    r = CalcEnvironmentAt(q);
-  } catch (const engine::InvalidField& e) {
-    throw ConfigError({}, OptionOf(e.field()), e.problem());
-  }
+// The report, as text or JSON.
+int PrintEnv(const EnvironmentQuery& q, const EnvironmentReport& r, bool json) {
   const engine::AtmosphereSample& air = r.air;
   const engine::MagneticFieldSample& mag = r.field;
-  if (options.json) {
+  if (json) {
     nlohmann::json out;
     out["gravity_m_s2"] = r.gravity_m_s2;
     out["temperature_k"] = air.temperature_k;
@@ -91,6 +65,31 @@ int RunEnv(const EnvOptions& options) {
   return 0;
 }
 
+// Checks the options (the query's ranges too); returns the work: print the report.
+std::function<int()> CheckEnv(const EnvOptions& options) {
+  EnvironmentQuery q;
+  q.latitude_deg = ParseFiniteNumber("latitude-deg", options.lat);
+  q.longitude_deg = ParseFiniteNumber("longitude-deg", options.lon);
+  q.altitude_m = ParseFiniteNumber("altitude-m", options.alt_m);
+  q.date_decimal_year = ParseFiniteNumber("date-decimal-year", options.date);
+  const auto kind = engine::ParseEnum<engine::MagneticModelKind>(options.magnetic);
+  if (!kind) {
+    throw ConfigError({}, "--magnetic-model",
+                      "must be " + engine::EnumChoices<engine::MagneticModelKind>() + " (got '" +
+                          options.magnetic + "')");
+  }
+  q.magnetic = *kind;
+  EnvironmentReport r;
+  try {
+    r = CalcEnvironmentAt(q);
+  } catch (const engine::InvalidField& e) {
+    // The options are named after the query's fields (docs/cli.md, "Option names").
+    throw ConfigError({}, OptionForKey(e.field()), e.problem());
+  }
+  const bool json = options.json;
+  return [q, r, json] { return PrintEnv(q, r, json); };
+}
+
 }  // namespace
 
 void AddEnvCommand(CLI::App& app, int& exit_code) {
@@ -98,29 +97,27 @@ void AddEnvCommand(CLI::App& app, int& exit_code) {
       "env",
       "Print gravity, the U.S. Standard Atmosphere 1976 and the geomagnetic field at a point");
   auto options = std::make_shared<EnvOptions>();
-  cmd->add_option("--lat", options->lat, "geodetic latitude (degrees, north +, -90 to 90)")
+  cmd->add_option("--latitude-deg", options->lat, "geodetic latitude (north +, -90 to 90)")
       ->type_name("DEG")
       ->capture_default_str();
-  cmd->add_option("--lon", options->lon, "longitude (degrees, east +, -180 to 180)")
+  cmd->add_option("--longitude-deg", options->lon, "longitude (east +, -180 to 180)")
       ->type_name("DEG")
       ->capture_default_str();
-  cmd->add_option(
-         "--alt-m", options->alt_m,
-         "height above the WGS84 ellipsoid, used as altitude above sea level (m); -1000 to "
-         "850000 with --magnetic wmm, -5000 to 1000000 with dipole")
+  cmd->add_option("--altitude-m", options->alt_m,
+                  "height above the WGS84 ellipsoid, used as altitude above sea level; -1000 to "
+                  "850000 with --magnetic-model wmm, -5000 to 1000000 with dipole")
       ->type_name("M")
       ->capture_default_str();
-  cmd->add_option("--date", options->date,
-                  "decimal year for the magnetic model (WMM2025: 2025.0 to 2030.0)")
+  cmd->add_option("--date-decimal-year", options->date,
+                  "date for the magnetic model (WMM2025: 2025.0 to 2030.0)")
       ->type_name("YEAR")
       ->capture_default_str();
-  cmd->add_option("--magnetic", options->magnetic,
-                  "magnetic model: wmm (World Magnetic Model 2025) or dipole")
+  cmd->add_option("--magnetic-model", options->magnetic,
+                  "wmm (World Magnetic Model 2025) or dipole")
       ->type_name("wmm|dipole")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON object instead of text");
-  cmd->callback(
-      [options, &exit_code] { exit_code = RunReportingErrors([&] { return RunEnv(*options); }); });
+  SetCommandCallback(cmd, exit_code, [options] { return CheckEnv(*options); });
 }
 
 }  // namespace airis::tools

@@ -1,7 +1,7 @@
-// `airis px4 SCENE.yaml [--out DIR | --dataset DIR [--cameras a,b] [--formats ...] [--workers N]
-// [--stream-format F] [--min-object-area-px N]] [--seed N] [--set KEY=VALUE]... [--until SECONDS]
-// [--realtime [FACTOR]] [--threads N]` and `airis px4 airframe SCENE.yaml --vehicle NAME [--id N]`
-// (docs/px4.md).
+// `airis px4 SCENE.yaml [--out DIR | --dataset DIR [--cameras a,b] [--formats ...]
+// [--encode-threads N] [--stream-format F] [--min-object-area-px N]] [--seed N]
+// [--set KEY=VALUE]... [--until-s SECONDS] [--realtime [FACTOR]] [--threads N]` and `airis px4
+// airframe SCENE.yaml --vehicle NAME [--id N]` (docs/px4.md).
 #include <unistd.h>
 
 #include <cstdio>
@@ -40,8 +40,9 @@ struct AirframeArgs {
   int id = 22001;
 };
 
-int Serve(const Px4Args& a) {
-  if (a.scene.empty()) throw engine::ConfigError({}, "scene", "give the scene file (YAML)");
+// The session the command line asks for, every value checked (files are read by the job).
+Px4JobOptions ParsePx4Args(const Px4Args& a) {
+  if (a.scene.empty()) throw engine::ConfigError({}, "scene", "required (airis px4 SCENE)");
   Px4JobOptions job;
   job.scene.path = a.scene;
   if (!a.seed.empty()) job.scene.seed = ParseSeed("seed", a.seed);
@@ -53,12 +54,14 @@ int Serve(const Px4Args& a) {
       throw engine::ConfigError({}, "--realtime", "must be > 0 (got " + a.realtime + ")");
     }
   }
-  if (!a.until.empty()) {
-    job.until_ns = engine::SecondsToNs(ParseFiniteNumber("until", a.until), "--until");
-  }
-  job.truth_rate_hz = ParseFiniteNumber("truth-rate", a.truth_rate);
+  if (!a.until.empty()) job.until_ns = ParseSeconds("until-s", a.until);
+  job.truth_rate_hz = ParseFiniteNumber("truth-rate-hz", a.truth_rate);
   job.threads = ParseThreads(a.threads);
   if (!a.dataset.empty()) job.dataset = ParseDatasetWriteArgs(a, a.dataset);
+  return job;
+}
+
+int Serve(Px4JobOptions job, const Px4Args& a) {
   job.log = PrintToStderr;
   const StopOnSignals signals;
   job.stop = signals.flag();
@@ -72,7 +75,7 @@ int Serve(const Px4Args& a) {
   if (tty) std::fprintf(stderr, "\n");
   std::printf("px4 %s\n", r.interrupted_by
                               ? ("interrupted (" + SignalName(r.interrupted_by) + ")").c_str()
-                              : "stopped (--until)");
+                              : "stopped (--until-s)");
   for (const Px4VehicleReport& v : r.vehicles) {
     std::printf(
         "  %-12s %s: %lld HIL_SENSOR, %lld HIL_GPS, %lld actuator replies, %lld in lockstep, "
@@ -96,18 +99,21 @@ int Serve(const Px4Args& a) {
   return r.interrupted_by ? ExitCodeForSignal(r.interrupted_by) : 0;
 }
 
-int Airframe(const AirframeArgs& a) {
+// Checks the options; returns the work: print the airframe file.
+std::function<int()> Airframe(const AirframeArgs& a) {
   if (a.id < 1 || a.id > 99999) {
     throw engine::ConfigError({}, "--id", "must be 1 to 99999 (got " + std::to_string(a.id) + ")");
   }
-  engine::mavlink::Px4AirframeOptions o;
-  o.id = a.id;
-  std::fputs(
-      WritePx4AirframeFor({a.scene, "", std::nullopt, scenes::ParseSceneOverrides(a.overrides)},
-                          a.vehicle, o)
-          .c_str(),
-      stdout);
-  return 0;
+  return [a] {
+    engine::mavlink::Px4AirframeOptions o;
+    o.id = a.id;
+    std::fputs(
+        WritePx4AirframeFor({a.scene, "", std::nullopt, scenes::ParseSceneOverrides(a.overrides)},
+                            a.vehicle, o)
+            .c_str(),
+        stdout);
+    return 0;
+  };
 }
 
 }  // namespace
@@ -119,47 +125,42 @@ void AddPx4Command(CLI::App& app, int& exit_code) {
   auto f = std::make_shared<AirframeArgs>();
   CLI::App* airframe = cmd->add_subcommand(
       "airframe", "print a PX4 airframe file (etc/init.d-posix/airframes/) for a vehicle");
-  airframe->add_option("scene", f->scene, "scene file (YAML)")->required();
-  airframe->add_option("--vehicle", f->vehicle, "the vehicle")->required();
-  airframe->add_option("--id", f->id, "airframe id (SYS_AUTOSTART, the file's number; 22001)");
+  airframe->add_option("scene", f->scene, "scene file (YAML)")->required()->type_name("PATH");
+  airframe->add_option("--vehicle", f->vehicle, "the vehicle")->required()->type_name("NAME");
+  airframe->add_option("--id", f->id, "airframe id (SYS_AUTOSTART, the file's number; 22001)")
+      ->type_name("1-99999");
   AddSceneOverrideOption(airframe, f->overrides);
-  airframe->callback(
-      [f, &exit_code] { exit_code = RunReportingErrors([&] { return Airframe(*f); }); });
-  cmd->add_option("scene", a->scene, "scene file (YAML)");
-  cmd->add_option("--out", a->out, "folder for the telemetry log; must be empty");
+  SetCommandCallback(airframe, exit_code, [f] { return Airframe(*f); });
+  cmd->add_option("scene", a->scene, "scene file (YAML)")->type_name("PATH");
+  cmd->add_option("--out", a->out, "folder for the telemetry log; must be empty")->type_name("DIR");
   cmd->add_option("--dataset", a->dataset,
                   "write a dataset of the whole session into this folder instead (every camera "
-                  "at its own rate; docs/px4.md); must be empty");
+                  "at its own rate; docs/px4.md); must be empty")
+      ->type_name("DIR");
   AddDatasetWriteOptions(cmd, *a);
-  cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)");
+  cmd->add_option("--seed", a->seed, "scene seed (default: the scene's)")->type_name("UINT64");
   AddSceneOverrideOption(cmd, a->overrides);
-  cmd->add_option("--until", a->until, "stop after this many simulated seconds");
-  cmd->add_option("--realtime", a->realtime,
-                  "pace to wall time at this factor (1 when given without a value; for a ground "
-                  "station or a person)")
-      ->expected(0, 1);
-  cmd->add_option("--truth-rate", a->truth_rate, "ground-truth log rate (Hz, default 100)");
-  cmd->add_option("--threads", a->threads,
-                  "threads that step the vehicles (default 1; the results do not depend on it)");
-  cmd->callback([a, cmd, airframe, &exit_code] {
-    if (airframe->parsed()) return;
+  AddUntilOption(cmd, a->until);
+  AddRealtimeOption(cmd, a->realtime);
+  AddTruthRateOption(cmd, a->truth_rate);
+  AddThreadsOption(cmd, a->threads);
+  auto serve = [a, cmd]() -> std::function<int()> {
+    for (const char* option : {"--cameras", "--formats", "--encode-threads", "--stream-format",
+                               "--min-object-area-px"}) {
+      if (cmd->count(option) > 0 && a->dataset.empty()) {
+        throw engine::ConfigError({}, option, "only with --dataset DIR");
+      }
+    }
+    if (cmd->count("--truth-rate-hz") > 0 && !a->dataset.empty()) {
+      throw engine::ConfigError({}, "--truth-rate-hz",
+                                "only with --out: a dataset's truth is at 100 Hz "
+                                "(docs/dataset-format.md)");
+    }
     a->realtime_given = cmd->count("--realtime") > 0;
-    exit_code = RunReportingErrors([&] {
-      RefuseEmptyValues(*cmd);
-      for (const char* option :
-           {"--cameras", "--formats", "--workers", "--stream-format", "--min-object-area-px"}) {
-        if (cmd->count(option) > 0 && a->dataset.empty()) {
-          throw engine::ConfigError({}, option, "only with --dataset DIR");
-        }
-      }
-      if (cmd->count("--truth-rate") > 0 && !a->dataset.empty()) {
-        throw engine::ConfigError({}, "--truth-rate",
-                                  "only with --out: a dataset's truth is at 100 Hz "
-                                  "(docs/dataset-format.md)");
-      }
-      return Serve(*a);
-    });
-  });
+    Px4JobOptions job = ParsePx4Args(*a);
+    return [job, a] { return Serve(job, *a); };
+  };
+  SetCommandCallback(cmd, exit_code, serve);
 }
 
 }  // namespace airis::tools

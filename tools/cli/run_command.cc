@@ -1,5 +1,5 @@
 // `airis run SCENE.yaml --mission MISSION.yaml [--out DIR] [--seed N] [--set KEY=VALUE]...
-// [--realtime [FACTOR]] [--until SECONDS] [--threads N]`
+// [--realtime [FACTOR]] [--until-s SECONDS] [--truth-rate-hz HZ] [--threads N]`
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,7 +46,8 @@ const char* StateWord(engine::MissionRunner::State s) {
                                                        : "not finished";
 }
 
-int Run(const RunOptions& o) {
+// The job the command line asks for, every value checked (files are read by the job).
+RunJobOptions ParseRunOptions(const RunOptions& o) {
   RunJobOptions job;
   job.scene.path = o.scene;
   if (!o.seed.empty()) job.scene.seed = ParseSeed("seed", o.seed);
@@ -59,13 +60,14 @@ int Run(const RunOptions& o) {
       throw engine::ConfigError({}, "--realtime", "must be > 0 (got " + o.realtime + ")");
     }
   }
-  if (!o.until.empty()) {
-    job.until_ns = engine::SecondsToNs(ParseFiniteNumber("until", o.until), "--until");
-  }
-  job.truth_rate_hz = ParseFiniteNumber("truth-rate", o.truth_rate);
-  if (job.truth_rate_hz <= 0.0) throw engine::ConfigError({}, "--truth-rate", "must be > 0");
+  if (!o.until.empty()) job.until_ns = ParseSeconds("until-s", o.until);
+  job.truth_rate_hz = ParseFiniteNumber("truth-rate-hz", o.truth_rate);
+  if (job.truth_rate_hz <= 0.0) throw engine::ConfigError({}, "--truth-rate-hz", "must be > 0");
   job.threads = ParseThreads(o.threads);
+  return job;
+}
 
+int Run(RunJobOptions job, const RunOptions& o) {
   job.log = PrintToStderr;
   const StopOnSignals signals;
   job.stop = signals.flag();
@@ -82,7 +84,7 @@ int Run(const RunOptions& o) {
   const MissionOutcome& m = r.mission;
   const std::string stopped = m.interrupted_by != 0
                                   ? "interrupted (" + SignalName(m.interrupted_by) + ")"
-                                  : std::string("stopped (--until)");
+                                  : std::string("stopped (--until-s)");
   std::printf("mission %s: %d of %d steps done\n",
               m.state == engine::MissionRunner::State::kSucceeded ? "succeeded"
               : m.state == engine::MissionRunner::State::kFailed  ? "FAILED"
@@ -118,27 +120,24 @@ int Run(const RunOptions& o) {
 void AddRunCommand(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand("run", "fly a mission in a scene and write a telemetry log");
-  cmd->add_option("scene", options->scene, "scene file (YAML)")->required();
-  cmd->add_option("--mission", options->mission, "mission file (YAML)")->required();
+  cmd->add_option("scene", options->scene, "scene file (YAML)")->required()->type_name("PATH");
+  cmd->add_option("--mission", options->mission, "mission file (YAML)")
+      ->required()
+      ->type_name("PATH");
   cmd->add_option("--out", options->out,
-                  "folder for the telemetry log (CSV per stream); must be empty");
-  cmd->add_option("--seed", options->seed, "scene seed (default: the scene's)");
+                  "folder for the telemetry log (CSV per stream); must be empty (default: no log)")
+      ->type_name("DIR");
+  cmd->add_option("--seed", options->seed, "scene seed (default: the scene's)")
+      ->type_name("UINT64");
   AddSceneOverrideOption(cmd, options->overrides);
-  cmd->add_option(
-         "--realtime", options->realtime,
-         "pace to wall time at this exact factor (default as fast as possible; 1 when given "
-         "without a value)")
-      ->expected(0, 1);
-  cmd->add_option("--until", options->until, "stop after this many simulated seconds");
-  cmd->add_option("--truth-rate", options->truth_rate, "ground-truth log rate (Hz, default 100)");
-  cmd->add_option("--threads", options->threads,
-                  "threads that step the vehicles (default 1; the results do not depend on it)");
-  cmd->callback([options, cmd, &exit_code] {
+  AddRealtimeOption(cmd, options->realtime);
+  AddUntilOption(cmd, options->until);
+  AddTruthRateOption(cmd, options->truth_rate);
+  AddThreadsOption(cmd, options->threads);
+  SetCommandCallback(cmd, exit_code, [options, cmd]() -> std::function<int()> {
     options->realtime_given = cmd->count("--realtime") > 0;
-    exit_code = RunReportingErrors([&] {
-      RefuseEmptyValues(*cmd);
-      return Run(*options);
-    });
+    RunJobOptions job = ParseRunOptions(*options);
+    return [job, options] { return Run(job, *options); };
   });
 }
 

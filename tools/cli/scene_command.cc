@@ -179,7 +179,22 @@ int RunSchema() {
   return 0;
 }
 
-int RunPreview(const SceneOptions& o) {
+int RunPreview(const SceneOptions& o, PreviewOptions preview) {
+  // The vehicles at their start poses; a camera as mounted on its vehicle, with its own
+  // intrinsics.
+  SceneSource source;
+  source.path = o.file;
+  source.overrides = scenes::ParseSceneOverrides(o.overrides);
+  const SimulationJob job(source);
+  if (!o.camera.empty()) preview = PreviewOfImageStream(job, o.camera);
+  const PreviewResult r = RenderPreviewPng(job, preview, o.out);
+  std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
+              o.out.c_str(), r.triangles, r.gl_renderer.c_str());
+  return 0;
+}
+
+// Checks the options; returns the work: render the preview.
+std::function<int()> CheckPreview(const SceneOptions& o) {
   PreviewOptions preview;
   if (!o.camera.empty() && !o.pose.empty()) {
     throw engine::ConfigError({}, "--camera", "give --camera or --pose, not both");
@@ -196,17 +211,7 @@ int RunPreview(const SceneOptions& o) {
     preview.yaw_deg = v[3];
     preview.pitch_deg = v[4];
   }
-  // The vehicles at their start poses; a camera as mounted on its vehicle, with its own
-  // intrinsics.
-  SceneSource source;
-  source.path = o.file;
-  source.overrides = scenes::ParseSceneOverrides(o.overrides);
-  const SimulationJob job(source);
-  if (!o.camera.empty()) preview = PreviewOfImageStream(job, o.camera);
-  const PreviewResult r = RenderPreviewPng(job, preview, o.out);
-  std::printf("wrote %s (RGB | depth | segmentation), %zu triangles drawn, renderer %s\n",
-              o.out.c_str(), r.triangles, r.gl_renderer.c_str());
-  return 0;
+  return [o, preview] { return RunPreview(o, preview); };
 }
 
 }  // namespace
@@ -220,52 +225,48 @@ void AddSceneCommand(CLI::App& app, int& exit_code) {
       "check",
       "Validate a scene as a run would (and a mission in it); print a summary, or the errors and "
       "exit 2");
-  check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  check->add_option("file", options->file, "scene file (YAML)")->required()->type_name("PATH");
   check
       ->add_option("--mission", options->mission,
                    "a mission file: check it in the scene as a run would, and list the cameras "
                    "its capture steps record")
-      ->type_name("FILE");
+      ->type_name("PATH");
   check->add_flag("--json", options->json, "print one JSON object instead of text");
   AddSceneOverrideOption(check, options->overrides);
-  check->callback([options, check, &exit_code] {
-    exit_code = RunReportingErrors([&] {
-      RefuseEmptyValues(*check);
-      return RunCheck(*options);
-    });
+  SetCommandCallback(check, exit_code, [options]() -> std::function<int()> {
+    scenes::ParseSceneOverrides(options->overrides);
+    return [options] { return RunCheck(*options); };
   });
 
   CLI::App* stats = cmd->add_subcommand(
       "stats", "Objects per class, triangles, meshes, instances, bounds, memory and load time");
-  stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
+  stats->add_option("file", options->file, "scene file (YAML)")->required()->type_name("PATH");
   stats->add_flag("--json", options->json, "print one JSON object instead of text");
   AddSceneOverrideOption(stats, options->overrides);
-  stats->callback([options, stats, &exit_code] {
-    exit_code = RunReportingErrors([&] {
-      RefuseEmptyValues(*stats);
-      return RunStats(*options);
-    });
+  SetCommandCallback(stats, exit_code, [options]() -> std::function<int()> {
+    scenes::ParseSceneOverrides(options->overrides);
+    return [options] { return RunStats(*options); };
   });
 
   CLI::App* schema =
       cmd->add_subcommand("schema", "Print every key of the scene format as Markdown tables");
-  schema->callback([&exit_code] { exit_code = RunReportingErrors([] { return RunSchema(); }); });
+  SetCommandCallback(schema, exit_code, [] { return std::function<int()>(RunSchema); });
 
   CLI::App* preview = cmd->add_subcommand(
       "preview", "Render RGB | depth | segmentation side by side from a camera, a pose or above");
-  preview->add_option("file", options->file, "scene file (YAML)")->required()->type_name("FILE");
-  preview->add_option("--camera", options->camera,
-                      "a camera of the scene's vehicles, at its start pose");
-  preview->add_option("--pose", options->pose,
-                      "camera at n,e,d (m) looking along yaw_deg, pitch_deg");
-  preview->add_option("--out", options->out, "PNG to write (default preview.png)");
+  preview->add_option("file", options->file, "scene file (YAML)")->required()->type_name("PATH");
+  preview
+      ->add_option("--camera", options->camera,
+                   "a camera of the scene's vehicles, at its start pose")
+      ->type_name("NAME");
+  preview
+      ->add_option("--pose", options->pose,
+                   "camera at north, east, down (m) looking along yaw and pitch (deg)")
+      ->type_name("N_M,E_M,D_M,YAW_DEG,PITCH_DEG");
+  preview->add_option("--out", options->out, "PNG to write (default preview.png)")
+      ->type_name("PATH");
   AddSceneOverrideOption(preview, options->overrides);
-  preview->callback([options, preview, &exit_code] {
-    exit_code = RunReportingErrors([&] {
-      RefuseEmptyValues(*preview);
-      return RunPreview(*options);
-    });
-  });
+  SetCommandCallback(preview, exit_code, [options] { return CheckPreview(*options); });
 }
 
 }  // namespace airis::tools

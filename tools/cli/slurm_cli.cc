@@ -17,13 +17,18 @@ SlurmResources SlurmArgs::ToResources() const {
 }
 
 void AddSlurmOptions(CLI::App* cmd, SlurmArgs& a) {
-  cmd->add_option("--partition", a.partition, "Slurm partition (default: the site's)");
-  cmd->add_option("--time", a.time, "time limit of each shard task, e.g. 02:00:00");
-  cmd->add_option("--cpus-per-task", a.cpus_per_task, "CPUs of each shard task (default 2)");
-  cmd->add_option("--mem", a.mem, "memory of each shard task, e.g. 4G");
+  // sbatch's own names and value forms (docs/cli.md, "Option names").
+  cmd->add_option("--partition", a.partition, "Slurm partition (default: the site's)")
+      ->type_name("NAME");
+  cmd->add_option("--time", a.time, "time limit of each shard task, e.g. 02:00:00")
+      ->type_name("[D-]HH:MM:SS");
+  cmd->add_option("--cpus-per-task", a.cpus_per_task, "CPUs of each shard task (default 2)")
+      ->type_name("N");
+  cmd->add_option("--mem", a.mem, "memory of each shard task, e.g. 4G")->type_name("SIZE[K|M|G]");
   cmd->add_option("--sbatch-arg", a.sbatch_args,
                   "one more sbatch option for every job, e.g. --sbatch-arg=--account=lab "
-                  "(repeatable)");
+                  "(repeatable)")
+      ->type_name("OPTION");
   cmd->add_flag("--dry-run", a.dry_run,
                 "print the job scripts and sbatch commands; submit nothing");
 }

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "engine/core/error.h"
 #include "engine/dataset/contact_sheet.h"
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
@@ -54,31 +55,34 @@ json Common(json m) {
 }
 
 std::vector<Shard> ReadShards(const std::vector<fs::path>& dirs) {
-  if (dirs.empty()) throw DatasetIoError("no shard folders given");
+  if (dirs.empty()) throw engine::ConfigError({}, {}, "no shard folders given");
   std::vector<Shard> shards;
   for (const fs::path& dir : dirs) {
     if (!fs::exists(dir / "manifest.json")) {
-      throw DatasetIoError("'" + dir.string() + "' is not a dataset folder (no manifest.json)");
+      throw engine::ConfigError(
+          {}, {}, "'" + dir.string() + "' is not a dataset folder (no manifest.json)");
     }
     Shard s{dir, ReadJson(dir / "manifest.json")};
     if (s.manifest.value("format", "") != "airis-dataset") {
-      throw DatasetIoError(dir.string() + "/manifest.json: not an airis dataset manifest");
+      throw engine::ConfigError({}, {},
+                                dir.string() + "/manifest.json: not an airis dataset manifest");
     }
     if (!s.manifest.contains("shard")) {
       // One folder of a whole dataset is the one shard of one (what `--slurm 1` and a campaign's
       // one-task datasets merge); among others it is a mistake.
       if (dirs.size() != 1) {
-        throw DatasetIoError("'" + dir.string() +
-                             "' is not a shard (it was made without --shard K/N)");
+        throw engine::ConfigError(
+            {}, {}, "'" + dir.string() + "' is not a shard (it was made without --shard K/N)");
       }
       s.manifest["shard"] = {{"index", 1}, {"count", 1}};
     }
     s.index = s.manifest["shard"]["index"].get<int>();
     const int count = s.manifest["shard"]["count"].get<int>();
     if (!s.manifest.value("complete", false)) {
-      throw DatasetIoError("shard " + std::to_string(s.index) + "/" + std::to_string(count) +
-                           " in '" + dir.string() +
-                           "' is incomplete: finish it with --resume before merging");
+      throw engine::ConfigError({}, {},
+                                "shard " + std::to_string(s.index) + "/" + std::to_string(count) +
+                                    " in '" + dir.string() +
+                                    "' is incomplete: finish it with --resume before merging");
     }
     shards.push_back(std::move(s));
   }
@@ -89,20 +93,23 @@ std::vector<Shard> ReadShards(const std::vector<fs::path>& dirs) {
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const Shard& s = shards[i];
     if (s.manifest["shard"]["count"].get<int>() != count) {
-      throw DatasetIoError("'" + s.dir.string() + "' is a shard of " +
-                           s.manifest["shard"]["count"].dump() + ", '" +
-                           shards.front().dir.string() + "' of " + std::to_string(count));
+      throw engine::ConfigError({}, {},
+                                "'" + s.dir.string() + "' is a shard of " +
+                                    s.manifest["shard"]["count"].dump() + ", '" +
+                                    shards.front().dir.string() + "' of " + std::to_string(count));
     }
     if (i > 0 && s.index == shards[i - 1].index) {
-      throw DatasetIoError("shard " + std::to_string(s.index) + " given twice: '" +
-                           shards[i - 1].dir.string() + "' and '" + s.dir.string() + "'");
+      throw engine::ConfigError({}, {},
+                                "shard " + std::to_string(s.index) + " given twice: '" +
+                                    shards[i - 1].dir.string() + "' and '" + s.dir.string() + "'");
     }
     const json mine = Common(s.manifest);
     for (const auto& [key, value] : common.items()) {
       if (mine[key] != value) {
-        throw DatasetIoError("'" + s.dir.string() + "' is not a shard of the same dataset as '" +
-                             shards.front().dir.string() + "': its manifest differs in '" + key +
-                             "'");
+        throw engine::ConfigError(
+            {}, {},
+            "'" + s.dir.string() + "' is not a shard of the same dataset as '" +
+                shards.front().dir.string() + "': its manifest differs in '" + key + "'");
       }
     }
   }
@@ -113,7 +120,8 @@ std::vector<Shard> ReadShards(const std::vector<fs::path>& dirs) {
     for (int k = 1; k <= count; ++k) {
       if (!have.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
     }
-    throw DatasetIoError("shard(s) " + missing + " of " + std::to_string(count) + " missing");
+    throw engine::ConfigError({}, {},
+                              "shard(s) " + missing + " of " + std::to_string(count) + " missing");
   }
   return shards;
 }

@@ -21,10 +21,11 @@ struct MergeSummary {
 /// shard logged alike (.npy, checked) linked; each camera's COCO file joined with annotation ids
 /// renumbered in frame order; lidar scans linked and their poses.csv joined in scan order;
 /// TartanAir pose files and preview.png made again; the manifest
-/// (written last) without the shard entry and with the summed frame counts. Throws DatasetIoError
-/// naming the shard folder and the problem when a shard is missing, repeated, incomplete, or made
-/// from a different scene, mission, seed or version, and ConfigError("--out") when `out` is not an
-/// empty folder.
+/// (written last) without the shard entry and with the summed frame counts. Throws ConfigError
+/// naming the shard folder and the problem when a folder given is no shard, or a shard is missing,
+/// repeated, incomplete, or made from a different scene, mission, seed or version (bad input:
+/// exit code 2), ConfigError("--out") when `out` is not an empty folder, and DatasetIoError for a
+/// damaged shard or a file that cannot be read or written.
 MergeSummary MergeDatasetShards(const std::vector<std::filesystem::path>& shards,
                                 const std::filesystem::path& out);
 

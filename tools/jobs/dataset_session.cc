@@ -42,7 +42,7 @@ void CheckDatasetWriteOptions(const DatasetWriteOptions& o) {
         "must be at least 1 (got " + std::to_string(o.min_object_area_px) + ")");
   }
   if (o.workers < 1 || o.workers > 64) {
-    throw engine::ConfigError({}, "--workers",
+    throw engine::ConfigError({}, "--encode-threads",
                               "must be 1 to 64 (got " + std::to_string(o.workers) + ")");
   }
 }

@@ -33,8 +33,8 @@ struct DatasetWriteOptions {
   bool resume = false;  ///< continue an interrupted run in `out`
 };
 
-/// Throws ConfigError naming the option for --workers outside 1 to 64 and --min-object-area-px
-/// below 1. A job checks before it loads anything or opens a link.
+/// Throws ConfigError naming the option for --encode-threads outside 1 to 64 and
+/// --min-object-area-px below 1. A job checks before it loads anything or opens a link.
 void CheckDatasetWriteOptions(const DatasetWriteOptions& options);
 
 /// A dataset being written into a folder while a job's simulation runs: the frames of the

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "engine/core/error.h"
+#include "engine/dataset/file_io.h"
 
 namespace airis::tools {
 
@@ -29,7 +30,9 @@ void PrepareEmptyOutputFolder(const std::string& path, const std::string& option
     return;
   }
   fs::create_directories(path, ec);
-  if (ec) throw engine::ConfigError({}, option, "cannot create '" + path + "': " + ec.message());
+  if (ec) {
+    throw engine::DatasetIoError(option + ": cannot create '" + path + "': " + ec.message());
+  }
 }
 
 }  // namespace airis::tools

@@ -10,7 +10,8 @@ namespace airis::tools {
 inline const std::vector<std::string> kSubmissionFolders = {"shards", "slurm"};
 
 /// Creates `path` if needed; throws ConfigError naming `option` when it exists and is not an empty
-/// folder (nothing is ever overwritten) or cannot be created. Entries named in `allowed` may be
+/// folder (nothing is ever overwritten), DatasetIoError when it cannot be created (an unwritable
+/// place: exit code 4, README "Exit codes"). Entries named in `allowed` may be
 /// there (a merge into the folder of a Slurm submission: kSubmissionFolders).
 void PrepareEmptyOutputFolder(const std::string& path, const std::string& option,
                               const std::vector<std::string>& allowed = {});

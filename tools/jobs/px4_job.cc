@@ -82,7 +82,7 @@ Px4JobResult RunPx4Job(const Px4JobOptions& o,
   engine::TelemetryRecorder* telemetry = dataset ? &dataset->telemetry() : log.get();
   const RealtimePacer pacer(o.realtime.value_or(1.0));
   engine::Simulation& sim = job.simulation();
-  // The dataset is finished however the session ends; complete only when --until ended it.
+  // The dataset is finished however the session ends; complete only when --until-s ended it.
   const auto finish = [&](bool complete) {
     report();
     if (dataset) {

@@ -44,7 +44,7 @@ struct Px4VehicleReport {
 struct Px4JobResult {
   double simulated_s = 0.0;
   double wall_s = 0.0;
-  int interrupted_by = 0;  ///< the signal that stopped it, 0 if --until did
+  int interrupted_by = 0;  ///< the signal that stopped it, 0 if --until-s did
   /// Touches that began between a vehicle and anything (landings too; no mission judges them)
   std::int64_t contacts = 0;
   std::vector<Px4VehicleReport> vehicles;

@@ -51,7 +51,7 @@ std::vector<std::string> DatasetOptionWords(const DatasetOptionValues& v) {
   add("--streams", v.streams, "capture");
   add("--stream-format", v.stream_format, "npy");
   add("--min-object-area-px", v.min_object_area_px, "16");
-  add("--workers", v.workers, "2");
+  add("--encode-threads", v.encode_threads, "2");
   add("--threads", v.threads, "1");
   return words;
 }

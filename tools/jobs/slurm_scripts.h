@@ -31,7 +31,7 @@ struct DatasetOptionValues {
   std::string streams;                 ///< --streams (capture, the default, is left out)
   std::string stream_format;           ///< --stream-format (npy, the default, is left out)
   std::string min_object_area_px;      ///< --min-object-area-px (16, the default, is left out)
-  std::string workers;                 ///< --workers (2, the default, is left out)
+  std::string encode_threads;          ///< --encode-threads (2, the default, is left out)
   std::string threads;                 ///< --threads (1, the default, is left out)
 };
 

@@ -10,13 +10,13 @@ void CheckPacingOptions(const std::optional<double>& realtime, double truth_rate
                         double physics_rate_hz, engine::TimeNs until_ns) {
   if (realtime && !(*realtime > 0.0)) throw engine::ConfigError({}, "--realtime", "must be > 0");
   try {
-    engine::RequireRate("truth-rate", truth_rate_hz, physics_rate_hz);
+    engine::RequireRate("truth-rate-hz", truth_rate_hz, physics_rate_hz);
   } catch (const engine::InvalidField& e) {
-    throw engine::ConfigError({}, "--truth-rate", e.problem());
+    throw engine::ConfigError({}, "--truth-rate-hz", e.problem());
   }
   if (until_ns < 0) {
     throw engine::ConfigError(
-        {}, "--until",
+        {}, "--until-s",
         "must be >= 0 s (got " + engine::FormatNumber(engine::ToSeconds(until_ns)) + ")");
   }
 }

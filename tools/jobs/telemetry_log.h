@@ -11,8 +11,8 @@
 namespace airis::tools {
 
 /// The options `airis run` and `airis px4` share: ConfigError for a --realtime factor that is not
-/// > 0, a --truth-rate outside kMinRate_hz to the scene's `physics_rate_hz` (truth is made once per
-/// tick) or an --until before the start.
+/// > 0, a --truth-rate-hz outside kMinRate_hz to the scene's `physics_rate_hz` (truth is made once
+/// per tick) or an --until-s before the start.
 void CheckPacingOptions(const std::optional<double>& realtime, double truth_rate_hz,
                         double physics_rate_hz, engine::TimeNs until_ns);
 

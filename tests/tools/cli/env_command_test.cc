@@ -61,8 +61,9 @@ TEST(EnvCommandTest, DefaultsAreTheReferenceOriginIn2026WithTheWmm) {
 }
 
 TEST(EnvCommandTest, OptionsChooseThePointDateAndModel) {
-  const Result r =
-      RunAiris("env --json --lat -33.9 --lon 18.4 --alt-m 2500 --date 2029.5 --magnetic dipole");
+  const Result r = RunAiris(
+      "env --json --latitude-deg -33.9 --longitude-deg 18.4 --altitude-m 2500 --date-decimal-year "
+      "2029.5 --magnetic-model dipole");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const engine::GeodeticPosition p{engine::DegToRad(-33.9), engine::DegToRad(18.4), 2500.0};
@@ -70,7 +71,7 @@ TEST(EnvCommandTest, OptionsChooseThePointDateAndModel) {
   EXPECT_DOUBLE_EQ(j["mag_down_nt"].get<double>(), b.z());
   EXPECT_DOUBLE_EQ(j["pressure_pa"].get<double>(), engine::ussa1976::Calc(2500.0).pressure_pa);
   // The dipole has no altitude limit of its own: the atmosphere's 1000 km applies.
-  EXPECT_EQ(RunAiris("env --json --alt-m 950000 --magnetic dipole").exit_code, 0);
+  EXPECT_EQ(RunAiris("env --json --altitude-m 950000 --magnetic-model dipole").exit_code, 0);
 }
 
 TEST(EnvCommandTest, TextOutputNamesEveryQuantityWithItsUnit) {
@@ -97,35 +98,35 @@ void ExpectError(const std::string& args, const std::string& option,
 }
 
 TEST(EnvCommandTest, RejectsOutOfRangeCoordinates) {
-  ExpectError("env --lat 90.5", "--lat", "got 90.5");
-  ExpectError("env --lat=-91", "--lat", "between -90 and 90");
-  ExpectError("env --lon 180.01", "--lon", "between -180 and 180");
-  ExpectError("env --lon=-200", "--lon");
+  ExpectError("env --latitude-deg 90.5", "--latitude-deg", "got 90.5");
+  ExpectError("env --latitude-deg=-91", "--latitude-deg", "between -90 and 90");
+  ExpectError("env --longitude-deg 180.01", "--longitude-deg", "between -180 and 180");
+  ExpectError("env --longitude-deg=-200", "--longitude-deg");
 }
 
 TEST(EnvCommandTest, RejectsAltitudesOutsideTheModels) {
-  ExpectError("env --alt-m 900000", "--alt-m", "850000");  // above the WMM's 850 km
-  ExpectError("env --alt-m=-2000", "--alt-m", "-1000");    // below the WMM's -1 km
-  ExpectError("env --alt-m 1000001 --magnetic dipole", "--alt-m",
+  ExpectError("env --altitude-m 900000", "--altitude-m", "850000");  // above the WMM's 850 km
+  ExpectError("env --altitude-m=-2000", "--altitude-m", "-1000");    // below the WMM's -1 km
+  ExpectError("env --altitude-m 1000001 --magnetic-model dipole", "--altitude-m",
               "1000000");  // above the atmosphere
-  ExpectError("env --alt-m=-5001 --magnetic dipole", "--alt-m", "-5000");
+  ExpectError("env --altitude-m=-5001 --magnetic-model dipole", "--altitude-m", "-5000");
 }
 
 TEST(EnvCommandTest, RejectsDatesOutsideTheWmmValidity) {
-  ExpectError("env --date 2030", "--date", "[2025, 2030)");
-  ExpectError("env --date 2024.9", "--date", "WMM-2025");
+  ExpectError("env --date-decimal-year 2030", "--date-decimal-year", "[2025, 2030)");
+  ExpectError("env --date-decimal-year 2024.9", "--date-decimal-year", "WMM-2025");
 }
 
 TEST(EnvCommandTest, RejectsNonNumbersNamingTheOption) {
-  ExpectError("env --lat abc", "--lat", "abc");
-  ExpectError("env --lon nan", "--lon", "nan");
-  ExpectError("env --alt-m inf", "--alt-m");
-  ExpectError("env --date 2026x", "--date", "2026x");
-  ExpectError("env --magnetic igrf", "--magnetic", "dipole or wmm");
+  ExpectError("env --latitude-deg abc", "--latitude-deg", "abc");
+  ExpectError("env --longitude-deg nan", "--longitude-deg", "nan");
+  ExpectError("env --altitude-m inf", "--altitude-m");
+  ExpectError("env --date-decimal-year 2026x", "--date-decimal-year", "2026x");
+  ExpectError("env --magnetic-model igrf", "--magnetic-model", "dipole or wmm");
 }
 
 TEST(EnvCommandTest, NegativeNumbersAreValues) {
-  const Result r = RunAiris("env --json --lat -45 --lon -60");
+  const Result r = RunAiris("env --json --latitude-deg -45 --longitude-deg -60");
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 

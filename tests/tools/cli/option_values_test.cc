@@ -32,8 +32,8 @@ void ExpectRefused(const CommandResult& r, const std::string& message) {
 }
 
 TEST(OptionValuesTest, NegativeUntilIsRefused) {
-  ExpectRefused(RunAiris(AddRunCommand, std::string(kRun) + "--until -5"),
-                "--until: must be >= 0 s (got -5)");
+  ExpectRefused(RunAiris(AddRunCommand, std::string(kRun) + "--until-s -5"),
+                "--until-s: must be >= 0 s (got -5)");
 }
 
 TEST(OptionValuesTest, EmptySeedIsRefusedNotIgnored) {
@@ -46,13 +46,13 @@ TEST(OptionValuesTest, EmptyOutIsRefusedNotTakenAsNoLog) {
 
 TEST(OptionValuesTest, TruthRateAboveThePhysicsRateIsRefusedNamingIt) {
   // 1e9 Hz used to log at the 1 kHz tick and run four times slower.
-  ExpectRefused(RunAiris(AddRunCommand, std::string(kRun) + "--truth-rate 1e9"),
-                "--truth-rate: must not exceed the physics rate of 1000 Hz (got 1000000000)");
+  ExpectRefused(RunAiris(AddRunCommand, std::string(kRun) + "--truth-rate-hz 1e9"),
+                "--truth-rate-hz: must not exceed the physics rate of 1000 Hz (got 1000000000)");
 }
 
 TEST(OptionValuesTest, TruthRateBelowTheLowestRateIsRefused) {
-  ExpectRefused(RunAiris(AddRunCommand, std::string(kRun) + "--truth-rate 1e-9"),
-                "--truth-rate: must be at least 0.001 Hz (got 1e-09)");
+  ExpectRefused(RunAiris(AddRunCommand, std::string(kRun) + "--truth-rate-hz 1e-9"),
+                "--truth-rate-hz: must be at least 0.001 Hz (got 1e-09)");
 }
 
 TEST(SceneCheckTest, AFolderIsNoScene) {

@@ -1,6 +1,6 @@
 // `airis px4` and `airis px4 airframe` as a user runs them, and the exit code of a PX4 link that
 // fails (5): the scene without a PX4 vehicle, an airframe on stdout, PX4 that never connects, a
-// run served to a scripted PX4 (tests/mavlink/px4/scripted_px4.h) until --until, and the dataset
+// run served to a scripted PX4 (tests/mavlink/px4/scripted_px4.h) until --until-s, and the dataset
 // of such a session, checked as any dataset is.
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include "tests/fixtures/temp_dir.h"
 #include "tests/mavlink/px4/scripted_px4.h"
 #include "tests/tools/cli/dataset_test_util.h"
+#include "tests/tools/cli/px4_test_scene.h"
 #include "tests/tools/cli/run_airis.h"
 
 namespace airis::tools {
@@ -22,22 +23,10 @@ using testing::RunAiris;
 
 namespace fs = std::filesystem;
 
-// A PX4 quad on instance N (TCP 4560 + N), connect timeout given; `camera`: a sensor entry more.
-std::string Px4Scene(int instance, double connect_timeout_s, const std::string& camera = "") {
-  return "scene: {name: px4_cli}\n"
-         "vehicles:\n"
-         "  - name: drone1\n"
-         "    preset: quad_x\n"
-         "    start: {position_ned_m: [0, 0, -0.2]}\n"
-         "    autopilot: {kind: px4, instance: " +
-         std::to_string(instance) + ", connect_timeout_s: " + std::to_string(connect_timeout_s) +
-         "}\n"
-         "    sensors: [{imu: {}}, {barometer: {}}, {magnetometer: {}}, {gps: {}}" +
-         (camera.empty() ? "" : ", " + camera) + "]\n";
-}
+using testing::Px4Scene;
 
 TEST(Px4CommandTest, ASceneWithoutPx4VehiclesIsBadInput) {
-  const auto r = RunAiris(AddPx4Command, "px4 scenes/empty.yaml --until 0.1");
+  const auto r = RunAiris(AddPx4Command, "px4 scenes/empty.yaml --until-s 0.1");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("no vehicle has `autopilot: {kind: px4}`"), std::string::npos) << r.err;
 }
@@ -79,10 +68,10 @@ TEST(Px4CommandTest, ServesAScriptedPx4UntilTheGivenTime) {
   script.armed = false;
   engine::mavlink::testing::ScriptedPx4 peer(script);
   const auto r =
-      RunAiris(AddPx4Command, "px4 " + scene.string() + " --until 0.5 --out " + out.string());
+      RunAiris(AddPx4Command, "px4 " + scene.string() + " --until-s 0.5 --out " + out.string());
   peer.Join();
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("px4 stopped (--until)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("px4 stopped (--until-s)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("drone1       TCP 127.0.0.1:4598: 125 HIL_SENSOR"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("115 actuator replies"), std::string::npos) << r.out;
@@ -110,7 +99,7 @@ TEST(Px4CommandTest, ASessionsDatasetIsCompleteConsistentAndMergesLikeAnyOther) 
   engine::mavlink::testing::ScriptedPx4 peer(script);
   // WHEN airis px4 writes a dataset of 0.5 s of lockstep session
   const auto r =
-      RunAiris(AddPx4Command, "px4 " + scene.string() + " --until 0.5 --dataset " + out.string() +
+      RunAiris(AddPx4Command, "px4 " + scene.string() + " --until-s 0.5 --dataset " + out.string() +
                                   " --formats npy --set scene.lighting.ambient=0.5");
   peer.Join();
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -173,10 +162,10 @@ TEST(Px4CommandTest, DatasetOptionsGoWithDatasetAndNotWithOut) {
       {"px4 scenes/px4_quad.yaml --cameras front", "error: --cameras: only with --dataset DIR"},
       {"px4 scenes/px4_quad.yaml --dataset d --out e",
        "error: --out: not with --dataset: the dataset holds the telemetry streams"},
-      {"px4 scenes/px4_quad.yaml --dataset d --truth-rate 50",
-       "error: --truth-rate: only with --out: a dataset's truth is at 100 Hz"},
-      {"px4 scenes/px4_quad.yaml --dataset d --workers 0",
-       "error: --workers: must be 1 to 64 (got 0)"},
+      {"px4 scenes/px4_quad.yaml --dataset d --truth-rate-hz 50",
+       "error: --truth-rate-hz: only with --out: a dataset's truth is at 100 Hz"},
+      {"px4 scenes/px4_quad.yaml --dataset d --encode-threads 0",
+       "error: --encode-threads: must be 1 to 64 (got 0)"},
       {"px4 scenes/px4_quad.yaml --dataset d --formats png",
        "error: --formats: unknown format 'png'"},
   };

@@ -1,7 +1,7 @@
 #pragma once
 
 // Runs `airis <args>` in-process through the same CLI11 setup as tools/main.cc, capturing its
-// output.
+// output. (tests/tools/cli/exit_codes_test.cc runs the real binary.)
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/cli/airis_app.h"
 #include "tools/cli/commands.h"
 
 namespace airis::tools::testing {
@@ -31,7 +32,7 @@ CommandResult RunAirisParsing(void (*add_command)(CLI::App&, int&), Parse&& pars
   try {
     parse(app);
   } catch (const CLI::ParseError& e) {
-    r.exit_code = app.exit(e);
+    r.exit_code = ExitCodeForParseError(app, e);
   }
   r.out = ::testing::internal::GetCapturedStdout();
   r.err = ::testing::internal::GetCapturedStderr();

@@ -82,7 +82,7 @@ TEST(RunCommandTest, AMissionOfSeveralVehiclesSummarisesEachTrack) {
 TEST(RunCommandTest, SameSceneMissionAndSeedGiveIdenticalLogs) {
   const fs::path a = FreshDir("a"), b = FreshDir("b");
   const std::string cmd =
-      "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 15 --out ";
+      "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until-s 15 --out ";
   ASSERT_EQ(RunAiris(cmd + a.string()).exit_code, 0);
   ASSERT_EQ(RunAiris(cmd + b.string()).exit_code, 0);
   int files = 0;
@@ -103,7 +103,7 @@ TEST(RunCommandTest, SensorRowsStartOnePeriodInAndGpsRowsHaveNoPositionBeforeThe
   // the default 1 s startup and eph from 100 m: 2D fix at 3.92 s) logged for 5 s
   const fs::path dir = FreshDir("first_rows");
   ASSERT_EQ(
-      RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 5 --out " +
+      RunAiris("run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until-s 5 --out " +
                dir.string())
           .exit_code,
       0);
@@ -140,7 +140,7 @@ TEST(RunCommandTest, OneAndTwoThreadsGiveIdenticalLogsOfAHundredVehicles) {
   // the others parked (asleep after 0.5 s), run for 2 s on one thread and on two
   const fs::path one = FreshDir("threads_1"), two = FreshDir("threads_2");
   const std::string cmd =
-      "run scenes/swarm.yaml --mission scenes/missions/swarm_lead.yaml --until 2 --out ";
+      "run scenes/swarm.yaml --mission scenes/missions/swarm_lead.yaml --until-s 2 --out ";
   ASSERT_EQ(RunAiris(cmd + one.string() + " --threads 1").exit_code, 0);
   const Result r = RunAiris(cmd + two.string() + " --threads 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -179,7 +179,7 @@ TEST(RunCommandTest, ThreadCountOutsideOneToSixtyFourIsAnError) {
 TEST(RunCommandTest, AnotherSeedChangesTheSensorNoise) {
   const fs::path a = FreshDir("seed1"), b = FreshDir("seed2");
   const std::string cmd =
-      "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until 2 --out ";
+      "run scenes/city.yaml --mission scenes/missions/city_orbit.yaml --until-s 2 --out ";
   ASSERT_EQ(RunAiris(cmd + a.string() + " --seed 1").exit_code, 0);
   ASSERT_EQ(RunAiris(cmd + b.string() + " --seed 2").exit_code, 0);
   EXPECT_NE(ReadFile(a / "drone1.imu.csv"), ReadFile(b / "drone1.imu.csv"));

@@ -278,7 +278,7 @@ TEST(DatasetIntegrityTest, OverridesAreRecordedAndPartOfTheDatasetsIdentity) {
   try {
     MergeDatasetShards({a.out, b.out}, merged);
     ADD_FAILURE() << "shards with other overrides merged";
-  } catch (const engine::DatasetIoError& error) {
+  } catch (const engine::ConfigError& error) {
     EXPECT_TRUE(Has(error.what(), "its manifest differs in 'scene'")) << error.what();
   }
 }

@@ -141,7 +141,7 @@ TEST(SlurmScriptsTest, DryRunPrintsBothScriptsAndBothCommands) {
 
 TEST(SlurmScriptsTest, OptionWordsLeaveDefaultsOutInOneOrder) {
   DatasetOptionValues v;
-  v.workers = "2";
+  v.encode_threads = "2";
   v.streams = "capture";
   v.stream_format = "npy";
   v.min_object_area_px = "16";
@@ -149,13 +149,13 @@ TEST(SlurmScriptsTest, OptionWordsLeaveDefaultsOutInOneOrder) {
   v.formats = "npy,tartanair";
   v.seed = "9";
   v.streams = "flight";
-  v.workers = "4";
+  v.encode_threads = "4";
   v.overrides = {"scene.lighting.ambient=0.5", "vehicles[0].start.yaw_deg=90"};
   const std::vector<std::string> words = DatasetOptionWords(v);
   EXPECT_EQ(words,
             (std::vector<std::string>{"--seed", "9", "--set", "scene.lighting.ambient=0.5", "--set",
                                       "vehicles[0].start.yaw_deg=90", "--formats", "npy,tartanair",
-                                      "--streams", "flight", "--workers", "4"}));
+                                      "--streams", "flight", "--encode-threads", "4"}));
   EXPECT_EQ(SceneOverrideWords(words), v.overrides);  // what the submission checks loads with
 }
 
