@@ -68,7 +68,8 @@ const ScalarType* FindType(std::string_view name, std::size_t line) {
   for (const ScalarType& t : kTypes) {
     if (name == t.names[0] || name == t.names[1]) return &t;
   }
-  Refuse("PLY header line " + std::to_string(line) + ": a property of unknown type " + Quote(name));
+  Refuse("a PLY property of unknown type " + Quote(name) + " (header line " + std::to_string(line) +
+         ")");
 }
 
 /// The header's elements; `*body_at` is set to the offset of the first byte after `end_header`'s
@@ -112,6 +113,7 @@ std::vector<Element> ParseHeader(const std::string& head, Format* format, std::s
       }
       have_format = true;
     } else if (w[0] == "element") {
+      if (w.size() == 2) Refuse("a PLY element " + Quote(w[1]) + " without a count");
       if (w.size() != 3) Refuse(where + "expected 'element NAME COUNT' (got " + Quote(line) + ")");
       Element e;
       e.name = std::string(w[1]);
@@ -269,17 +271,18 @@ void CheckPlyFile(const std::string& path, std::uintmax_t file_bytes) {
   for (const Element& e : elements) {
     if (e.properties.empty()) Refuse("the PLY element " + Quote(e.name) + " has no properties");
     if (e.name == "vertex") {
-      for (const char* axis : {"x", "y", "z"}) {
-        const bool found = std::any_of(
-            e.properties.begin(), e.properties.end(),
-            [&](const Property& p) { return p.name == axis && p.count_type == nullptr; });
-        if (!found)
-          Refuse("the PLY element 'vertex' has no scalar property '" + std::string(axis) + "'");
-      }
       if (e.count > engine::kMaxMeshVertices) {
         Refuse("the file declares " + std::to_string(e.count) +
                " vertices, more than the limit of " + std::to_string(engine::kMaxMeshVertices) +
                " (docs/limits.md)");
+      }
+      for (const char* axis : {"x", "y", "z"}) {
+        const bool found = std::any_of(
+            e.properties.begin(), e.properties.end(),
+            [&](const Property& p) { return p.name == axis && p.count_type == nullptr; });
+        if (!found) {
+          Refuse("the PLY element 'vertex' has no scalar property '" + std::string(axis) + "'");
+        }
       }
       vertices = e.count;
       have_vertex = true;
