@@ -34,8 +34,9 @@ std::span<const LimitDoc> Limits() {
        "`objects`, `waypoints_ned_m`, `polygon_ne_m`, `steps`, ..."},
       {"depth of include chains", Count(kMaxIncludeDepth), "`include`"},
       {"files read through includes (each at most once)", Count(kMaxIncludedFiles), "`include`"},
-      {"objects of a scene (ground and generated ones included)", Count(kMaxInstances),
-       "`objects`, `repeat`, `generators`"},
+      {"objects and vehicles of a scene (ground, generated objects and vehicle bodies included: "
+       "each has an instance id)",
+       Count(kMaxInstances), "`objects`, `repeat`, `generators`, `vehicles`"},
       {"size of a mesh file", Mebibytes(kMaxMeshFileBytes), "`mesh`, `car_mesh`"},
       {"triangles of one mesh file (declared counts checked before reading)",
        Count(kMaxMeshTriangles), "`mesh`, `car_mesh`"},
