@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps configure build test demo bench python format format-check clean
+.PHONY: all deps configure build test sanitized demo bench python format format-check clean
 
 all: build
 
@@ -20,10 +20,21 @@ build: configure
 
 # The whole test suite (GoogleTest, the layer and format checks, pytest through CTest), warnings as
 # errors, run twice in random order with one process per core: a test that depends on another's files
-# or on the order shows up.
+# or on the order shows up. Then the sanitized build's tests.
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS) --schedule-random
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS) --schedule-random
+	$(MAKE) sanitized
+
+# The sanitized build (docs/fuzzing.md), in its own folder with Debian's clang 14: the tests of the
+# libraries that parse untrusted input under AddressSanitizer and UndefinedBehaviorSanitizer, and each
+# libFuzzer target for FUZZ_SECONDS from its corpus. Any sanitizer report or fuzz finding fails.
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+sanitized: deps
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++-14 -DAIRIS_FUZZ=ON -DAIRIS_FUZZ_SECONDS=$(FUZZ_SECONDS)
+	cmake --build $(FUZZ_BUILD) -j$(JOBS) --target airis_sanitized
+	ctest --test-dir $(FUZZ_BUILD) --output-on-failure -j$(JOBS) --schedule-random
 
 # The main job: fly the city survey and write a small labeled dataset (about 100 frames of RGB, depth,
 # segmentation and COCO annotations) into out/demo_dataset, then print where its contact sheet is.
@@ -49,4 +60,4 @@ format-check:
 	cmake/check_format.sh .
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD)

@@ -6,13 +6,16 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <vector>
 
 #include "engine/core/config.h"
 #include "engine/core/limits.h"
+#include "scenes/mesh_file_check_ply.h"
 #include "scenes/mesh_loader.h"
 
 namespace airis::scenes {
@@ -26,8 +29,6 @@ namespace {
 // The formats scenes accept (docs/scene-format.md); the importer reads many more, each with its own
 // parser, which scenes have no use for.
 constexpr const char* kMeshExtensions[] = {"obj", "gltf", "glb", "fbx", "ply", "stl", "dae"};
-// A PLY header is a few hundred bytes; one this long is not a mesh.
-constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
 // Node trees of real models are a few levels deep.
 constexpr std::size_t kMaxGltfNodeDepth = 256;
 
@@ -65,90 +66,217 @@ void RequireCount(const char* what, std::uint64_t count, std::uint64_t limit) {
   }
 }
 
-/// PLY (Turk 1994): the header declares each element's count and properties; the body must have
-/// room for them (binary: their fixed sizes; ASCII: at least "0 " per property).
-void CheckPly(const std::string& path, std::uintmax_t file_bytes) {
-  const std::string head = ReadBytes(path, 0, kMaxPlyHeaderBytes);
-  const std::size_t end = head.find("end_header");
-  if (end == std::string::npos) Refuse("a PLY file without 'end_header' in its first 64 KiB");
-  const std::size_t body_start = head.find('\n', end);
-  const std::uint64_t body_bytes =
-      body_start == std::string::npos ? 0 : file_bytes - (body_start + 1);
-  std::istringstream lines(head.substr(0, end));
-  std::string line;
-  bool binary = false;
-  struct Element {
-    std::string name;
-    std::uint64_t count = 0;
-    std::uint64_t min_bytes = 0;  // per element
-  };
-  std::vector<Element> elements;
-  auto type_bytes = [](const std::string& type) -> std::uint64_t {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" ||
-        type == "float32")
-      return 4;
-    if (type == "double" || type == "float64") return 8;
-    Refuse("a PLY property of unknown type " + engine::QuoteValue(type));
-  };
-  while (std::getline(lines, line)) {
-    std::istringstream words(line);
+/// ASCII STL, as a strict grammar (one statement a line): `solid [NAME]`, then facets of
+/// `facet normal X Y Z`, `outer loop`, three `vertex X Y Z`, `endloop`, `endfacet`, then
+/// `endsolid [NAME]`; several solids may follow each other. assimp 5.2.5 leaks the meshes it has
+/// read when it gives up inside one (upstream issue #5946), and reads facets with fewer or more
+/// vertices as it can: none of that reaches it.
+void CheckAsciiStl(const std::string& text) {
+  if (text.find('\0') != std::string::npos) Refuse("an ASCII STL file with a NUL byte");
+  // What each line must start with, in order, within a solid; after the last, the next facet.
+  static constexpr const char* kFacet[] = {"facet",  "outer",   "vertex",  "vertex",
+                                           "vertex", "endloop", "endfacet"};
+  std::size_t facets = 0;
+  std::size_t step = 0;  // position in kFacet
+  bool in_solid = false;
+  std::size_t at = 0;
+  for (std::size_t number = 1; at < text.size(); ++number) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    std::istringstream line(text.substr(at, end - at));
+    at = end + 1;
     std::string word;
-    words >> word;
-    if (word == "format") {
-      std::string format;
-      words >> format;
-      binary = format != "ascii";
-    } else if (word == "element") {
-      Element e;
-      std::string count;
-      words >> e.name >> count;
-      const auto parsed = std::from_chars(count.data(), count.data() + count.size(), e.count);
-      if (parsed.ec == std::errc::result_out_of_range) e.count = UINT64_MAX;
-      if (parsed.ec == std::errc::invalid_argument) {
-        Refuse("a PLY element " + engine::QuoteValue(e.name) + " without a count");
+    if (!(line >> word)) continue;  // blank
+    const std::string where = "ASCII STL line " + Count(number) + ": ";
+    auto numbers = [&](int n) {
+      for (int k = 0; k < n; ++k) {
+        std::string value;
+        line >> value;
+        double v = 0;
+        const auto r = std::from_chars(value.data(), value.data() + value.size(), v);
+        if (value.empty() || r.ec != std::errc() || r.ptr != value.data() + value.size()) {
+          Refuse(where + "expected " + Count(n) + " numbers after '" + word + "'");
+        }
       }
-      elements.push_back(e);
-    } else if (word == "property" && !elements.empty()) {
-      std::string type;
-      words >> type;
-      if (type == "list") {
-        std::string count_type;
-        words >> count_type;
-        elements.back().min_bytes += binary ? type_bytes(count_type) : 2;
-      } else {
-        elements.back().min_bytes += binary ? type_bytes(type) : 2;
+    };
+    auto nothing_more = [&] {
+      std::string extra;
+      if (line >> extra)
+        Refuse(where + "unexpected " + engine::QuoteValue(extra) + " after '" + word + "'");
+    };
+    if (!in_solid) {
+      if (word != "solid")
+        Refuse(where + "expected 'solid' (got " + engine::QuoteValue(word) + ")");
+      in_solid = true;
+      continue;
+    }
+    if (step == 0 && word == "endsolid") {
+      in_solid = false;
+      continue;
+    }
+    if (word != kFacet[step]) {
+      Refuse(where + "expected '" + kFacet[step] + "'" + (step == 0 ? " or 'endsolid'" : "") +
+             " (got " + engine::QuoteValue(word) + ")");
+    }
+    if (word == "facet") {
+      std::string normal;
+      if (!(line >> normal) || normal != "normal") Refuse(where + "expected 'facet normal X Y Z'");
+      numbers(3);
+    } else if (word == "outer") {
+      std::string loop;
+      if (!(line >> loop) || loop != "loop") Refuse(where + "expected 'outer loop'");
+    } else if (word == "vertex") {
+      numbers(3);
+    }
+    nothing_more();
+    step = (step + 1) % std::size(kFacet);
+    if (step == 0) ++facets;
+  }
+  if (in_solid) Refuse("an ASCII STL file whose solid does not end ('endsolid' missing)");
+  if (facets == 0) Refuse("an ASCII STL file without facets");
+}
+
+/// Binary STL: an 80-byte header, a triangle count, then 50 bytes per triangle, exactly (as assimp
+/// tells the two apart); any other file must be ASCII STL, starting with 'solid'.
+void CheckStl(const std::string& path, std::uintmax_t file_bytes) {
+  const std::string head = ReadBytes(path, 0, 84);
+  const std::uint64_t triangles =
+      head.size() < 84 ? 0 : LittleEndian(std::string_view(head).substr(80, 4));
+  if (head.size() == 84 && 84 + 50 * triangles == file_bytes) {
+    RequireCount("triangles", triangles, kMaxMeshTriangles);
+    if (triangles == 0) Refuse("a binary STL file of no triangles");
+    return;
+  }
+  std::istringstream first(head);
+  std::string word;
+  if (first >> word && word.rfind("solid", 0) == 0) {
+    CheckAsciiStl(ReadBytes(path, 0, file_bytes));
+    return;
+  }
+  if (head.size() < 84) Refuse("too short for a binary STL file (84 bytes of header)");
+  RequireCount("triangles", triangles, kMaxMeshTriangles);
+  Refuse("the header declares " + Count(triangles) + " triangles (" + Count(84 + 50 * triangles) +
+         " bytes) but the file has " + Count(file_bytes) +
+         " (and it is no ASCII STL file, which starts with 'solid')");
+}
+
+/// Wavefront OBJ: every index of a face, line or point (`f`, `l`, `p`; `v`, `v/vt`, `v//vn` or
+/// `v/vt/vn`, negative ones counting back from the last element read) names a position, texture
+/// coordinate or normal that the file has. assimp 5.2.5 refuses one that does not, but leaks the
+/// meshes read until then (docs/fuzzing.md, "Findings").
+void CheckObj(const std::string& text) {
+  // Elements read so far: v, vt, vn.
+  std::int64_t counts[3] = {0, 0, 0};
+  // The largest positive index of each kind, and where it was.
+  std::int64_t largest[3] = {0, 0, 0};
+  std::size_t largest_line[3] = {0, 0, 0};
+  static constexpr const char* kKinds[] = {"position (v)", "texture coordinate (vt)",
+                                           "normal (vn)"};
+  std::size_t at = 0;
+  for (std::size_t number = 1; at < text.size(); ++number) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    std::istringstream line(text.substr(at, end - at));
+    at = end + 1;
+    std::string word;
+    if (!(line >> word)) continue;
+    if (word == "v" || word == "vt" || word == "vn") {
+      ++counts[word == "v" ? 0 : word == "vt" ? 1 : 2];
+      continue;
+    }
+    if (word != "f" && word != "l" && word != "p") continue;
+    const std::string where = "OBJ line " + Count(number) + ": ";
+    std::string corner;
+    while (line >> corner) {
+      std::size_t from = 0;
+      for (int kind = 0; kind < 3 && from <= corner.size(); ++kind) {
+        const std::size_t slash = std::min(corner.find('/', from), corner.size());
+        const std::string_view part(corner.data() + from, slash - from);
+        from = slash + 1;
+        if (part.empty() && kind > 0) continue;  // v//vn, or v/vt without a normal
+        std::int64_t index = 0;
+        const auto r = std::from_chars(part.data(), part.data() + part.size(), index);
+        if (r.ec != std::errc() || r.ptr != part.data() + part.size() || index == 0) {
+          Refuse(where + "'" + word + "' corner " + engine::QuoteValue(corner) +
+                 " is not of the form v, v/vt, v//vn or v/vt/vn (indices from 1, or negative)");
+        }
+        if (index < 0 && -index > counts[kind]) {
+          Refuse(where + "index " + Count(static_cast<std::uint64_t>(-index)) +
+                 " from the end names no " + kKinds[kind] + ": " +
+                 Count(static_cast<std::uint64_t>(counts[kind])) + " are read before it");
+        }
+        if (index > largest[kind]) {
+          largest[kind] = index;
+          largest_line[kind] = number;
+        }
       }
     }
   }
-  std::uint64_t needed = 0;
-  for (const Element& e : elements) {
-    if (e.name == "vertex") RequireCount("vertices", e.count, kMaxMeshVertices);
-    if (e.name == "face") RequireCount("faces", e.count, kMaxMeshTriangles);
-    const std::uint64_t per = std::max<std::uint64_t>(e.min_bytes, 1);
-    if (e.count > body_bytes / per || needed + e.count * per > body_bytes) {
-      Refuse("the header declares " + Count(e.count) + " " + engine::QuoteValue(e.name) +
-             " elements, more than the " + Count(body_bytes) + " bytes after it can hold");
+  for (int kind = 0; kind < 3; ++kind) {
+    if (largest[kind] > counts[kind]) {
+      Refuse("OBJ line " + Count(largest_line[kind]) + ": index " +
+             Count(static_cast<std::uint64_t>(largest[kind])) + " names no " + kKinds[kind] +
+             ": the file has " + Count(static_cast<std::uint64_t>(counts[kind])));
     }
-    needed += e.count * per;
   }
 }
 
-/// Binary STL: an 80-byte header, a triangle count, then 50 bytes per triangle. ASCII STL lists
-/// its facets one by one.
-void CheckStl(const std::string& path, std::uintmax_t file_bytes) {
-  const std::string head = ReadBytes(path, 0, 84);
-  if (Lowercase(head.substr(0, 5)) == "solid" &&
-      ReadBytes(path, 0, 1024).find("facet") != std::string::npos) {
-    return;  // ASCII
-  }
-  if (head.size() < 84) Refuse("too short for a binary STL file (84 bytes of header)");
-  const std::uint64_t triangles = LittleEndian(std::string_view(head).substr(80, 4));
-  RequireCount("triangles", triangles, kMaxMeshTriangles);
-  if (84 + 50 * triangles > file_bytes) {
-    Refuse("the header declares " + Count(triangles) + " triangles (" + Count(84 + 50 * triangles) +
-           " bytes) but the file has " + Count(file_bytes));
+/// COLLADA (1.4/1.5): every value array (`<float_array>`, `<int_array>`, `<Name_array>`, ...) has
+/// the `count` attribute the schema requires, and holds that many values. assimp 5.2.5 dereferences
+/// a null pointer reading an array without one (docs/fuzzing.md, "Findings").
+void CheckDae(const std::string& text) {
+  static const std::string kArrays[] = {"float_array",  "int_array",  "Name_array", "IDREF_array",
+                                        "SIDREF_array", "bool_array", "token_array"};
+  std::size_t index = 0;
+  for (std::size_t open = text.find('<'); open != std::string::npos;
+       open = text.find('<', open + 1)) {
+    std::size_t name_end = open + 1;
+    while (name_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[name_end])) ||
+                                      text[name_end] == '_' || text[name_end] == ':')) {
+      ++name_end;
+    }
+    const std::string tag = text.substr(open + 1, name_end - open - 1);
+    if (std::find(std::begin(kArrays), std::end(kArrays), tag) == std::end(kArrays)) continue;
+    const std::string what = "COLLADA <" + tag + "> " + Count(index++);
+    const std::size_t close = text.find('>', name_end);
+    if (close == std::string::npos) Refuse(what + " does not end");
+    // count="N" among the attributes (spaces around '=' allowed, either quote).
+    std::optional<std::uint64_t> declared;
+    const std::string_view attributes(text.data() + name_end, close - name_end);
+    for (std::size_t at = attributes.find("count"); at != std::string_view::npos;
+         at = attributes.find("count", at + 1)) {
+      if (at == 0 || !std::isspace(static_cast<unsigned char>(attributes[at - 1]))) continue;
+      std::size_t k = at + 5;
+      auto skip_spaces = [&] {
+        while (k < attributes.size() && std::isspace(static_cast<unsigned char>(attributes[k])))
+          ++k;
+      };
+      skip_spaces();
+      if (k >= attributes.size() || attributes[k] != '=') continue;
+      ++k;
+      skip_spaces();
+      if (k >= attributes.size() || (attributes[k] != '"' && attributes[k] != '\'')) continue;
+      const char quote = attributes[k++];
+      const char* end = attributes.data() + attributes.size();
+      std::uint64_t n = 0;
+      const auto r = std::from_chars(attributes.data() + k, end, n);
+      if (r.ec == std::errc() && r.ptr < end && *r.ptr == quote) declared = n;
+      break;
+    }
+    if (!declared) Refuse(what + " without a whole-number 'count' attribute");
+    RequireCount("values in one COLLADA array", *declared, 3 * kMaxMeshVertices);
+    std::uint64_t values = 0;
+    if (text[close - 1] != '/') {
+      const std::size_t end = std::min(text.find('<', close), text.size());
+      bool in_value = false;
+      for (std::size_t k = close + 1; k < end; ++k) {
+        const bool space = std::isspace(static_cast<unsigned char>(text[k])) != 0;
+        if (!space && !in_value) ++values;
+        in_value = !space;
+      }
+    }
+    if (values != *declared) {
+      Refuse(what + " declares count=" + Count(*declared) + " but holds " + Count(values) +
+             " values");
+    }
   }
 }
 
@@ -313,6 +441,8 @@ void CheckGlb(const std::string& path, std::uintmax_t file_bytes) {
 
 }  // namespace
 
+std::span<const char* const> MeshFileExtensions() { return kMeshExtensions; }
+
 void CheckMeshFileBeforeImport(const std::string& path) {
   std::string extension = Lowercase(fs::path(path).extension().string());
   if (!extension.empty()) extension.erase(0, 1);
@@ -329,8 +459,10 @@ void CheckMeshFileBeforeImport(const std::string& path) {
     Refuse("the file has " + Count(bytes) + " bytes, more than the limit of " +
            Count(engine::kMaxMeshFileBytes) + " (docs/limits.md)");
   }
-  if (extension == "ply") CheckPly(path, bytes);
+  if (extension == "ply") CheckPlyFile(path, bytes);
   if (extension == "stl") CheckStl(path, bytes);
+  if (extension == "dae") CheckDae(ReadBytes(path, 0, bytes));
+  if (extension == "obj") CheckObj(ReadBytes(path, 0, bytes));
   if (extension == "glb" || extension == "gltf") {
     // The glTF importer reads either form whatever the extension says.
     if (ReadBytes(path, 0, 4) == "glTF") {

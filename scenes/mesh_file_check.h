@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <string>
 
 namespace airis::scenes {
@@ -11,5 +12,8 @@ namespace airis::scenes {
 /// Other formats (OBJ, FBX, DAE, ...) hold their elements one by one, so the size bound covers
 /// them. Throws MeshLoadError (mesh_loader.h) saying what is declared and what fits.
 void CheckMeshFileBeforeImport(const std::string& path);
+
+/// The extensions of the mesh formats scenes accept (lowercase, without the dot).
+std::span<const char* const> MeshFileExtensions();
 
 }  // namespace airis::scenes

@@ -23,6 +23,7 @@ PACKAGES=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL + GLES3, llvmpipe when there is no GPU
   libgtest-dev libgmock-dev libbenchmark-dev           # tests and benchmarks
   nodejs npm               # MAVLink conformance test (node-mavlink: install-node-deps.sh)
+  clang-14 libclang-rt-14-dev  # the sanitized build and libFuzzer's runtime (docs/fuzzing.md)
 )
 
 # True when package $1 is installed. A Node.js from another source (NodeSource's nodejs package bundles

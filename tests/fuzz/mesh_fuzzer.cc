@@ -1,0 +1,50 @@
+// libFuzzer target: bytes written as a mesh file and read by scenes::LoadMeshFile (airis's checks,
+// then assimp). The input's first byte picks the extension (its value modulo the number of
+// extensions scenes accept, in the order of scenes::MeshFileExtensions()); the rest is the file.
+// tests/fuzz/make_corpus.py writes the seeds that way. A refused file throws
+// scenes::MeshLoadError; anything else (another exception, a crash, a sanitizer report, a hang,
+// gigabytes allocated, inside airis or inside assimp) is a finding.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scenes/mesh_file_check.h"
+#include "scenes/mesh_loader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of this process's own (libFuzzer's -jobs and -fork run several processes).
+const fs::path& WorkDir() {
+  static const fs::path dir = [] {
+    const fs::path d =
+        fs::temp_directory_path() / ("airis_mesh_fuzzer_" + std::to_string(getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const auto extensions = airis::scenes::MeshFileExtensions();
+  const fs::path path =
+      WorkDir() / (std::string("input.") + extensions[data[0] % extensions.size()]);
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
+  }
+  try {
+    airis::scenes::LoadMeshFile(path.string(), airis::scenes::MeshAxes::kYUp);
+  } catch (const airis::scenes::MeshLoadError&) {
+    // Refused with a reason.
+  }
+  return 0;
+}

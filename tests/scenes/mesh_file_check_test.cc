@@ -1,0 +1,153 @@
+// The checks that mesh files pass before assimp reads them (scenes/mesh_file_check.h): valid files
+// of each format load; each rule of the PLY and STL grammars refuses what breaks it, with a reason.
+#include "scenes/mesh_file_check.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "scenes/mesh_loader.h"
+#include "tests/fixtures/temp_dir.h"
+
+namespace airis::scenes {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The tests run in the source folder (tests/scenes/CMakeLists.txt).
+const fs::path kMeshSeeds = fs::path("tests") / "fuzz" / "corpus" / "mesh";
+
+std::string Load(const fs::path& path) {
+  try {
+    const MeshFile mesh = LoadMeshFile(path.string(), MeshAxes::kNed);
+    std::size_t triangles = 0;
+    for (const auto& m : mesh.meshes) triangles += m.triangle_count();
+    return "ok " + std::to_string(triangles);
+  } catch (const MeshLoadError& e) {
+    return e.what();
+  }
+}
+
+std::string LoadText(const std::string& extension, const std::string& bytes) {
+  return Load(testing::WriteTempFile("mesh." + extension, bytes));
+}
+
+template <class T>
+std::string Bytes(T value, bool big_endian = false) {
+  std::string out(sizeof value, '\0');
+  std::memcpy(out.data(), &value, sizeof value);
+  if (big_endian) std::reverse(out.begin(), out.end());
+  return out;
+}
+
+// The minimal triangle of each format kept as fuzz seeds (tests/fuzz/make_corpus.py): the seed's
+// first byte names the extension, the rest is the file.
+TEST(MeshFileCheckTest, MinimalMeshOfEachFormatLoadsAsOneTriangle) {
+  const auto extensions = MeshFileExtensions();
+  std::vector<std::string> seen;
+  for (const auto& entry : fs::directory_iterator(kMeshSeeds)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("gen_minimal_", 0) != 0) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string seed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(seed.empty());
+    const std::string extension = extensions[static_cast<unsigned char>(seed[0])];
+    if (extension == "fbx") continue;  // no minimal FBX is kept (a binary format of its own)
+    EXPECT_EQ(LoadText(extension, seed.substr(1)), "ok 1") << name;
+    seen.push_back(extension);
+  }
+  EXPECT_EQ(seen.size(), 8u) << "obj, gltf, glb, dae, ASCII and binary PLY and STL";
+}
+
+const std::string kPlyHeader =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+const std::string kPlyVertices = "0 0 0\n1 0 0\n0 1 0\n";
+
+TEST(MeshFileCheckTest, BigAndLittleEndianPlyGiveTheSameTriangle) {
+  for (const bool big : {false, true}) {
+    std::string ply =
+        std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+        " 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) ply += Bytes(v, big);
+    ply += '\3' + Bytes(std::int32_t{0}, big) + Bytes(std::int32_t{1}, big) +
+           Bytes(std::int32_t{2}, big);
+    const fs::path path = testing::WriteTempFile("endian.ply", ply);
+    const MeshFile mesh = LoadMeshFile(path.string(), MeshAxes::kNed);
+    ASSERT_EQ(mesh.meshes.size(), 1u);
+    EXPECT_FLOAT_EQ(mesh.meshes[0].bounds.max().x(), 1.0f) << (big ? "big" : "little");
+    EXPECT_FLOAT_EQ(mesh.meshes[0].bounds.max().y(), 1.0f) << (big ? "big" : "little");
+  }
+}
+
+struct Refusal {
+  const char* extension;
+  std::string bytes;
+  const char* fragment;
+};
+
+TEST(MeshFileCheckTest, BrokenPlyAndStlAreRefusedWithTheirReason) {
+  const std::string binary_stl_header(80, ' ');
+  std::string binary_stl_triangle;  // normal, three corners, attribute bytes
+  for (const float v : {0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) {
+    binary_stl_triangle += Bytes(v);
+  }
+  binary_stl_triangle += std::string(2, '\0');
+  const std::string facet =
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 "
+      "0\nendloop\nendfacet\n";
+  const Refusal cases[] = {
+      {"ply", kPlyHeader + kPlyVertices + "3 0 1 3\n",
+       "PLY face 0 names vertex 3, but the file has 3 vertices"},
+      {"ply", kPlyHeader + kPlyVertices + "3 0 -1 2\n", "PLY face 0 names vertex -1"},
+      {"ply", kPlyHeader + kPlyVertices + "2 0 1\n", "a face needs at least 3 corners"},
+      {"ply", kPlyHeader + kPlyVertices + "3 0 1 2 7\n", "PLY face 0 has 5 values, more than"},
+      {"ply", kPlyHeader + kPlyVertices + "3 0 1\n", "PLY face 0 has fewer values"},
+      {"ply", kPlyHeader + kPlyVertices, "elements, more than the 18 bytes after it can hold"},
+      {"ply", kPlyHeader + "0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n",
+       "PLY vertex 2: 'one' is not a number"},
+      {"ply",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 "
+       "0\n",
+       "the PLY element 'vertex' has no scalar property 'z'"},
+      {"ply",
+       "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty "
+       "float z\n"
+       "element face 99\nend_header\n",
+       "the PLY element 'face' has no properties"},
+      {"ply", "ply\nformat ascii 1.0\nelemnt vertex 3\nend_header\n",
+       "PLY header line 3: unknown keyword 'elemnt'"},
+      {"ply", "ply\nformat ascii 2.0\nend_header\n", "PLY header line 2: expected 'format"},
+      {"ply", "plyx\nformat ascii 1.0\nend_header\n", "not a PLY file"},
+      {"stl", "solid t\n" + facet + "endsolid t\n", "ok 1"},
+      {"stl",
+       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+       "vertex 1 1 0\nendloop\nendfacet\nendsolid t\n",
+       "ASCII STL line 7: expected 'endloop' (got 'vertex')"},
+      {"stl", "solid t\n" + facet, "'endsolid' missing"},
+      {"stl", "solid t\nfacet normal 0 0\nouter loop\n",
+       "ASCII STL line 2: expected 3 numbers after 'facet'"},
+      {"stl", "solid t\n" + facet + "endsolid t\n" + std::string(1, '\0'),
+       "an ASCII STL file with a NUL byte"},
+      {"stl", "solid t\nendsolid t\n", "an ASCII STL file without facets"},
+      {"stl", binary_stl_header + Bytes(std::uint32_t{0}), "a binary STL file of no triangles"},
+      {"stl", binary_stl_header + Bytes(std::uint32_t{1}) + binary_stl_triangle, "ok 1"},
+      {"stl", binary_stl_header + Bytes(std::uint32_t{1}) + binary_stl_triangle + '\0',
+       "the header declares 1 triangles (134 bytes) but the file has 135"},
+  };
+  for (const Refusal& c : cases) {
+    const std::string got = LoadText(c.extension, c.bytes);
+    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
+  }
+}
+
+}  // namespace
+}  // namespace airis::scenes
