@@ -164,6 +164,14 @@ void CheckStl(const std::string& path, std::uintmax_t file_bytes) {
 /// coordinate or normal that the file has. assimp 5.2.5 refuses one that does not, but leaks the
 /// meshes read until then (docs/fuzzing.md, "Findings").
 void CheckObj(const std::string& text) {
+  // A NUL byte ends assimp's reading of a line early, and assimp 5.2.5 leaks what it read of a file
+  // cut that way (docs/fuzzing.md, "Findings"); OBJ is text, so refuse it.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    const auto line =
+        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    Refuse("OBJ line " + Count(static_cast<std::size_t>(line)) +
+           ": a NUL byte (an OBJ file is text)");
+  }
   // Elements read so far: v, vt, vn.
   std::int64_t counts[3] = {0, 0, 0};
   // The largest positive index of each kind, and where it was.
