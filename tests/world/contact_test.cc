@@ -6,41 +6,26 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/world/simulation.h"
-#include "engine/world/world.h"
 #include "tests/fixtures/box_scenes.h"
-#include "tests/fixtures/test_environment.h"
-#include "tests/world/test_body.h"
+#include "tests/world/body_rig.h"
 
 namespace airis::engine {
 namespace {
 
+using testing::BodyRig;
 using testing::BoxSceneBuilder;
-using testing::MakeEnvironment;
-using testing::PassiveBody;
+using testing::MakeBodyRig;
 using testing::QuadBody;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box
 
-struct Rig {
-  std::unique_ptr<Simulation> sim;
-  PassiveBody* body = nullptr;
-  std::vector<CollisionEvent> events;
-};
-
-std::unique_ptr<Rig> MakeRig(const BoxSceneBuilder& scene, const RigidBodyConfig& body,
-                             double rate_hz = 1000.0) {
-  auto rig = std::make_unique<Rig>();
-  auto world = std::make_unique<World>(scene.Build(), MakeEnvironment());
-  auto vehicle = std::make_unique<PassiveBody>("quad", body);
-  rig->body = vehicle.get();
-  world->AddVehicle(std::move(vehicle));
-  world->AddCollisionListener([r = rig.get()](const CollisionEvent& e) { r->events.push_back(e); });
-  SimulationConfig config;
-  config.physics_rate_hz = rate_hz;
-  rig->sim = std::make_unique<Simulation>(std::move(world), config);
-  return rig;
+// One passive body "quad" over `scene`, stepped at `rate_hz`.
+std::unique_ptr<BodyRig> MakeRig(const BoxSceneBuilder& scene, const RigidBodyConfig& body,
+                                 double rate_hz = 1000.0) {
+  PhysicsConfig physics;
+  physics.rate_hz = rate_hz;
+  return MakeBodyRig(scene.Build(), {{"quad", body}}, physics);
 }
 
 RigidBodyConfig NoDrag(RigidBodyConfig c) {
@@ -54,7 +39,7 @@ TEST(ContactTest, BounceSpeedIsRestitutionTimesImpactSpeed) {
   BoxSceneBuilder scene;
   scene.AddGround(0.0, 100.0, static_cast<int>(scene.AddMaterial(0.4, 0.5)));
   auto rig = MakeRig(scene, NoDrag(QuadBody(0.6, 0.5)));
-  RigidBodyState& s = rig->body->state();
+  RigidBodyState& s = rig->bodies[0]->state();
   s.p_W = Vec3(0.0, 0.0, -1.0);
   // WHEN it falls flat from 1 m and hits the ground
   double v_before = 0.0;
@@ -86,7 +71,7 @@ TEST(ContactTest, PenetrationIsRemovedWithoutLaunchingTheBody) {
   BoxSceneBuilder scene;
   scene.AddGround(0.0, 100.0);
   auto rig = MakeRig(scene, NoDrag(QuadBody(0.55, 0.5)));
-  RigidBodyState& s = rig->body->state();
+  RigidBodyState& s = rig->bodies[0]->state();
   s.p_W = Vec3(0.0, 0.0, -kHalfHeight_m + 0.005);
   // WHEN one tick runs
   rig->sim->Step();
@@ -110,7 +95,7 @@ TEST(ContactTest, SlidingDeceleratesAtFrictionTimesGravity) {
   BoxSceneBuilder scene;
   scene.AddGround(0.0, 100.0, static_cast<int>(scene.AddMaterial(0.0, 0.3)));
   auto rig = MakeRig(scene, NoDrag(QuadBody(0.0, 0.5)));
-  RigidBodyState& s = rig->body->state();
+  RigidBodyState& s = rig->bodies[0]->state();
   s.p_W = Vec3(0.0, 0.0, -kHalfHeight_m);
   s.v_W = Vec3(3.0, 0.0, 0.0);
   // WHEN it slides for 0.5 s
@@ -133,10 +118,10 @@ double CrashIntoWall(double rate_hz, Vec3* v_end) {
   scene.AddGround();
   scene.AddBox("wall", Vec3(5.1, 0.0, -5.0), Vec3(0.2, 20.0, 10.0));
   auto rig = MakeRig(scene, QuadBody(), rate_hz);
-  RigidBodyState& s = rig->body->state();
+  RigidBodyState& s = rig->bodies[0]->state();
   s.p_W = Vec3(0.0, 0.0, -3.0);
   s.v_W = Vec3(40.0, 0.0, 0.0);
-  rig->body->wrench.force_B = Vec3(0.0, 0.0, -kG);  // holds altitude
+  rig->bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -kG);  // holds altitude
   double deepest = -1e9;
   for (int i = 0; i < static_cast<int>(0.5 * rate_hz); ++i) {
     rig->sim->Step();
@@ -157,9 +142,9 @@ TEST(ContactTest, NoTunnellingAtFortyMetresPerSecond) {
 }
 
 // Puts the body at rest on the surface at height `surface_z` and runs it for `seconds`.
-std::unique_ptr<Rig> RestOn(BoxSceneBuilder scene, double surface_z, double seconds) {
+std::unique_ptr<BodyRig> RestOn(BoxSceneBuilder scene, double surface_z, double seconds) {
   auto rig = MakeRig(scene, QuadBody());
-  rig->body->state().p_W = Vec3(2.0, 1.0, surface_z - kHalfHeight_m);
+  rig->bodies[0]->state().p_W = Vec3(2.0, 1.0, surface_z - kHalfHeight_m);
   rig->sim->RunFor(seconds);
   return rig;
 }
@@ -172,7 +157,7 @@ TEST(ContactTest, RestingOnGroundAndRoofIsStable) {
   roof.AddBox("house", Vec3(0.0, 0.0, -5.0), Vec3(10.0, 10.0, 10.0));  // roof at z = -10
   for (auto [scene, z] : {std::pair{ground, 0.0}, std::pair{roof, -10.0}}) {
     auto rig = RestOn(scene, z, 1.0);
-    const RigidBodyState& s = rig->body->state();
+    const RigidBodyState& s = rig->bodies[0]->state();
     const Vec3 start(2.0, 1.0, z - kHalfHeight_m);
     // After 1 s: speed below 1 mm/s.
     EXPECT_LT(s.v_W.norm(), 1e-3) << "surface at " << z;
@@ -195,10 +180,10 @@ TEST(ContactTest, TakesOffCleanlyWhenThrustExceedsWeight) {
   BoxSceneBuilder scene;
   scene.AddGround();
   auto rig = RestOn(scene, 0.0, 1.0);
-  RigidBodyState& s = rig->body->state();
+  RigidBodyState& s = rig->bodies[0]->state();
   const double z0 = s.p_W.z();
   // WHEN thrust is 1.2 m g upward for 0.5 s
-  rig->body->wrench.force_B = Vec3(0.0, 0.0, -1.2 * kG);
+  rig->bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -1.2 * kG);
   rig->sim->RunFor(0.5);
   // THEN it rises as a free body would: 0.2 g for 0.5 s (drag at < 1 m/s: < 0.1%).
   EXPECT_NEAR(z0 - s.p_W.z(), 0.5 * 0.2 * kG * 0.25, 0.002);
@@ -208,11 +193,11 @@ TEST(ContactTest, AccelerometerFeelsTheLanding) {
   BoxSceneBuilder scene;
   scene.AddGround();
   auto rig = MakeRig(scene, QuadBody());
-  rig->body->state().p_W = Vec3(0.0, 0.0, -2.0);
+  rig->bodies[0]->state().p_W = Vec3(0.0, 0.0, -2.0);
   double peak = 0.0, in_flight = 0.0;
   for (int i = 0; i < 1000; ++i) {
     rig->sim->Step();
-    const auto& s = rig->body->state();
+    const auto& s = rig->bodies[0]->state();
     const double f = rig->sim->world().accelerations(0).CalcSpecificForce_B(s.q_WB).norm();
     if (rig->events.empty()) in_flight = std::max(in_flight, f);
     peak = std::max(peak, f);

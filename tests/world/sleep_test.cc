@@ -9,45 +9,29 @@
 #include <vector>
 
 #include "engine/core/error.h"
-#include "engine/world/simulation.h"
-#include "engine/world/world.h"
 #include "tests/fixtures/box_scenes.h"
-#include "tests/fixtures/test_environment.h"
-#include "tests/world/test_body.h"
+#include "tests/world/body_rig.h"
 
 namespace airis::engine {
 namespace {
 
+using testing::BodyRig;
 using testing::BoxSceneBuilder;
-using testing::MakeEnvironment;
-using testing::PassiveBody;
+using testing::MakeBodyRig;
 using testing::QuadBody;
 
 constexpr double kG = 9.80665;
 constexpr double kHalfHeight_m = 0.02;  // of the quad's 0.04 m box
 
-struct Rig {
-  std::unique_ptr<Simulation> sim;
-  std::vector<PassiveBody*> bodies;
-  std::vector<CollisionEvent> events;
-  World& world() { return sim->world(); }
-  RigidBodyState& state(std::size_t i) { return bodies[i]->state(); }
-};
+using Rig = BodyRig;
 
 // `count` quads "a", "b", ... on a ground plane, with `physics` (sleeping on by default).
 std::unique_ptr<Rig> MakeRig(std::size_t count, const PhysicsConfig& physics = {}) {
-  auto rig = std::make_unique<Rig>();
-  auto world =
-      std::make_unique<World>(BoxSceneBuilder().AddGround().Build(), MakeEnvironment(), physics);
+  std::vector<std::pair<std::string, RigidBodyConfig>> bodies;
   for (std::size_t i = 0; i < count; ++i) {
-    auto body =
-        std::make_unique<PassiveBody>(std::string(1, static_cast<char>('a' + i)), QuadBody());
-    rig->bodies.push_back(body.get());
-    world->AddVehicle(std::move(body));
+    bodies.emplace_back(std::string(1, static_cast<char>('a' + i)), QuadBody());
   }
-  world->AddCollisionListener([r = rig.get()](const CollisionEvent& e) { r->events.push_back(e); });
-  rig->sim = std::make_unique<Simulation>(std::move(world));
-  return rig;
+  return MakeBodyRig(BoxSceneBuilder().AddGround().Build(), bodies, physics);
 }
 
 bool SameBits(const RigidBodyState& x, const RigidBodyState& y) {
