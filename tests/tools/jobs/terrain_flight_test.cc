@@ -39,7 +39,7 @@ struct Clearance {
 // Flies `mission` in `job`, measuring the height of vehicle 0 above the ground at every tick of
 // its `kind` steps where `where(p_W)` holds.
 template <class Where>
-Clearance FlyMeasuring(SimulationJob& job, const std::string& mission, const std::string& kind,
+Clearance FlyMeasuring(SimulationJob& job, const engine::Mission& mission, const std::string& kind,
                        Where where, MissionOutcome* outcome) {
   const engine::World& world = job.world();
   const engine::Heightfield& ground = *world.scene().terrain.heightfield;
@@ -60,8 +60,14 @@ Clearance FlyMeasuring(SimulationJob& job, const std::string& mission, const std
     c.max_climb_m_s = std::max(c.max_climb_m_s, -s.v_W.z());
     ++c.samples;
   };
-  *outcome = job.FlyMission(scenes::ParseMission(mission, "m.yaml"), flight);
+  *outcome = job.FlyMission(mission, flight);
   return c;
+}
+
+template <class Where>
+Clearance FlyMeasuring(SimulationJob& job, const std::string& mission, const std::string& kind,
+                       Where where, MissionOutcome* outcome) {
+  return FlyMeasuring(job, scenes::ParseMission(mission, "m.yaml"), kind, where, outcome);
 }
 
 // Sharp generated ridges (ridged noise) 60 m high, and a quadrotor in a valley between them.
@@ -172,6 +178,26 @@ TEST(TerrainFlightTest, AFollowTerrainSurveyKeepsItsHeightAboveTheValleysHills) 
       "valley: clearance %.3f .. %.3f m, steepest %.2f, min speed %.2f m/s, max climb "
       "%.2f m/s\n",
       c.min_m, c.max_m, steepest, c.min_speed_m_s, c.max_climb_m_s);
+}
+
+// GIVEN the example (scenes/valley.yaml, scenes/missions/valley_survey.yaml) WHEN flown THEN it
+// completes without a collision and keeps 60 m over the ground on the survey's lines (north -700
+// to -400, east -300 to 0, away from the line ends).
+TEST(TerrainFlightTest, TheValleySurveyExampleKeepsSixtyMetresOverTheHills) {
+  SceneSource scene;
+  scene.path = "scenes/valley.yaml";
+  SimulationJob job(scene);
+  job.DisableImageSensors();
+  MissionOutcome out;
+  const Clearance c = FlyMeasuring(
+      job, scenes::LoadMissionFile("scenes/missions/valley_survey.yaml"), "survey",
+      [](const engine::Vec3& p) { return p.x() > -690.0 && p.x() < -410.0; }, &out);
+  ASSERT_TRUE(out.succeeded()) << out.failure;
+  EXPECT_EQ(out.collisions, 0);
+  ASSERT_GT(c.samples, 150'000);
+  EXPECT_GE(c.min_m, 60.0 - kClearanceTolerance_m);
+  EXPECT_LE(c.max_m, 60.0 + kClearanceTolerance_m);
+  std::printf("valley example: clearance %.3f .. %.3f m\n", c.min_m, c.max_m);
 }
 
 }  // namespace
