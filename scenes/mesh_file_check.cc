@@ -227,13 +227,51 @@ void CheckObj(const std::string& text) {
   }
 }
 
+/// A COLLADA index list (`<p>`, `<vcount>`, `<h>`, `<v>`; its element's name ends at `name_end`)
+/// holds whole numbers and white space only (the schema's ListOfUInts; skin
+/// weights' `<v>` may hold -1), each below the vertex limit. assimp 5.2.5 reads "0OOO 1 2" as a
+/// list that never ends and allocates gigabytes (docs/fuzzing.md, "Findings").
+void CheckDaeIndexList(const std::string& text, const std::string& tag, std::size_t name_end,
+                       std::size_t index) {
+  const std::size_t close = text.find('>', name_end);
+  if (close == std::string::npos) Refuse("COLLADA <" + tag + "> " + Count(index) + " does not end");
+  if (text[close - 1] == '/') return;
+  const std::size_t end = std::min(text.find('<', close), text.size());
+  for (std::size_t k = close + 1; k < end;) {
+    const unsigned char c = static_cast<unsigned char>(text[k]);
+    if (std::isspace(c)) {
+      ++k;
+      continue;
+    }
+    const std::size_t digits = k + (tag == "v" && c == '-' ? 1 : 0);
+    std::uint64_t value = 0;
+    const auto r = std::from_chars(text.data() + digits, text.data() + end, value);
+    const bool ends =
+        r.ptr == text.data() + end || std::isspace(static_cast<unsigned char>(*r.ptr));
+    if (r.ec != std::errc() || !ends || value >= 3 * kMaxMeshVertices) {
+      std::size_t word_end = k;
+      while (word_end < end && !std::isspace(static_cast<unsigned char>(text[word_end]))) {
+        ++word_end;
+      }
+      Refuse("COLLADA <" + tag + "> " + Count(index) + " holds " +
+             engine::QuoteValue(text.substr(k, word_end - k)) +
+             " where an index (a whole number below " + Count(3 * kMaxMeshVertices) + ") belongs");
+    }
+    k = static_cast<std::size_t>(r.ptr - text.data());
+  }
+}
+
 /// COLLADA (1.4/1.5): every value array (`<float_array>`, `<int_array>`, `<Name_array>`, ...) has
 /// the `count` attribute the schema requires, and holds that many values. assimp 5.2.5 dereferences
-/// a null pointer reading an array without one (docs/fuzzing.md, "Findings").
+/// a null pointer reading an array without one (docs/fuzzing.md, "Findings"). Index lists are
+/// checked by CheckDaeIndexList.
 void CheckDae(const std::string& text) {
   static const std::string kArrays[] = {"float_array",  "int_array",  "Name_array", "IDREF_array",
                                         "SIDREF_array", "bool_array", "token_array"};
+  // The index lists of primitives (<p>, <vcount>, <h>) and of skin weights (<v>).
+  static const std::string kIndexLists[] = {"p", "vcount", "h", "v"};
   std::size_t index = 0;
+  std::size_t lists = 0;
   for (std::size_t open = text.find('<'); open != std::string::npos;
        open = text.find('<', open + 1)) {
     std::size_t name_end = open + 1;
@@ -242,6 +280,10 @@ void CheckDae(const std::string& text) {
       ++name_end;
     }
     const std::string tag = text.substr(open + 1, name_end - open - 1);
+    if (std::find(std::begin(kIndexLists), std::end(kIndexLists), tag) != std::end(kIndexLists)) {
+      CheckDaeIndexList(text, tag, name_end, lists++);
+      continue;
+    }
     if (std::find(std::begin(kArrays), std::end(kArrays), tag) == std::end(kArrays)) continue;
     const std::string what = "COLLADA <" + tag + "> " + Count(index++);
     const std::size_t close = text.find('>', name_end);
