@@ -30,8 +30,9 @@ test: build
 # libFuzzer target for FUZZ_SECONDS from its corpus. Any sanitizer report or fuzz finding fails.
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
+FUZZ_SEED ?= 1
 sanitized: deps
-	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++-14 -DAIRIS_FUZZ=ON -DAIRIS_FUZZ_SECONDS=$(FUZZ_SECONDS)
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++-14 -DAIRIS_FUZZ=ON -DAIRIS_FUZZ_SECONDS=$(FUZZ_SECONDS) -DAIRIS_FUZZ_SEED=$(FUZZ_SEED)
 	cmake --build $(FUZZ_BUILD) -j$(JOBS) --target airis_sanitized
 	ctest --test-dir $(FUZZ_BUILD) --output-on-failure -j$(JOBS) --schedule-random
 
