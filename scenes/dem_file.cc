@@ -30,6 +30,9 @@ constexpr engine::EnumName<DemHeights> kHeightNames[] = {{DemHeights::kMsl, "msl
 // reprojection; 1e-6 pixel is a micrometre on a 1 m DEM).
 constexpr double kEdgeTolerance_px = 1e-6;
 
+// Points along each edge of a DEM at most, where its footprint on the ground plan is found.
+constexpr int kEdgePoints = 4096;
+
 using Transform =
     std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation*)>;
 
@@ -174,14 +177,22 @@ Footprint CalcFootprint(const Dem& dem, const engine::LocalNedFrame& frame) {
     const engine::Vec3 p = frame.ToNed(g);
     return Eigen::Vector2d(p.x(), p.y());
   };
-  // The four edges of pixel centres, each as the points along it.
+  // The four edges of pixel centres, each as points along it: every pixel, or for a large DEM
+  // kEdgePoints spread evenly (an edge bends by centimetres between them, and a huge raster
+  // costs no more to place than a small one).
   const int w = dem.width() - 1, h = dem.height() - 1;
+  const auto along = [](int last) {
+    std::vector<double> at;
+    const int count = std::min(last, kEdgePoints);
+    for (int k = 0; k <= count; ++k) at.push_back(static_cast<double>(last) * k / count);
+    return at;
+  };
   std::array<std::vector<Eigen::Vector2d>, 4> edges;
-  for (int c = 0; c <= w; ++c) {
+  for (const double c : along(w)) {
     edges[0].push_back(ne(c, 0));
     edges[1].push_back(ne(c, h));
   }
-  for (int r = 0; r <= h; ++r) {
+  for (const double r : along(h)) {
     edges[2].push_back(ne(0, r));
     edges[3].push_back(ne(w, r));
   }
