@@ -62,6 +62,7 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
                           engine::Vec3(extent.max().x() + margin.x(), extent.max().y() + margin.y(),
                                        std::max(extent.max().z(), 0.0)));
   limits.has_ground = scene.has_ground;
+  limits.terrain = scene.static_scene.terrain.heightfield;
   limits.max_speed_m_s = scene.vehicles.at(vehicle).spec->CalcMaxSpeed_m_s();
   limits.physics_rate_hz = scene.physics.rate_hz;
   limits.vehicle = scene.vehicles.at(vehicle).name;

@@ -16,8 +16,27 @@ using engine::SourceLocation;
 
 namespace {
 
-/// A key as it appears in a key path: as written when it is a plain name, else quoted (cut and
-/// escaped) so that a huge or binary key makes a readable message.
+/// Where each document of a text starts (the parser's events, nothing built).
+class DocumentStarts final : public YAML::EventHandler {
+ public:
+  explicit DocumentStarts(std::vector<YAML::Mark>& starts) : starts_(starts) {}
+  void OnDocumentStart(const YAML::Mark& mark) override { starts_.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+ private:
+  std::vector<YAML::Mark>& starts_;
+};
+
 /// Counts the values of a document with every alias expanded (each alias adds the size of the
 /// node it names), from the parser's events: linear in the text, whatever the expansion.
 class ExpandedValueCounter final : public YAML::EventHandler {
@@ -84,6 +103,8 @@ class ExpandedValueCounter final : public YAML::EventHandler {
   std::uint64_t root_ = 0;
 };
 
+/// A key as it appears in a key path: as written when it is a plain name, else quoted (cut and
+/// escaped) so that a huge or binary key makes a readable message.
 std::string PrintableKey(const std::string& key) {
   for (char c : key) {
     const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
@@ -377,17 +398,33 @@ void YamlReader::RequireUtf8(const std::string& text, const YAML::Mark& mark,
 }
 
 YAML::Node LoadYamlString(const std::string& text, const std::string& file) {
-  std::vector<YAML::Node> documents;
+  // The documents are counted with at most two parser passes rather than read with
+  // YAML::LoadAll: yaml-cpp 0.7 never gets past a ',' outside a flow collection ("a: 1\n,") and
+  // yields an empty document there for ever, which LoadAll collects until memory runs out (found by
+  // the mission fuzzer: 52 bytes, 3 GB).
+  YAML::Node first;
+  std::vector<YAML::Mark> starts;
   try {
-    documents = YAML::LoadAll(text);
+    first = YAML::Load(text);
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    DocumentStarts counter(starts);
+    while (starts.size() < 2 && parser.HandleNextDocument(counter)) {
+    }
   } catch (const YAML::Exception& e) {
     throw ConfigError(SourceLocation{file, e.mark.line >= 0 ? e.mark.line + 1 : 0,
                                      e.mark.column >= 0 ? e.mark.column + 1 : 0},
                       "", "invalid YAML: " + e.msg);
   }
-  if (documents.size() > 1) {
+  for (const YAML::Mark& at : starts) {
+    if (at.pos >= 0 && static_cast<std::size_t>(at.pos) < text.size() && text[at.pos] == ',') {
+      YamlReader(file).Fail(at, "",
+                            "invalid YAML: a ',' outside a flow sequence or map ([...] or {...})");
+    }
+  }
+  if (starts.size() > 1) {
     // A second document would be ignored: its settings silently lost.
-    YAML::Mark at = documents[1].Mark();
+    YAML::Mark at = starts[1];
     if (at.line < 0) {
       // An empty second document has no position: point at its '---' (the last one).
       at.line = 0;
@@ -411,7 +448,7 @@ YAML::Node LoadYamlString(const std::string& text, const std::string& file) {
     ExpandedValueCounter counter(file);
     parser.HandleNextDocument(counter);
   }
-  return documents.empty() ? YAML::Node() : documents.front();
+  return first;
 }
 
 YAML::Node LoadYamlFile(const std::string& path) {

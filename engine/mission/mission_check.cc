@@ -15,7 +15,7 @@ void CheckTrack(const Mission& mission, const MissionTrack& track, const TrackLi
   auto where = [&](const std::string& key, const SourceLocation& fallback) {
     return mission.locate ? mission.locate(key) : fallback;
   };
-  StepPlan plan{limits.start_W, limits.start_W, &frame};
+  StepPlan plan{limits.start_W, limits.start_W, &frame, limits.limits.terrain.get()};
   double total_s = 0.0;
   for (std::size_t i = 0; i < track.steps.size(); ++i) {
     const MissionStep& step = track.steps[i];

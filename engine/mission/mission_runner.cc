@@ -19,8 +19,8 @@ double AutomaticTimeout(double nominal_s) { return 3.0 * nominal_s + 30.0; }
 }  // namespace
 
 MissionRunner::MissionRunner(MissionTrack track, const LocalNedFrame& frame, RandomStream stream,
-                             MissionHost* host)
-    : track_(std::move(track)), frame_(frame), stream_(stream), host_(host) {
+                             MissionHost* host, const Heightfield* terrain)
+    : track_(std::move(track)), frame_(frame), stream_(stream), host_(host), terrain_(terrain) {
   AIRIS_DEMAND(!track_.steps.empty());
   for (const auto& step : track_.steps) {
     AIRIS_DEMAND(step.spec != nullptr);
@@ -89,6 +89,7 @@ StepContext MissionRunner::Context(const MissionInput& input) {
   c.landed = input.landed;
   c.home_W = home_W_;
   c.frame = &frame_;
+  c.terrain = terrain_;
   c.stream = &stream_;
   c.host = host_;
   return c;

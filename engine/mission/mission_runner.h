@@ -59,8 +59,10 @@ class MissionRunner {
 
   /// @param frame the world's geodetic frame (for geodetic goto). @param host may be null when the
   /// track has no capture, set_wind, random_poses or barrier step (AIRIS_DEMAND otherwise).
+  /// @param terrain the ground that `above_ground_m` is measured from (the world's terrain, which
+  /// must outlive the runner); null: the plane at height 0.
   MissionRunner(MissionTrack track, const LocalNedFrame& frame, RandomStream stream,
-                MissionHost* host);
+                MissionHost* host, const Heightfield* terrain = nullptr);
 
   /// Advances the mission to `input.now_ns` and writes the command the vehicle should follow from
   /// now on.
@@ -111,6 +113,7 @@ class MissionRunner {
   const LocalNedFrame& frame_;
   RandomStream stream_;
   MissionHost* host_;
+  const Heightfield* terrain_;
 
   State state_ = State::kRunning;
   std::string failure_;

@@ -16,7 +16,7 @@ class MissionSession::Track final : public MissionHost {
         index_(index),
         vehicle_(binding.vehicle),
         runner_(session.mission_.tracks[index], session.sim_.world().environment().frame(),
-                binding.stream, this) {}
+                binding.stream, this, session.sim_.world().scene().terrain.heightfield.get()) {}
 
   MissionRunner& runner() { return runner_; }
   const MissionRunner& runner() const { return runner_; }

@@ -13,6 +13,7 @@
 #include "engine/core/geodetic.h"
 #include "engine/core/random.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/scene/heightfield.h"
 #include "engine/world/vehicle_command.h"
 
 namespace airis::engine {
@@ -47,6 +48,8 @@ struct StepPlan {
   Vec3 position_W = Vec3::Zero();  ///< the vehicle when the step starts, world NED (m)
   Vec3 home_W = Vec3::Zero();      ///< the vehicle's start point (takeoff and survey heights)
   const LocalNedFrame* frame = nullptr;
+  /// The ground that `above_ground_m` is measured from; null: the plane at height 0.
+  const Heightfield* terrain = nullptr;
 };
 
 /// What the scene and vehicle allow a mission, for checking its steps before the flight
@@ -55,7 +58,9 @@ struct MissionLimits {
   /// Where the vehicle may be sent, world NED (m): the scene's objects, ground and vehicle starts
   /// with a margin around them, from kMaxFlightHeight_m above the origin down to the ground.
   Eigen::AlignedBox3d region_W;
-  bool has_ground = false;       ///< a ground plane at z = 0 (nothing below it can be reached)
+  bool has_ground = false;  ///< a ground plane at z = 0 (nothing below it can be reached)
+  /// The scene's terrain (nothing below its surface can be reached); null when it has none.
+  std::shared_ptr<const Heightfield> terrain;
   double max_speed_m_s = 0.0;    ///< the vehicle's top speed (its controller's limit)
   double physics_rate_hz = 0.0;  ///< the highest rate a capture may ask for
   std::string vehicle;           ///< the track's vehicle, for messages
@@ -74,6 +79,8 @@ struct StepContext {
   bool landed = false;                    ///< its controller detected touchdown and disarmed
   Vec3 home_W = Vec3::Zero();
   const LocalNedFrame* frame = nullptr;
+  /// The ground that `above_ground_m` is measured from; null: the plane at height 0.
+  const Heightfield* terrain = nullptr;
   RandomStream* stream = nullptr;  ///< the mission's own stream
   MissionHost* host = nullptr;     ///< null when no step of the mission needs one
 };

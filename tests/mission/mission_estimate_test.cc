@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace airis::engine {
 namespace {
@@ -57,6 +58,36 @@ TEST(MissionEstimateTest, GeodeticTargetsAreFlownInTheLocalFrame) {
   // trip is good to micrometres.
   EXPECT_NEAR(EstimateTrackDuration_s(m, Vec3::Zero(), kFrame), std::hypot(100.0, 20.0) / 10.0,
               1e-6);
+}
+
+// GIVEN ground rising 1 m in 2 north WHEN steps with above_ground_m fly over it THEN the estimate
+// counts the climb from the ground to the clearance at 1 m/s, and the goto up the slope at the
+// speed its climb rate allows: 3 m/s (kPathMaxClimb_m_s) up a slope of 0.5 is 6 m/s along it, not
+// the step's 8; an orbit over the plane at height 0 is its circumference over its speed.
+TEST(MissionEstimateTest, StepsOverTheGroundFlyAtTheSpeedTheirClimbAllows) {
+  std::vector<double> heights;
+  for (int r = 0; r < 201; ++r) {
+    for (int c = 0; c < 201; ++c) heights.push_back(0.5 * 10.0 * r);  // north -1000 + 10 r
+  }
+  const Heightfield ground(Eigen::Vector2d(-1000.0, -1000.0), 10.0, 201, 201, std::move(heights));
+  MissionTrack m;
+  TakeoffStep takeoff;
+  takeoff.above_ground_m = 20.0;
+  GotoStep go;
+  go.position_ne_m = Eigen::Vector2d(500.0, 0.0);
+  go.above_ground_m = 20.0;
+  go.speed_m_s = 8.0;
+  m.steps = {Step(takeoff), Step(go)};
+  const Vec3 start_W(-500.0, 0.0, -250.0);  // on the ground
+  EXPECT_NEAR(EstimateTrackDuration_s(m, start_W, kFrame, &ground), 20.0 + 1000.0 / 6.0, 1e-6);
+  OrbitStep orbit;
+  orbit.center_ne_m = Eigen::Vector2d(0.0, 0.0);
+  orbit.above_ground_m = 20.0;
+  orbit.radius_m = 10.0;
+  orbit.speed_m_s = 2.0 * std::numbers::pi;  // 10 s a turn
+  orbit.turns = 2.0;
+  m.steps = {Step(orbit)};
+  EXPECT_NEAR(EstimateTrackDuration_s(m, Vec3::Zero(), kFrame), 20.0, 1e-9);
 }
 
 }  // namespace

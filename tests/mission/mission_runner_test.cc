@@ -370,7 +370,7 @@ TEST(MissionRunnerTest, OrbitCompletesItsTurnsFacingTheCentre) {
   while (runner.Update({t, v.state, false}, &c) == MissionRunner::State::kRunning) {
     if (runner.current_step() == 1) {
       if (orbit_start < 0) orbit_start = t;
-      const Vec3 to_center = orbit.center_ned_m - v.state.p_W;
+      const Vec3 to_center = *orbit.center_ned_m - v.state.p_W;
       EXPECT_NEAR(std::remainder(c.yaw_rad - std::atan2(to_center.y(), to_center.x()), 2 * M_PI),
                   0.0, 1e-9);
     }

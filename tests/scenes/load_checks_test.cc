@@ -109,7 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(ExampleFlight{"scenes/city.yaml", "scenes/missions/city_survey.yaml"},
                       ExampleFlight{"scenes/city.yaml", "scenes/missions/city_orbit.yaml"},
                       ExampleFlight{"scenes/forest.yaml", "scenes/missions/forest_path.yaml"},
-                      ExampleFlight{"scenes/px4_quad.yaml", "scenes/missions/px4_square.yaml"}));
+                      ExampleFlight{"scenes/px4_quad.yaml", "scenes/missions/px4_square.yaml"},
+                      ExampleFlight{"scenes/valley.yaml", "scenes/missions/valley_survey.yaml"}));
 
 }  // namespace
 }  // namespace airis::scenes

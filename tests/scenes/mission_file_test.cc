@@ -84,10 +84,9 @@ TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
 TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {
   const std::string e = ErrorOf("steps:\n  - goto: {speed_m_s: 3}\n");
   EXPECT_NE(e.find("missions/m.yaml:2:"), std::string::npos) << e;
-  EXPECT_NE(
-      e.find(
-          "give exactly one target: position_ned_m, or latitude_deg, longitude_deg and altitude_m"),
-      std::string::npos)
+  EXPECT_NE(e.find("give exactly one target: position_ned_m, position_ne_m with above_ground_m, "
+                   "or latitude_deg, longitude_deg and altitude_m (or above_ground_m)"),
+            std::string::npos)
       << e;
 }
 

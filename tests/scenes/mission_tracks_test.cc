@@ -162,7 +162,7 @@ TEST(MissionTracksTest, TheOldGeodeticKeyOfGotoNamesItsThreeKeys) {
             "docs/architecture.md, \"Names\")");
   EXPECT_EQ(ErrorOf("steps:\n  - goto: {latitude_deg: 47, altitude_m: 500}\n"),
             "missions/m.yaml:2:5: steps[0].goto.longitude_deg: missing: a geodetic target needs "
-            "all three");
+            "all three, latitude_deg, longitude_deg and a height (altitude_m, or above_ground_m)");
   const engine::Mission m = ParseMission(
       "steps:\n  - goto: {latitude_deg: 47.5, longitude_deg: 8.25, altitude_m: 520}\n", "m.yaml");
   const auto* go = m.tracks[0].steps[0].As<engine::GotoStep>();

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace airis::scenes {
@@ -254,6 +255,25 @@ TEST(YamlReaderTest, SyntaxErrorsCarryTheLocation) {
     EXPECT_GT(e.where().line, 0);
     EXPECT_NE(std::string(e.what()).find("invalid YAML"), std::string::npos);
   }
+}
+
+TEST(YamlReaderTest, AStrayCommaIsAnErrorNotEndlessDocuments) {
+  // yaml-cpp 0.7's LoadAll yields an empty document at such a ',' for ever (gigabytes): the loader
+  // must stop and point at it, at the start of a file and after a root in flow style alike.
+  const std::pair<const char*, int> cases[] = {{",", 1}, {"# c\n, a: 1\n", 1}, {"[1, 2], [3]", 7}};
+  for (const auto& [text, column] : cases) {
+    try {
+      LoadYamlString(text, "scenes/comma.yaml");
+      ADD_FAILURE() << "expected ConfigError for " << text;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.where().column, column) << text;
+      EXPECT_NE(std::string(e.what()).find("a ',' outside a flow sequence or map"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // Commas inside flow collections and plain scalars stay what they are.
+  EXPECT_EQ(LoadYamlString("a: [1, 2]\nb: x, y\n", "t.yaml")["b"].as<std::string>(), "x, y");
 }
 
 TEST(YamlReaderTest, UnreadableFileNamesThePath) {

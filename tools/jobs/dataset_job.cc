@@ -23,7 +23,8 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
     nominal_s =
         std::max(nominal_s, engine::EstimateTrackDuration_s(
                                 mission.tracks[t], job.world().vehicle(vehicles[t]).state().p_W,
-                                job.world().environment().frame()));
+                                job.world().environment().frame(),
+                                job.world().scene().terrain.heightfield.get()));
   }
   MissionFlight flight;
   flight.progress_every_ns = 100'000'000;

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/mission/steps/path_steps.h"
 #include "engine/mission/steps/step_checks.h"
+#include "engine/mission/terrain_profile.h"
 
 namespace airis::engine {
 namespace {
@@ -43,19 +45,28 @@ std::unique_ptr<ActiveStep> MakeHold(const VehicleCommand& hold, double nominal_
 }  // namespace
 
 void TakeoffStep::Validate() const {
-  RequireInRange("height_above_start_m", height_above_start_m, 0.0, kMaxFlightHeight_m);
-  RequirePositive("height_above_start_m", height_above_start_m);
+  ValidateAboveGround("height_above_start_m", height_above_start_m.has_value(), above_ground_m,
+                      std::nullopt);
+  const double height_m = height_above_start_m.value_or(kDefaultHeight_m);
+  RequireInRange("height_above_start_m", height_m, 0.0, kMaxFlightHeight_m);
+  RequirePositive("height_above_start_m", height_m);
   RequireDuration("timeout_s", timeout_s);
 }
 
+double TakeoffStep::CalcTargetZ_m(const Vec3& p_W, const Vec3& home_W,
+                                  const Heightfield* terrain) const {
+  if (above_ground_m) return -(CalcGroundHeight_m(terrain, p_W.x(), p_W.y()) + *above_ground_m);
+  return home_W.z() - height_above_start_m.value_or(kDefaultHeight_m);
+}
+
 void TakeoffStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
-  RequireInRegion(
-      "height_above_start_m", limits,
-      Vec3(plan.position_W.x(), plan.position_W.y(), plan.home_W.z() - height_above_start_m));
+  RequireInRegion(above_ground_m ? "above_ground_m" : "height_above_start_m", limits,
+                  Vec3(plan.position_W.x(), plan.position_W.y(),
+                       CalcTargetZ_m(plan.position_W, plan.home_W, plan.terrain)));
 }
 
 double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
-  const double z = plan.home_W.z() - height_above_start_m;
+  const double z = CalcTargetZ_m(plan.position_W, plan.home_W, plan.terrain);
   const double climb_s = std::abs(z - plan.position_W.z());  // at 1 m/s
   plan.position_W.z() = z;
   return climb_s;
@@ -64,7 +75,7 @@ double TakeoffStep::EstimateDuration_s(StepPlan& plan) const {
 std::unique_ptr<ActiveStep> TakeoffStep::Start(const StepContext& c, const VehicleCommand&) const {
   const Vec3& p = c.state->p_W;
   const VehicleCommand hold =
-      HoldCommand(Vec3(p.x(), p.y(), c.home_W.z() - height_above_start_m), YawOf(*c.state));
+      HoldCommand(Vec3(p.x(), p.y(), CalcTargetZ_m(p, c.home_W, c.terrain)), YawOf(*c.state));
   const Vec3 target = hold.position_W;
   return MakeHold(hold, std::abs(target.z() - p.z()), timeout_s,
                   [target](const StepContext& c, VehicleCommand*) {
@@ -74,19 +85,30 @@ std::unique_ptr<ActiveStep> TakeoffStep::Start(const StepContext& c, const Vehic
 }
 
 void GotoStep::Validate() const {
-  Require(position_ned_m.has_value() != has_geodetic(), "position_ned_m",
-          "give exactly one target: position_ned_m, or latitude_deg, longitude_deg and "
-          "altitude_m");
+  const int targets = position_ned_m.has_value() + position_ne_m.has_value() + has_geodetic();
+  Require(targets == 1, "position_ned_m",
+          "give exactly one target: position_ned_m, position_ne_m with above_ground_m, or "
+          "latitude_deg, longitude_deg and altitude_m (or above_ground_m)");
   if (position_ned_m) RequireWithinWorld("position_ned_m", *position_ned_m);
+  if (position_ne_m) {
+    RequireWithinWorld("position_ne_m", *position_ne_m);
+    Require(above_ground_m.has_value(), "position_ne_m",
+            "needs above_ground_m, the target's height above the ground (or give position_ned_m: "
+            "[north, east, down])");
+  }
   if (has_geodetic()) {
-    Require(latitude_deg.has_value(), "latitude_deg", "missing: a geodetic target needs all three");
-    Require(longitude_deg.has_value(), "longitude_deg",
-            "missing: a geodetic target needs all three");
-    Require(altitude_m.has_value(), "altitude_m", "missing: a geodetic target needs all three");
+    constexpr const char* kNeeds =
+        "missing: a geodetic target needs all three, latitude_deg, longitude_deg and a height "
+        "(altitude_m, or above_ground_m)";
+    Require(latitude_deg.has_value(), "latitude_deg", kNeeds);
+    Require(longitude_deg.has_value(), "longitude_deg", kNeeds);
+    Require(altitude_m || above_ground_m, "altitude_m", kNeeds);
     RequireInRange("latitude_deg", *latitude_deg, -90.0, 90.0);
     RequireInRange("longitude_deg", *longitude_deg, -180.0, 180.0);
-    RequireInRange("altitude_m", *altitude_m, -5000.0, 100000.0);
+    if (altitude_m) RequireInRange("altitude_m", *altitude_m, -5000.0, 100000.0);
   }
+  ValidateAboveGround(position_ned_m ? "position_ned_m's down" : "altitude_m",
+                      position_ned_m || altitude_m, above_ground_m, follow_terrain);
   RequirePositive("speed_m_s", speed_m_s);
   if (yaw_deg) RequireInRange("yaw_deg", *yaw_deg, -360.0, 360.0);
   RequirePositive("acceptance_radius_m", acceptance_radius_m);
@@ -94,25 +116,47 @@ void GotoStep::Validate() const {
 }
 
 void GotoStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
-  RequireInRegion(position_ned_m ? "position_ned_m" : "latitude_deg", limits,
-                  CalcTarget_W(*plan.frame));
+  const char* field = position_ned_m  ? "position_ned_m"
+                      : position_ne_m ? "position_ne_m"
+                                      : "latitude_deg";
+  RequireInRegion(field, limits, CalcTarget_W(*plan.frame, plan.terrain));
   RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 
-Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame) const {
+Vec3 GotoStep::CalcTarget_W(const LocalNedFrame& frame, const Heightfield* terrain) const {
   if (position_ned_m) return *position_ned_m;
-  return frame.ToNed({DegToRad(*latitude_deg), DegToRad(*longitude_deg), *altitude_m});
+  Vec3 target = Vec3::Zero();
+  if (position_ne_m) {
+    target.head<2>() = *position_ne_m;
+  } else {
+    // Over the ground, the north and east of the point at the origin's altitude (they move by
+    // about height x distance / earth radius with height: under 2 cm at 100 m and 1 km).
+    const double altitude_m_or_origin = altitude_m ? *altitude_m : frame.origin().altitude_m;
+    target = frame.ToNed({DegToRad(*latitude_deg), DegToRad(*longitude_deg), altitude_m_or_origin});
+  }
+  if (above_ground_m) {
+    target.z() = -(CalcGroundHeight_m(terrain, target.x(), target.y()) + *above_ground_m);
+  }
+  return target;
 }
 
 double GotoStep::EstimateDuration_s(StepPlan& plan) const {
-  const Vec3 to = CalcTarget_W(*plan.frame);
+  const Vec3 to = CalcTarget_W(*plan.frame, plan.terrain);
+  if (above_ground_m) {
+    return EstimateFlightOverGround_s(plan, to, *above_ground_m, follow_terrain.value_or(true),
+                                      speed_m_s);
+  }
   const double s = (to - plan.position_W).norm() / speed_m_s;
   plan.position_W = to;
   return s;
 }
 
 std::unique_ptr<ActiveStep> GotoStep::Start(const StepContext& c, const VehicleCommand&) const {
-  const Vec3 target = CalcTarget_W(*c.frame);
+  const Vec3 target = CalcTarget_W(*c.frame, c.terrain);
+  if (above_ground_m) {
+    return StartFlightOverGround(c, target, *above_ground_m, follow_terrain.value_or(true),
+                                 speed_m_s, yaw_deg, acceptance_radius_m, timeout_s);
+  }
   const Vec3 travel = target - c.state->p_W;
   double yaw = YawOf(*c.state);
   if (yaw_deg) {

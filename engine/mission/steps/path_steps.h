@@ -51,10 +51,14 @@ struct PathStep {
 struct SurveyStep {
   static constexpr std::string_view kKind = "survey";
   static constexpr bool kNeedsHost = false;
+  static constexpr double kDefaultHeight_m = 30.0;
   std::vector<Eigen::Vector2d> polygon_ne_m;  ///< corners [north, east]; two = a rectangle
-  double height_above_start_m = 30.0;         ///< above the vehicle's start point (m)
-  double spacing_m = 20.0;                    ///< distance between lines
-  double heading_deg = 0.0;                   ///< direction of the lines (deg from north)
+  /// Above the vehicle's start point (m); kDefaultHeight_m unless above_ground_m is given.
+  std::optional<double> height_above_start_m = std::nullopt;
+  std::optional<double> above_ground_m = std::nullopt;  ///< above the ground under the vehicle (m)
+  std::optional<bool> follow_terrain = std::nullopt;    ///< with above_ground_m (default true)
+  double spacing_m = 20.0;                              ///< distance between lines
+  double heading_deg = 0.0;                             ///< direction of the lines (deg from north)
   double speed_m_s = 6.0;
   double corner_radius_m = 3.0;
   double timeout_s = 0.0;
@@ -64,7 +68,13 @@ struct SurveyStep {
     v.Field("polygon_ne_m", polygon_ne_m,
             "corners [north, east] (m); two corners give the rectangle between them");
     v.Renamed("altitude_m", "height_above_start_m");
-    v.Field("height_above_start_m", height_above_start_m, "height above the start point (m)");
+    v.Field("height_above_start_m", height_above_start_m,
+            "height above the start point (m); 30 unless above_ground_m is given");
+    v.Field("above_ground_m", above_ground_m,
+            "height above the ground (m), instead of height_above_start_m");
+    v.Field("follow_terrain", follow_terrain,
+            "with above_ground_m: true (default) keeps that height over the ground along every "
+            "line, false flies level over the highest ground under the lines");
     v.Field("spacing_m", spacing_m, "distance between survey lines (m)");
     v.Field("heading_deg", heading_deg, "direction of the lines (deg from north)");
     v.Field("speed_m_s", speed_m_s, "speed along the lines (m/s)");
@@ -76,7 +86,8 @@ struct SurveyStep {
   void Validate() const;
   /// Every corner lies in the flight region, at a height in it; the speed is the vehicle's.
   void Check(const MissionLimits& limits, const StepPlan& plan) const;
-  /// The lawnmower's waypoints, at `height_above_start_m` above `home_W`.
+  /// The lawnmower's waypoints, at `height_above_start_m` above `home_W` (with above_ground_m, at
+  /// z = 0: the heights come from the ground).
   std::vector<Vec3> CalcWaypoints_W(const Vec3& home_W) const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
@@ -87,7 +98,12 @@ struct SurveyStep {
 struct OrbitStep {
   static constexpr std::string_view kKind = "orbit";
   static constexpr bool kNeedsHost = false;
-  Vec3 center_ned_m = Vec3::Zero();  ///< centre; its down coordinate is the flight altitude
+  std::optional<Vec3> center_ned_m =
+      std::nullopt;  ///< centre; its down is the flight's z (default the origin)
+  std::optional<Eigen::Vector2d> center_ne_m =
+      std::nullopt;  ///< centre [north, east], with above_ground_m
+  std::optional<double> above_ground_m = std::nullopt;  ///< above the ground under the vehicle (m)
+  std::optional<bool> follow_terrain = std::nullopt;    ///< with above_ground_m (default true)
   double radius_m = 20.0;
   double speed_m_s = 4.0;
   double turns = 1.0;
@@ -97,6 +113,12 @@ struct OrbitStep {
   template <class V>
   void Visit(V& v) {
     v.Field("center_ned_m", center_ned_m, "orbit centre [north, east, down] (m)");
+    v.Field("center_ne_m", center_ne_m, "orbit centre [north, east] (m), with above_ground_m");
+    v.Field("above_ground_m", above_ground_m,
+            "height above the ground (m), instead of center_ned_m's down");
+    v.Field("follow_terrain", follow_terrain,
+            "with above_ground_m: true (default) keeps that height over the ground round the "
+            "circle, false flies level over the highest ground under it");
     v.Field("radius_m", radius_m, "orbit radius (m)");
     v.Field("speed_m_s", speed_m_s, "speed along the circle (m/s)");
     v.Field("turns", turns, "number of turns");
@@ -108,8 +130,25 @@ struct OrbitStep {
   void Validate() const;
   /// The circle lies in the flight region, above the ground; the speed is the vehicle's.
   void Check(const MissionLimits& limits, const StepPlan& plan) const;
+  /// The centre in world NED (m); with above_ground_m its z is 0 (the heights come from the
+  /// ground).
+  Vec3 CalcCenter_W() const;
   double EstimateDuration_s(StepPlan& plan) const;
   std::unique_ptr<ActiveStep> Start(const StepContext& context, const VehicleCommand& hold) const;
 };
+
+/// Flies from where the vehicle is along the horizontal line to `target_W` at `above_ground_m`
+/// over the ground (`follow_terrain`), or level over the highest ground on the way, then down to
+/// `target_W` (goto with above_ground_m; docs/mission-format.md). Done within
+/// `acceptance_radius_m` of the target.
+std::unique_ptr<ActiveStep> StartFlightOverGround(const StepContext& context, const Vec3& target_W,
+                                                  double above_ground_m, bool follow_terrain,
+                                                  double speed_m_s, std::optional<double> yaw_deg,
+                                                  double acceptance_radius_m, double timeout_s);
+
+/// The nominal duration of StartFlightOverGround's flight from `plan.position_W` (s); moves the
+/// plan to `target_W`.
+double EstimateFlightOverGround_s(StepPlan& plan, const Vec3& target_W, double above_ground_m,
+                                  bool follow_terrain, double speed_m_s);
 
 }  // namespace airis::engine

@@ -4,6 +4,8 @@
 #include <string>
 
 #include "engine/core/config.h"
+#include "engine/core/limits.h"
+#include "engine/mission/terrain_profile.h"
 
 namespace airis::engine {
 namespace {
@@ -21,6 +23,15 @@ void RequireInRegion(std::string_view field, const MissionLimits& limits, const 
                                                " m is under the ground (NED z is down, so "
                                                "heights are negative)");
   }
+  if (limits.terrain && !below_ground_ok) {
+    const double ground_m = limits.terrain->CalcHeight_m(p_W.x(), p_W.y());
+    if (-p_W.z() < ground_m) {
+      throw InvalidField(std::string(field),
+                         "the point " + Point(p_W) + " m is under the terrain (its surface is " +
+                             FormatRounded(ground_m) +
+                             " m up there, z = " + FormatRounded(-ground_m) + "; NED z is down)");
+    }
+  }
   Vec3 p = p_W;
   // Below the ground is outside the region; where allowed, only the other bounds apply.
   if (below_ground_ok) p.z() = std::min(p.z(), limits.region_W.max().z());
@@ -32,6 +43,24 @@ void RequireInRegion(std::string_view field, const MissionLimits& limits, const 
                            " m: the scene's extent with a margin, up to " +
                            FormatNumber(kMaxFlightHeight_m) + " m above the origin)");
   }
+}
+
+void ValidateAboveGround(std::string_view height_key, bool has_height,
+                         const std::optional<double>& above_ground_m,
+                         const std::optional<bool>& follow_terrain) {
+  if (above_ground_m) {
+    Require(!has_height, "above_ground_m",
+            "give one height: " + std::string(height_key) + " or above_ground_m, not both");
+    Require(*above_ground_m >= kMinAboveGround_m, "above_ground_m",
+            "must be at least " + FormatNumber(kMinAboveGround_m) +
+                " m, the least clearance a terrain-following vehicle keeps safely "
+                "(docs/mission-format.md) (got " +
+                FormatNumber(*above_ground_m) + ")");
+    RequireInRange("above_ground_m", *above_ground_m, kMinAboveGround_m, kMaxFlightHeight_m);
+  }
+  Require(!follow_terrain || above_ground_m.has_value(), "follow_terrain",
+          "applies only with above_ground_m (a height from " + std::string(height_key) +
+              " is one fixed level)");
 }
 
 void RequireSpeed(std::string_view field, const MissionLimits& limits, double speed_m_s) {

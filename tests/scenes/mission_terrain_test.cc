@@ -1,0 +1,136 @@
+// Mission heights above the ground (`above_ground_m`, `follow_terrain`; docs/mission-format.md):
+// the mistakes refused when the file is read, and targets under the terrain refused when the
+// mission is checked against its scene, each naming the step's key.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "engine/core/config.h"
+#include "engine/core/error.h"
+#include "scenes/mission_file.h"
+#include "scenes/mission_limits.h"
+#include "scenes/scene.h"
+
+namespace airis::scenes {
+namespace {
+
+using engine::ConfigError;
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    ParseMission(text, "missions/m.yaml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(MissionHeightsTest, AStepGivesOneHeightNotBoth) {
+  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ned_m: [1, 2, -30], above_ground_m: 20}\n"),
+            "missions/m.yaml:2:41: steps[0].goto.above_ground_m: give one height: "
+            "position_ned_m's down or above_ground_m, not both");
+  EXPECT_EQ(ErrorOf("steps:\n  - survey: {polygon_ne_m: [[0, 0], [50, 50]],\n"
+                    "              height_above_start_m: 40, above_ground_m: 40}\n"),
+            "missions/m.yaml:3:41: steps[0].survey.above_ground_m: give one height: "
+            "height_above_start_m or above_ground_m, not both");
+  EXPECT_EQ(ErrorOf("steps:\n  - orbit: {center_ned_m: [0, 0, -20], above_ground_m: 20}\n"),
+            "missions/m.yaml:2:40: steps[0].orbit.above_ground_m: give one height: "
+            "center_ned_m's down or above_ground_m, not both");
+  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5, above_ground_m: 20}\n"),
+            "missions/m.yaml:2:40: steps[0].takeoff.above_ground_m: give one height: "
+            "height_above_start_m or above_ground_m, not both");
+  EXPECT_EQ(ErrorOf("steps:\n  - goto: {latitude_deg: 47, longitude_deg: 8, altitude_m: 900,\n"
+                    "            above_ground_m: 20}\n"),
+            "missions/m.yaml:3:13: steps[0].goto.above_ground_m: give one height: altitude_m or "
+            "above_ground_m, not both");
+}
+
+TEST(MissionHeightsTest, AboveGroundIsAtLeastTheMinimumClearance) {
+  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ne_m: [10, 0], above_ground_m: 2}\n"),
+            "missions/m.yaml:2:36: steps[0].goto.above_ground_m: must be at least 5 m, the least "
+            "clearance a terrain-following vehicle keeps safely (docs/mission-format.md) (got 2)");
+  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {above_ground_m: 20000}\n"),
+            "missions/m.yaml:2:15: steps[0].takeoff.above_ground_m: must be between 5 and 10000 "
+            "(got 20000)");
+}
+
+TEST(MissionHeightsTest, TheKeysThatNeedAboveGroundSayWhy) {
+  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ne_m: [10, 0]}\n"),
+            "missions/m.yaml:2:12: steps[0].goto.position_ne_m: needs above_ground_m, the "
+            "target's height above the ground (or give position_ned_m: [north, east, down])");
+  EXPECT_EQ(ErrorOf("steps:\n  - orbit: {center_ne_m: [10, 0]}\n"),
+            "missions/m.yaml:2:13: steps[0].orbit.center_ne_m: needs above_ground_m, the height "
+            "to fly at above the ground (or give center_ned_m: [north, east, down])");
+  EXPECT_EQ(ErrorOf("steps:\n  - survey: {polygon_ne_m: [[0, 0], [50, 50]], follow_terrain: "
+                    "true}\n"),
+            "missions/m.yaml:2:48: steps[0].survey.follow_terrain: applies only with "
+            "above_ground_m (a height from height_above_start_m is one fixed level)");
+  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ne_m: [10, 0], position_ned_m: [1, 2, -3],\n"
+                    "            above_ground_m: 10}\n"),
+            "missions/m.yaml:2:36: steps[0].goto.position_ned_m: give exactly one target: "
+            "position_ned_m, position_ne_m with above_ground_m, or latitude_deg, longitude_deg "
+            "and altitude_m (or above_ground_m)");
+}
+
+// Hills of up to 80 m and one drone in them.
+const Scene& Hills() {
+  static const Scene scene = LoadSceneFromString(
+      "scene: {seed: 4}\n"
+      "terrain: {extent_ne_m: [1000, 1000], resolution_m: 10, relief_m: 80}\n"
+      "vehicles:\n"
+      "  - {name: drone, preset: quad_x, start: {position_ned_m: [0, 0, -200], on_ground: "
+      "true}}\n",
+      "hills.yaml");
+  return scene;
+}
+
+std::string CheckError(const std::string& mission_text) {
+  const engine::Mission mission = ParseMission(mission_text, "missions/m.yaml");
+  const std::vector<std::size_t> first(mission.tracks.size(), 0);
+  try {
+    CheckMissionInScene(mission, Hills(), first);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// GIVEN a scene with hills WHEN a goto, a path or an orbit targets a point under the surface THEN
+// the check names the step's key, the point and the surface's height there; the same targets at
+// above_ground_m pass.
+TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
+  const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
+  // The highest sample: there the surface is relief_m up.
+  int top_r = 0, top_c = 0;
+  for (int r = 0; r < ground.rows(); ++r) {
+    for (int c = 0; c < ground.cols(); ++c) {
+      if (ground.height_m(r, c) > ground.height_m(top_r, top_c)) top_r = r, top_c = c;
+    }
+  }
+  const double n = ground.origin_ne_m().x() + top_r * ground.spacing_m();
+  const double e = ground.origin_ne_m().y() + top_c * ground.spacing_m();
+  const std::string ne = engine::FormatNumber(n) + ", " + engine::FormatNumber(e);
+  const std::string surface = engine::FormatRounded(ground.height_m(top_r, top_c));
+  ASSERT_GT(ground.height_m(top_r, top_c), 60.0);
+  EXPECT_EQ(CheckError("steps:\n  - takeoff: {above_ground_m: 10}\n  - goto: {position_ned_m: [" +
+                       ne + ", -50]}\n"),
+            "missions/m.yaml:3:12: steps[1].goto.position_ned_m: the point [" + ne +
+                ", -50] m is under the terrain (its surface is " + surface + " m up there, z = -" +
+                surface + "; NED z is down)");
+  EXPECT_NE(CheckError("steps:\n  - path: {waypoints_ned_m: [[0, 0, -300], [" + ne + ", -50]]}\n")
+                .find("steps[0].path.waypoints_ned_m[1]: the point [" + ne +
+                      ", -50] m is under the terrain"),
+            std::string::npos);
+  EXPECT_NE(CheckError("steps:\n  - orbit: {center_ned_m: [" + ne + ", -50], radius_m: 1}\n")
+                .find("steps[0].orbit.center_ned_m: the point"),
+            std::string::npos);
+  EXPECT_EQ(CheckError("steps:\n  - takeoff: {above_ground_m: 10}\n  - goto: {position_ne_m: [" +
+                       ne + "], above_ground_m: 10}\n  - orbit: {center_ne_m: [" + ne +
+                       "], above_ground_m: 20, radius_m: 30}\n  - survey: {polygon_ne_m: [[" + ne +
+                       "], [0, 0]], above_ground_m: 30}\n"),
+            "no error");
+}
+
+}  // namespace
+}  // namespace airis::scenes
