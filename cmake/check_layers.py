@@ -44,6 +44,9 @@ LAYERS = sorted(ALLOWED, key=len, reverse=True)
 PRIVATE_HEADERS = {
     "yaml-cpp/": ["scenes"],
     "assimp/": ["scenes"],
+    "gdal": ["scenes"],  # gdal.h, gdal_priv.h, ...
+    "ogr_": ["scenes"],
+    "cpl_": ["scenes"],
     "btBulletCollisionCommon.h": ["engine/physics"],
     "btBulletDynamicsCommon.h": ["tools/bench"],
     "BulletCollision/": ["engine/physics"],

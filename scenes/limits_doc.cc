@@ -55,6 +55,8 @@ std::span<const LimitDoc> Limits() {
        "`forest.area`, `forest.min_spacing_m`"},
       {"samples of the terrain heightfield", Count(kMaxTerrainSamples),
        "`terrain.extent_ne_m`, `terrain.resolution_m`"},
+      {"pixels of a DEM file read for one terrain (the window under its grid)",
+       Count(kMaxDemWindowPixels), "`terrain.dem`, `terrain.extent_ne_m`"},
       {"lines of one survey", Count(kMaxSurveyLines), "`survey.polygon_ne_m`, `survey.spacing_m`"},
       {"rays of one lidar scan (channels x columns)", Count(kMaxLidarRaysPerScan),
        "`lidar.channels`, `lidar.horizontal_resolution_deg`"},

@@ -86,6 +86,9 @@ struct Scene {
   SunPosition sun;                ///< as lighting.sun_direction_W of the static scene
   engine::StaticScene static_scene;
   bool has_ground = false;  ///< a ground plane at z = 0 (`ground.enabled`)
+  /// The `terrain` block's settings as `key=value` pairs (scenes::DescribeTerrain; empty without
+  /// terrain): the provenance an exported DEM carries.
+  std::string terrain_settings;
   std::vector<VehicleDescription> vehicles;
   std::vector<GeneratedSummary> generated;
   /// The overrides it was loaded with (SceneLoadOptions): with `files`, what made this scene.

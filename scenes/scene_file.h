@@ -75,8 +75,8 @@ struct SceneFileConfig {
             "name, seed, origin, environment, lighting (this file's wins over includes)");
     v.Field("ground", ground, "ground plane (this file's wins over includes)");
     v.Field("terrain", terrain,
-            "generated hills under everything, instead of the ground plane (docs/terrain.md; "
-            "this file's wins over includes)");
+            "hills under everything, from an elevation model file or generated, instead of the "
+            "ground plane (docs/terrain.md; this file's wins over includes)");
     v.Field("physics", physics,
             "tick rate and contact solver settings (this file's wins over includes)");
     v.Field("classes", classes, "semantic classes added to the built-in table");

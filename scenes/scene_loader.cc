@@ -85,7 +85,8 @@ class SceneAssembler {
         });
       }
       ground.enabled = false;
-      errors.Try([&] { AddTerrainBlock(*doc_.terrain, streams); });
+      errors.Try([&] { AddTerrainBlock(*doc_.terrain, streams, s.origin); });
+      s.terrain_settings = DescribeTerrain(doc_.terrain->config);
     }
     s.has_ground = ground.enabled;
     if (ground.enabled) errors.Try([&] { AddGround(ground); });
@@ -238,11 +239,16 @@ class SceneAssembler {
         engine::CollisionShape::kAuto, "ground", material);
   }
 
-  void AddTerrainBlock(const Sourced<TerrainConfig>& entry, const engine::RandomStreams& streams) {
+  void AddTerrainBlock(const Sourced<TerrainConfig>& entry, const engine::RandomStreams& streams,
+                       const engine::GeodeticPosition& origin) {
     const TerrainConfig& c = entry.config;
     const std::uint8_t cls = ClassOf(entry, "class", c.class_name);
     engine::RandomStream stream = streams.Stream("terrain");
-    engine::Heightfield field = GenerateTerrain(c, stream);
+    if (c.dem.empty() && entry.node["heights"]) {
+      entry.Fail("heights",
+                 "applies to a `dem` only (generated hills start at the origin's altitude)");
+    }
+    engine::Heightfield field = c.dem.empty() ? GenerateTerrain(c, stream) : LoadDem(entry, origin);
     // Each city stands on a terrace levelled under its area before the terrain is chunked.
     for (const auto& g : doc_.generators) {
       if (!g.config.city) continue;
@@ -274,6 +280,36 @@ class SceneAssembler {
     if (!AddTerrain(c, std::move(field), cls, builder_)) {
       entry.Fail("", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
                          " objects (instance ids are 16-bit)");
+    }
+  }
+
+  /// The heights of a `terrain` block with `dem` (docs/terrain.md, "Elevation models").
+  engine::Heightfield LoadDem(const Sourced<TerrainConfig>& entry,
+                              const engine::GeodeticPosition& origin) const {
+    const TerrainConfig& c = entry.config;
+    const auto given = [&](const char* key) { return static_cast<bool>(entry.node[key]); };
+    for (const char* key : kGeneratedTerrainKeys) {
+      if (given(key)) {
+        entry.Fail(key, std::string("is a setting of generated hills, but this terrain's heights "
+                                    "come from `dem`: remove one of the two"));
+      }
+    }
+    if (given("center_ne_m") && !given("extent_ne_m")) {
+      entry.Fail("center_ne_m",
+                 "with `dem`, a centre crops only with `extent_ne_m` (without either the terrain "
+                 "is all the DEM covers)");
+    }
+    DemSampling sampling;
+    sampling.path = ResolveRelative(entry.file->path, c.dem);
+    sampling.heights = c.heights;
+    if (given("extent_ne_m")) sampling.extent_m = c.extent_m;
+    sampling.center_m = c.center_m;
+    if (given("resolution_m")) sampling.resolution_m = c.resolution_m;
+    NoteInput(sampling.path);
+    try {
+      return LoadDemTerrain(sampling, engine::LocalNedFrame(origin));
+    } catch (const engine::InvalidField& e) {
+      entry.Fail(e.field(), e.problem());
     }
   }
 

@@ -67,7 +67,45 @@ double GradientNoise(std::uint64_t seed, double x, double y) {
   return std::sqrt(2.0) * (a + v * (b - a));
 }
 
+// Writes each field of a config as `key=value` (DescribeTerrain).
+class DescribeVisitor {
+ public:
+  explicit DescribeVisitor(bool dem) : dem_(dem) {}
+  template <class T>
+  void Field(const char* key, const T& value, const char*) {
+    // Only the keys that shaped this terrain: a DEM's or the generated hills'.
+    const std::string k = key;
+    const bool dem_key = k == "dem" || k == "heights";
+    const bool hills_key =
+        std::any_of(std::begin(kGeneratedTerrainKeys), std::end(kGeneratedTerrainKeys),
+                    [&](const char* g) { return k == g; });
+    if ((dem_key && !dem_) || (hills_key && dem_)) return;
+    Append(key, Text(value));
+  }
+  std::string text;
+
+ private:
+  void Append(const char* key, const std::string& value) {
+    text += (text.empty() ? "" : " ") + std::string(key) + "=" + value;
+  }
+  static std::string Text(double v) { return engine::FormatNumber(v); }
+  static std::string Text(int v) { return std::to_string(v); }
+  static std::string Text(const std::string& v) { return v; }
+  static std::string Text(DemHeights v) { return std::string(engine::ToString(v)); }
+  static std::string Text(const Eigen::Vector2d& v) {
+    return "[" + engine::FormatNumber(v.x()) + "," + engine::FormatNumber(v.y()) + "]";
+  }
+  bool dem_;
+};
+
 }  // namespace
+
+std::string DescribeTerrain(const TerrainConfig& config) {
+  DescribeVisitor v(!config.dem.empty());
+  TerrainConfig fields = config;  // Visit takes its fields by reference
+  fields.Visit(v);
+  return v.text;
+}
 
 void TerrainConfig::Validate() const {
   for (int i = 0; i < 2; ++i) {
@@ -80,6 +118,16 @@ void TerrainConfig::Validate() const {
   }
   engine::RequireWithinWorld("center_ne_m", center_m);
   RequirePositive("resolution_m", resolution_m);
+  // A DEM's grid depends on the file (its extent, its pixel size): LoadDemTerrain checks it.
+  if (dem.empty()) ValidateGeneratedHills();
+  RequireInRange("rock_slope_deg", rock_slope_deg, 0.0, 90.0);
+  RequireInRange("soil_above_fraction", soil_above_fraction, 0.0, 1.0);
+  RequireNonNegative("friction", friction);
+  RequireInRange("restitution", restitution, 0.0, 1.0);
+  Require(!class_name.empty(), "class", "must not be empty");
+}
+
+void TerrainConfig::ValidateGeneratedHills() const {
   const double cells_min = std::min(extent_m.x(), extent_m.y()) / resolution_m;
   Require(cells_min >= 1.0, "resolution_m",
           "must be at most the smaller extent, " +
@@ -101,11 +149,6 @@ void TerrainConfig::Validate() const {
   RequireInRange("roughness", roughness, 0.0, 1.0);
   RequireInRange("ridges", ridges, 0.0, 1.0);
   RequireInRange("valleys", valleys, 0.0, 1.0);
-  RequireInRange("rock_slope_deg", rock_slope_deg, 0.0, 90.0);
-  RequireInRange("soil_above_fraction", soil_above_fraction, 0.0, 1.0);
-  RequireNonNegative("friction", friction);
-  RequireInRange("restitution", restitution, 0.0, 1.0);
-  Require(!class_name.empty(), "class", "must not be empty");
 }
 
 engine::Heightfield GenerateTerrain(const TerrainConfig& c, engine::RandomStream& stream) {
@@ -195,7 +238,12 @@ bool AddTerrain(const TerrainConfig& c, engine::Heightfield heightfield, std::ui
                                       material("rock", Eigen::Vector3f(0.42f, 0.40f, 0.37f)),
                                       material("soil", Eigen::Vector3f(0.40f, 0.31f, 0.20f))};
   const double rock_up = std::cos(c.rock_slope_deg * M_PI / 180.0);
-  const double soil_above_m = c.soil_above_fraction * c.relief_m;
+  // Generated hills span 0 to relief_m (before terraces); a DEM its own lowest to highest sample.
+  const double soil_above_m =
+      c.dem.empty()
+          ? c.soil_above_fraction * c.relief_m
+          : heightfield.min_height_m() +
+                c.soil_above_fraction * (heightfield.max_height_m() - heightfield.min_height_m());
   const engine::TerrainTriangleClass classify = [&](const engine::Vec3& n, double height_m) {
     if (-n.z() < rock_up) return 1;
     return height_m > soil_above_m ? 2 : 0;

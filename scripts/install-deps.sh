@@ -17,6 +17,7 @@ PACKAGES=(
   libembree-dev            # ray casts for rangefinder and lidar
   libassimp-dev            # mesh files named in scenes
   libyaml-cpp-dev          # scene, vehicle and mission files
+  libgdal-dev              # terrain from elevation models (GeoTIFF and GDAL's other rasters)
   nlohmann-json3-dev       # JSON output (env --json, manifests, COCO)
   libcli11-dev             # command line
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev  # images (not all of libopencv-dev)

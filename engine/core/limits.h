@@ -44,6 +44,8 @@ inline constexpr std::size_t kMaxCityBlocks = 16'384;
 inline constexpr std::size_t kMaxForestGridCells = 4'000'000;
 /// Samples of a scene's terrain heightfield (its extent / resolution, each way, plus one).
 inline constexpr std::size_t kMaxTerrainSamples = 4'194'304;
+/// Pixels of a DEM file read for one terrain (the window under its grid; 8 bytes each in memory).
+inline constexpr std::size_t kMaxDemWindowPixels = 16'777'216;
 /// Lines of one survey step (the polygon's width across the lines / spacing_m).
 inline constexpr std::size_t kMaxSurveyLines = 10'000;
 /// Rays of one lidar scan (channels x columns).

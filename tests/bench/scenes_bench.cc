@@ -2,6 +2,8 @@
 // second"). Counters: objects placed and the static scene's heap (EstimateMemoryBytes).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "engine/core/random.h"
@@ -10,6 +12,7 @@
 #include "scenes/scene.h"
 #include "scenes/scene_stats.h"
 #include "scenes/terrain.h"
+#include "tests/scenes/dem_test_files.h"
 
 namespace airis::scenes {
 namespace {
@@ -93,6 +96,45 @@ void BM_TerrainChunks10km(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 1001 * 1001);
 }
 BENCHMARK(BM_TerrainChunks10km)->Unit(benchmark::kMillisecond);
+
+// A 1,000 x 1,000 DEM of 10 m pixels in UTM zone 32N (a 10 km tile, rolling hills), read and
+// reprojected onto the scene's NED grid at its own pixel size (about 990 x 990 samples of the
+// inscribed rectangle): the file read, two fixed-point passes of WGS84 <-> UTM per sample and the
+// bilinear sampling; with the argument 1, heights above mean sea level (the EGM96 geoid's grid
+// interpolated at every sample too). Written to the temporary folder outside the timed loop.
+void BM_LoadDem1000(benchmark::State& state) {
+  constexpr double kLat_deg = 47.3769, kLon_deg = 8.5417;
+  double x0 = kLon_deg, y0 = kLat_deg;
+  testing::TransformPoint("EPSG:4326", "EPSG:32632", &x0, &y0);
+  testing::DemSpec spec;
+  spec.width = spec.height = 1000;
+  spec.pixel = 10.0;
+  spec.x0 = x0 - 5000.0;
+  spec.y0 = y0 + 5000.0;
+  spec.height_at = [x0, y0](double x, double y) {
+    return 450.0 + 40.0 * std::sin((x - x0) / 700.0) * std::cos((y - y0) / 900.0);
+  };
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "airis-bench-dem-1000.tif").string();
+  if (!testing::WriteDem(path, spec)) {
+    state.SkipWithError("cannot write the DEM");
+    return;
+  }
+  DemSampling sampling;
+  sampling.path = path;
+  sampling.heights = state.range(0) == 1 ? DemHeights::kMsl : DemHeights::kEllipsoid;
+  const engine::LocalNedFrame frame({engine::DegToRad(kLat_deg), engine::DegToRad(kLon_deg), 408});
+  std::size_t samples = 0;
+  for (auto _ : state) {
+    const engine::Heightfield field = LoadDemTerrain(sampling, frame);
+    samples = static_cast<std::size_t>(field.rows()) * static_cast<std::size_t>(field.cols());
+    benchmark::DoNotOptimize(field.max_height_m());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(samples));
+  state.counters["samples"] = static_cast<double>(samples);
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_LoadDem1000)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // The Poisson-disc sampling alone (Bridson, r = 3 m over 36 ha, before thinning to the density).
 void BM_PoissonDisc36ha(benchmark::State& state) {

@@ -2,6 +2,7 @@
 // run from the repository root (airis_add_test's WORKING_DIRECTORY).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -85,6 +86,29 @@ TEST(ExampleScenesTest, ValleyHasHillsAForestOnThemAndATownOnATerrace) {
   EXPECT_EQ(count.at("terrain"), 25u);  // 300 x 300 cells in chunks of 64
   ASSERT_EQ(s.vehicles.size(), 1u);
   EXPECT_TRUE(s.vehicles[0].on_ground);
+}
+
+TEST(ExampleScenesTest, DemHillsStandOnTheShippedElevationModelTile) {
+  const Scene s = LoadScene("scenes/dem_hills.yaml");
+  ASSERT_NE(s.static_scene.terrain.heightfield, nullptr);
+  const engine::Heightfield& f = *s.static_scene.terrain.heightfield;
+  // 1.6 km at 10 m, centred on the origin.
+  EXPECT_EQ(f.rows(), 161);
+  EXPECT_EQ(f.cols(), 161);
+  EXPECT_DOUBLE_EQ(f.origin_ne_m().x(), -800.0);
+  // The tile's hills span 250 m (its source's relief_m); the crop holds most of that.
+  EXPECT_GT(f.max_height_m() - f.min_height_m(), 100.0);
+  EXPECT_LE(f.max_height_m() - f.min_height_m(), 250.0 + 0.1);
+  EXPECT_FALSE(s.has_ground);
+  const auto count = CountByClass(s);
+  EXPECT_GE(count.at("tree"), 1000u);
+  EXPECT_EQ(count.at("terrain"), 9u);  // 160 x 160 cells in chunks of 64
+  ASSERT_EQ(s.vehicles.size(), 1u);
+  EXPECT_TRUE(s.vehicles[0].on_ground);
+  // The tile is one of the scene's files (a dataset's manifest hashes it).
+  EXPECT_EQ(std::count_if(s.files.begin(), s.files.end(),
+                          [](const std::string& f) { return f.ends_with("hills_tile.tif"); }),
+            1);
 }
 
 TEST(ExampleScenesTest, LandingPadLoadsTheMeshAssetThroughAssimp) {

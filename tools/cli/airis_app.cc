@@ -83,6 +83,7 @@ void AddAirisCommands(CLI::App& app, int& exit_code) {
   AddDatasetCommand(app, exit_code);
   AddPx4Command(app, exit_code);
   AddCampaignCommand(app, exit_code);
+  AddTerrainCommand(app, exit_code);
   AddBenchCommand(app, exit_code);
   AddCheckArgs(app);
   auto words = std::make_shared<std::vector<std::string>>();

@@ -13,5 +13,6 @@ void AddBenchCommand(CLI::App& app, int& exit_code);
 void AddDatasetCommand(CLI::App& app, int& exit_code);
 void AddPx4Command(CLI::App& app, int& exit_code);
 void AddCampaignCommand(CLI::App& app, int& exit_code);
+void AddTerrainCommand(CLI::App& app, int& exit_code);
 
 }  // namespace airis::tools

@@ -112,6 +112,7 @@ std::string SampleFor(const std::string& option) {
       {"--latitude-deg", "47.6"},
       {"--longitude-deg", "-122.1"},
       {"--altitude-m", "120"},
+      {"--pixel-m", "20"},
       {"--date-decimal-year", "2026.5"},
       {"--realtime", "1"},
       {"--pose", "0,0,-20,0,-30"},

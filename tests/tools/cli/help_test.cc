@@ -30,7 +30,7 @@ TEST(HelpTest, AnUnknownCommandNamesTheClosestAndTheKnownOnes) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.rfind(
                 "error: unknown command 'datset' (did you mean 'dataset'?); the commands of airis: "
-                "env, scene, run, dataset, px4, campaign, bench, help\n",
+                "env, scene, run, dataset, px4, campaign, terrain, bench, help\n",
                 0),
             0u)
       << r.err;
