@@ -163,6 +163,37 @@ void CheckStl(const std::string& path, std::uintmax_t file_bytes) {
 /// `v/vt/vn`, negative ones counting back from the last element read) names a position, texture
 /// coordinate or normal that the file has. assimp 5.2.5 refuses one that does not, but leaks the
 /// meshes read until then (docs/fuzzing.md, "Findings").
+/// The rest of an OBJ `v`, `vt` or `vn` line (`line`, after its first word): numbers only, as many
+/// as the element has (v: x y z, with w or an r g b colour: 3, 4, 6 or 7; vt: 1 to 3; vn: 3).
+/// assimp 5.2.5 throws on a line it cannot count ("1.2!0.1 -1.2") and leaks the meshes read so far
+/// (docs/fuzzing.md, "Findings").
+void CheckObjNumbers(std::istringstream& line, const std::string& word, std::size_t number) {
+  std::size_t values = 0;
+  std::string value;
+  while (line >> value) {
+    const char* first = value.data() + (value[0] == '+' ? 1 : 0);
+    const char* last = value.data() + value.size();
+    double x = 0.0;
+    const auto r = std::from_chars(first, last, x);
+    if (r.ec != std::errc() || r.ptr != last) {
+      Refuse("OBJ line " + Count(number) + ": '" + word + "' holds " + engine::QuoteValue(value) +
+             " where a number belongs");
+    }
+    ++values;
+  }
+  const bool fits = word == "v"    ? values == 3 || values == 4 || values == 6 || values == 7
+                    : word == "vt" ? values >= 1 && values <= 3
+                                   : values == 3;
+  if (!fits) {
+    Refuse("OBJ line " + Count(number) + ": '" + word + "' with " + Count(values) +
+           " numbers (expected " +
+           (word == "v"    ? "3, 4, 6 or 7"
+            : word == "vt" ? "1 to 3"
+                           : "3") +
+           ")");
+  }
+}
+
 void CheckObj(const std::string& text) {
   // A NUL byte ends assimp's reading of a line early, and assimp 5.2.5 leaks what it read of a file
   // cut that way (docs/fuzzing.md, "Findings"); OBJ is text, so refuse it.
@@ -188,6 +219,7 @@ void CheckObj(const std::string& text) {
     if (!(line >> word)) continue;
     if (word == "v" || word == "vt" || word == "vn") {
       ++counts[word == "v" ? 0 : word == "vt" ? 1 : 2];
+      CheckObjNumbers(line, word, number);
       continue;
     }
     if (word != "f" && word != "l" && word != "p") continue;
