@@ -523,6 +523,31 @@ void CheckGlb(const std::string& path, std::uintmax_t file_bytes) {
 
 }  // namespace
 
+/// FBX: binary (its 21-byte magic "Kaydara FBX Binary  " and a NUL) or ASCII whose first record,
+/// after `;` comment lines, is `FBXHeaderExtension:` as every FBX writer puts it. assimp 5.2.5
+/// reads other bytes as ASCII FBX and leaks a token when its tokenizer fails (docs/fuzzing.md,
+/// "Findings").
+void CheckFbx(const std::string& path, std::uintmax_t file_bytes) {
+  static constexpr std::string_view kBinaryMagic("Kaydara FBX Binary  \0", 21);
+  static constexpr std::string_view kFirstRecord = "FBXHeaderExtension:";
+  const std::string head = ReadBytes(path, 0, std::min<std::uintmax_t>(file_bytes, 64 * 1024));
+  if (head.compare(0, kBinaryMagic.size(), kBinaryMagic) == 0) return;
+  std::size_t at = 0;
+  while (at < head.size()) {
+    if (std::isspace(static_cast<unsigned char>(head[at]))) {
+      ++at;
+    } else if (head[at] == ';') {
+      at = std::min(head.find('\n', at), head.size());
+    } else {
+      break;
+    }
+  }
+  if (head.compare(at, kFirstRecord.size(), kFirstRecord) != 0) {
+    Refuse("not an FBX file: neither the binary FBX magic nor an ASCII FBX starting with '" +
+           std::string(kFirstRecord) + "'");
+  }
+}
+
 std::span<const char* const> MeshFileExtensions() { return kMeshExtensions; }
 
 void CheckMeshFileBeforeImport(const std::string& path) {
@@ -545,6 +570,7 @@ void CheckMeshFileBeforeImport(const std::string& path) {
   if (extension == "stl") CheckStl(path, bytes);
   if (extension == "dae") CheckDae(ReadBytes(path, 0, bytes));
   if (extension == "obj") CheckObj(ReadBytes(path, 0, bytes));
+  if (extension == "fbx") CheckFbx(path, bytes);
   if (extension == "glb" || extension == "gltf") {
     // The glTF importer reads either form whatever the extension says.
     if (ReadBytes(path, 0, 4) == "glTF") {
