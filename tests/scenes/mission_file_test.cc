@@ -5,20 +5,12 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "tests/scenes/mission_error_of.h"
 
 namespace airis::scenes {
 namespace {
 
 using engine::ConfigError;
-
-std::string ErrorOf(const std::string& text) {
-  try {
-    ParseMission(text, "missions/m.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 TEST(MissionFileTest, ReadsEveryStepKindWithLines) {
   const engine::Mission m = ParseMission(R"(name: demo
@@ -57,15 +49,17 @@ steps:
 }
 
 TEST(MissionFileTest, UnknownStepSuggestsTheClosestKind) {
-  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - gotoo: {position_ned_m: "
-                    "[1, 2, 3]}\n")
-                .substr(0, 62),
-            "missions/m.yaml:3:5: steps[1]: unknown step 'gotoo' (did you m");
-  EXPECT_NE(ErrorOf("steps:\n  - gotoo: {}\n").find("did you mean 'goto'?"), std::string::npos);
+  EXPECT_EQ(
+      MissionErrorOf("steps:\n  - takeoff: {height_above_start_m: 5}\n  - gotoo: {position_ned_m: "
+                     "[1, 2, 3]}\n")
+          .substr(0, 62),
+      "missions/m.yaml:3:5: steps[1]: unknown step 'gotoo' (did you m");
+  EXPECT_NE(MissionErrorOf("steps:\n  - gotoo: {}\n").find("did you mean 'goto'?"),
+            std::string::npos);
 }
 
 TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
-  const std::string e = ErrorOf(
+  const std::string e = MissionErrorOf(
       "steps:\n  - takeoff: {height_above_start_m: 5}\n  - goto: {position_ned_m: [1, 2, 3], "
       "sped_m_s: 3}\n");
   EXPECT_NE(e.find("missions/m.yaml:3:"), std::string::npos) << e;
@@ -74,15 +68,15 @@ TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
 }
 
 TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
-  const std::string e =
-      ErrorOf("steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");
+  const std::string e = MissionErrorOf(
+      "steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");
   EXPECT_EQ(e,
             "missions/m.yaml:4:7: steps[1].takeoff.height_above_start_m: must be between 0 and "
             "10000 (got -5)");
 }
 
 TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {
-  const std::string e = ErrorOf("steps:\n  - goto: {speed_m_s: 3}\n");
+  const std::string e = MissionErrorOf("steps:\n  - goto: {speed_m_s: 3}\n");
   EXPECT_NE(e.find("missions/m.yaml:2:"), std::string::npos) << e;
   EXPECT_NE(e.find("give exactly one target: position_ned_m, position_ne_m with above_ground_m, "
                    "or latitude_deg, longitude_deg and altitude_m (or above_ground_m)"),
@@ -91,12 +85,13 @@ TEST(MissionFileTest, GotoNeedsExactlyOneTarget) {
 }
 
 TEST(MissionFileTest, StructuralMistakesAreNamed) {
-  EXPECT_NE(ErrorOf("name: x\n").find("steps: missing"), std::string::npos);
-  EXPECT_NE(ErrorOf("steps: []\n").find("at least one step"), std::string::npos);
-  EXPECT_NE(ErrorOf("steps:\n  - takeoff: {}\n    land: {}\n").find("one key naming its kind"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf("stepz: []\n").find("did you mean 'steps'?"), std::string::npos)
-      << ErrorOf("stepz: []\n");
+  EXPECT_NE(MissionErrorOf("name: x\n").find("steps: missing"), std::string::npos);
+  EXPECT_NE(MissionErrorOf("steps: []\n").find("at least one step"), std::string::npos);
+  EXPECT_NE(
+      MissionErrorOf("steps:\n  - takeoff: {}\n    land: {}\n").find("one key naming its kind"),
+      std::string::npos);
+  EXPECT_NE(MissionErrorOf("stepz: []\n").find("did you mean 'steps'?"), std::string::npos)
+      << MissionErrorOf("stepz: []\n");
 }
 
 TEST(MissionFileTest, MissingFileIsAClearError) {
@@ -109,12 +104,12 @@ TEST(MissionFileTest, MissingFileIsAClearError) {
 }
 
 TEST(MissionFileTest, FormatOneSpellingsAreErrorsNamingTheNewKey) {
-  EXPECT_NE(ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n")
+  EXPECT_NE(MissionErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n")
                 .find("missions/m.yaml:2:15: steps[0].takeoff.altitude_m: renamed to "
                       "'height_above_start_m' in format 2"),
             std::string::npos)
-      << ErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n");
-  EXPECT_NE(ErrorOf("steps:\n  - survey: {polygon_ned_m: [[0, 0, 0], [9, 9, 0]]}\n")
+      << MissionErrorOf("steps:\n  - takeoff: {altitude_m: 5}\n");
+  EXPECT_NE(MissionErrorOf("steps:\n  - survey: {polygon_ned_m: [[0, 0, 0], [9, 9, 0]]}\n")
                 .find("steps[0].survey.polygon_ned_m: renamed to 'polygon_ne_m'"),
             std::string::npos);
 }

@@ -11,66 +11,60 @@
 #include "scenes/mission_file.h"
 #include "scenes/mission_limits.h"
 #include "scenes/scene.h"
+#include "tests/scenes/mission_error_of.h"
 
 namespace airis::scenes {
 namespace {
 
 using engine::ConfigError;
 
-std::string ErrorOf(const std::string& text) {
-  try {
-    ParseMission(text, "missions/m.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(MissionHeightsTest, AStepGivesOneHeightNotBoth) {
-  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ned_m: [1, 2, -30], above_ground_m: 20}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - goto: {position_ned_m: [1, 2, -30], above_ground_m: 20}\n"),
             "missions/m.yaml:2:41: steps[0].goto.above_ground_m: give one height: "
             "position_ned_m's down or above_ground_m, not both");
-  EXPECT_EQ(ErrorOf("steps:\n  - survey: {polygon_ne_m: [[0, 0], [50, 50]],\n"
-                    "              height_above_start_m: 40, above_ground_m: 40}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - survey: {polygon_ne_m: [[0, 0], [50, 50]],\n"
+                           "              height_above_start_m: 40, above_ground_m: 40}\n"),
             "missions/m.yaml:3:41: steps[0].survey.above_ground_m: give one height: "
             "height_above_start_m or above_ground_m, not both");
-  EXPECT_EQ(ErrorOf("steps:\n  - orbit: {center_ned_m: [0, 0, -20], above_ground_m: 20}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - orbit: {center_ned_m: [0, 0, -20], above_ground_m: 20}\n"),
             "missions/m.yaml:2:40: steps[0].orbit.above_ground_m: give one height: "
             "center_ned_m's down or above_ground_m, not both");
-  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {height_above_start_m: 5, above_ground_m: 20}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - takeoff: {height_above_start_m: 5, above_ground_m: 20}\n"),
             "missions/m.yaml:2:40: steps[0].takeoff.above_ground_m: give one height: "
             "height_above_start_m or above_ground_m, not both");
-  EXPECT_EQ(ErrorOf("steps:\n  - goto: {latitude_deg: 47, longitude_deg: 8, altitude_m: 900,\n"
-                    "            above_ground_m: 20}\n"),
-            "missions/m.yaml:3:13: steps[0].goto.above_ground_m: give one height: altitude_m or "
-            "above_ground_m, not both");
+  EXPECT_EQ(
+      MissionErrorOf("steps:\n  - goto: {latitude_deg: 47, longitude_deg: 8, altitude_m: 900,\n"
+                     "            above_ground_m: 20}\n"),
+      "missions/m.yaml:3:13: steps[0].goto.above_ground_m: give one height: altitude_m or "
+      "above_ground_m, not both");
 }
 
 TEST(MissionHeightsTest, AboveGroundIsAtLeastTheMinimumClearance) {
-  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ne_m: [10, 0], above_ground_m: 2}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - goto: {position_ne_m: [10, 0], above_ground_m: 2}\n"),
             "missions/m.yaml:2:36: steps[0].goto.above_ground_m: must be at least 5 m, the least "
             "clearance a terrain-following vehicle keeps safely (docs/mission-format.md) (got 2)");
-  EXPECT_EQ(ErrorOf("steps:\n  - takeoff: {above_ground_m: 20000}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - takeoff: {above_ground_m: 20000}\n"),
             "missions/m.yaml:2:15: steps[0].takeoff.above_ground_m: must be between 5 and 10000 "
             "(got 20000)");
 }
 
 TEST(MissionHeightsTest, TheKeysThatNeedAboveGroundSayWhy) {
-  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ne_m: [10, 0]}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - goto: {position_ne_m: [10, 0]}\n"),
             "missions/m.yaml:2:12: steps[0].goto.position_ne_m: needs above_ground_m, the "
             "target's height above the ground (or give position_ned_m: [north, east, down])");
-  EXPECT_EQ(ErrorOf("steps:\n  - orbit: {center_ne_m: [10, 0]}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - orbit: {center_ne_m: [10, 0]}\n"),
             "missions/m.yaml:2:13: steps[0].orbit.center_ne_m: needs above_ground_m, the height "
             "to fly at above the ground (or give center_ned_m: [north, east, down])");
-  EXPECT_EQ(ErrorOf("steps:\n  - survey: {polygon_ne_m: [[0, 0], [50, 50]], follow_terrain: "
-                    "true}\n"),
+  EXPECT_EQ(MissionErrorOf("steps:\n  - survey: {polygon_ne_m: [[0, 0], [50, 50]], follow_terrain: "
+                           "true}\n"),
             "missions/m.yaml:2:48: steps[0].survey.follow_terrain: applies only with "
             "above_ground_m (a height from height_above_start_m is one fixed level)");
-  EXPECT_EQ(ErrorOf("steps:\n  - goto: {position_ne_m: [10, 0], position_ned_m: [1, 2, -3],\n"
-                    "            above_ground_m: 10}\n"),
-            "missions/m.yaml:2:36: steps[0].goto.position_ned_m: give exactly one target: "
-            "position_ned_m, position_ne_m with above_ground_m, or latitude_deg, longitude_deg "
-            "and altitude_m (or above_ground_m)");
+  EXPECT_EQ(
+      MissionErrorOf("steps:\n  - goto: {position_ne_m: [10, 0], position_ned_m: [1, 2, -3],\n"
+                     "            above_ground_m: 10}\n"),
+      "missions/m.yaml:2:36: steps[0].goto.position_ned_m: give exactly one target: "
+      "position_ned_m, position_ne_m with above_ground_m, or latitude_deg, longitude_deg "
+      "and altitude_m (or above_ground_m)");
 }
 
 // Hills of up to 80 m and one drone in them.
