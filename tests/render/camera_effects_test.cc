@@ -62,6 +62,22 @@ TEST(CameraEffectsTest, FlatFieldMeanAndVarianceFollowPoissonGaussianModel) {
   }
 }
 
+// The noise is Gaussian in shape, not only in its first two moments: with one DN per electron the
+// share of draws beyond 3 sigma is the normal law's 0.27% (5 binomial standard errors).
+TEST(CameraEffectsTest, NoiseTailsAreTheNormalLaws) {
+  constexpr int kN = 400000;
+  const double mean_e = 20000.0, full_well_e = 65535.0;  // 16 bits: 1 DN per electron
+  RandomStream rng(9);
+  int beyond = 0;
+  for (int i = 0; i < kN; ++i) {
+    const double z =
+        (SampleSensorDn(mean_e, full_well_e, 0.0, 16, rng) - mean_e) / std::sqrt(mean_e);
+    beyond += std::abs(z) > 3.0;
+  }
+  const double p = std::erfc(3.0 / std::sqrt(2.0));
+  EXPECT_NEAR(beyond, kN * p, 5.0 * std::sqrt(kN * p * (1.0 - p)));
+}
+
 TEST(CameraEffectsTest, SignalClipsAtFullWell) {
   RandomStream rng(1);
   for (int i = 0; i < 1000; ++i) EXPECT_EQ(SampleSensorDn(5e4, 1e4, 3.0, 10, rng), 1023);
