@@ -16,11 +16,15 @@ struct MissionHeader {
   std::string name;
   std::string vehicle;
   bool abort_on_collision = true;
+  engine::DomainRandomizationConfig randomize;
   template <class V>
   void Visit(V& v) {
     v.Field("name", name, "mission name, for logs");
     v.Field("vehicle", vehicle, "vehicle that flies `steps`; empty = the scene's first");
     v.Field("abort_on_collision", abort_on_collision, "fail the mission on any collision");
+    v.Field("randomize", randomize,
+            "domain randomization of a dataset: ranges of sun, fog, exposure and noise "
+            "(docs/dataset-format.md)");
   }
 };
 
@@ -145,6 +149,7 @@ engine::Mission ReadMission(const YAML::Node& root, const std::string& file) {
   engine::Mission mission;
   mission.name = header.name;
   mission.file = file;
+  mission.randomize = header.randomize;
   mission.locate = [root, file](const std::string& key) {
     return YamlReader(file).Where(YamlReader::FindFieldMark(root, root.Mark(), key));
   };

@@ -43,7 +43,7 @@ class SensorSpec {
 };
 
 /// The SensorSpec of config `Config` built as `SensorT`: constructed from (name, config, stream),
-/// or, for sensors that render, from (name, config, render scene).
+/// or, for sensors that render, from (name, config, render scene, stream).
 template <class Config, class SensorT>
 class SensorSpecOf final : public SensorSpec {
  public:
@@ -58,7 +58,7 @@ class SensorSpecOf final : public SensorSpec {
   std::unique_ptr<engine::Sensor> Build(const std::string& name,
                                         SensorBuildContext& context) const override {
     if constexpr (kRenders) {
-      return std::make_unique<SensorT>(name, config_, context.render_scene());
+      return std::make_unique<SensorT>(name, config_, context.render_scene(), context.stream);
     } else {
       return std::make_unique<SensorT>(name, config_, context.stream);
     }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/mission/domain_randomization.h"
 #include "engine/mission/mission_step.h"
 #include "engine/mission/steps/flight_steps.h"
 #include "engine/mission/steps/host_steps.h"
@@ -32,6 +33,8 @@ struct Mission {
   std::string name;
   std::vector<MissionTrack> tracks;  ///< at least one; vehicles differ
   std::string file;                  ///< the mission file, for messages
+  /// What a dataset of this mission varies from frame to frame (none by default).
+  DomainRandomizationConfig randomize;
   /// Where a key of the file is (`vehicle`, `steps[2].goto.speed_m_s`,
   /// `vehicles.drone1.steps[0].takeoff`): the deepest part present, for mistakes found after
   /// reading (checks against the scene). Empty for missions made in code.

@@ -282,7 +282,7 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
                                const BodyPoses& bodies) {
   const CameraIntrinsics& k = render_intrinsics_;
   const Eigen::Matrix3d R_CW = T_WC.linear().transpose();
-  const SceneLighting& light = scene.lighting();
+  const SceneLighting& light = lighting_ ? *lighting_ : scene.lighting();
   const Eigen::Vector3f to_sun_C = (R_CW * -light.sun_direction_W.normalized()).cast<float>();
   const Eigen::Vector3f up_C = (R_CW * Eigen::Vector3d(0.0, 0.0, -1.0)).cast<float>();
 

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "engine/core/camera_frame.h"
@@ -58,6 +59,10 @@ class CameraRenderer {
   bool Collect(CameraFrame& out);
   int frames_in_flight() const { return in_flight_; }
 
+  /// Lights the next frames with `lighting` instead of the scene's (a dataset's randomized sun and
+  /// fog); nullopt returns to the scene's.
+  void set_lighting(std::optional<SceneLighting> lighting) { lighting_ = std::move(lighting); }
+
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
   /// Intrinsics of the undistorted image the geometry pass renders (equal to intrinsics() without
   /// distortion).
@@ -102,6 +107,7 @@ class CameraRenderer {
   CameraIntrinsics intrinsics_;
   CameraIntrinsics render_intrinsics_;
   RenderOutputs outputs_;
+  std::optional<SceneLighting> lighting_;  // replaces the scene's when set
   bool distorted_ = false;
   GlProgram scene_program_;
   GlProgram sky_program_;

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -64,6 +66,17 @@ struct RendererInfo {
   std::string gl_version;
 };
 
+/// What a dataset varies from frame to frame (domain randomization, docs/dataset-format.md): a
+/// frame's sun and fog replace the scene's, its exposure and read noise adjust the camera's sensor
+/// effects (docs/rendering.md). Unset values keep the scene's and the camera's own.
+struct FrameConditions {
+  /// Unit vector along which sunlight travels, world NED (as SceneLighting::sun_direction_W).
+  std::optional<Eigen::Vector3d> sun_direction_W;
+  std::optional<double> fog_distance_m;  ///< distance at which fog reaches 63% (m); 0 = no fog
+  double exposure_ev_offset = 0.0;       ///< added to the camera's exposure (EV stops)
+  std::optional<double> read_noise_e;    ///< replaces the camera's read noise, turns noise on
+};
+
 /// A sensor that produces images (cameras, stereo pairs; later event cameras and optical flow):
 /// at each sample every stream gets a frame holding its simulated time, the pose of the optical
 /// frame at exposure (T_WC, optical -> world NED) and its named image planes
@@ -88,6 +101,21 @@ class ImageSensor : public Sensor {
 
   ImageSensor* image() override { return this; }
   const ImageSensor* image() const override { return this; }
+
+  /// Renders each frame under the conditions `source` returns for the frame's time (a dataset's
+  /// domain randomization); without one (the default), under the scene's and the camera's own.
+  void set_conditions(std::function<FrameConditions(TimeNs)> source) {
+    conditions_ = std::move(source);
+  }
+
+ protected:
+  /// The conditions of the frame at `time_ns`.
+  FrameConditions CalcConditions(TimeNs time_ns) const {
+    return conditions_ ? conditions_(time_ns) : FrameConditions{};
+  }
+
+ private:
+  std::function<FrameConditions(TimeNs)> conditions_;
 };
 
 }  // namespace airis::engine

@@ -35,6 +35,9 @@ void CameraConfig::Validate() const {
   // The intrinsics' own checks name fx_px, near_m, distortion.k1, ... as in this struct.
   CalcIntrinsics().Validate();
   WithPrefix("outputs.", [&] { outputs.Validate(); });
+  WithPrefix("effects.", [&] { effects.Validate(); });
+  engine::Require(outputs.rgb || !effects.any(), "effects",
+                  "apply to the colour image, and the camera renders none (outputs.rgb is false)");
   WithPrefix("mount.", [&] { mount.Validate(); });
   engine::Require(!sees_own_body || attachment == CameraAttachment::kVehicle, "sees_own_body",
                   "applies to a camera on a vehicle; a world-attached camera sees every vehicle");

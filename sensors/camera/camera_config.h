@@ -7,6 +7,7 @@
 #include "engine/core/camera_frame.h"
 #include "engine/core/camera_model.h"
 #include "engine/core/config.h"
+#include "engine/render/camera_effects.h"
 #include "engine/world/mount.h"
 
 namespace airis::sensors {
@@ -37,6 +38,7 @@ struct CameraConfig {
   double far_m = 1000.0;
   engine::BrownConradyDistortion distortion;
   engine::RenderOutputs outputs;
+  engine::CameraEffectsConfig effects;  ///< exposure, vignetting, noise of the RGB image; all off
   CameraAttachment attachment = CameraAttachment::kVehicle;
   engine::MountConfig mount;
   /// Its images show its own vehicle's body (a camera that looks at its own airframe: landing gear,
@@ -59,6 +61,9 @@ struct CameraConfig {
     v.Field("far_m", far_m, "far clip plane (m)");
     v.Field("distortion", distortion, "Brown-Conrady lens distortion (OpenCV convention)");
     v.Field("outputs", outputs, "images to produce");
+    v.Field("effects", effects,
+            "what a real camera does to the colour image: exposure, vignetting, sensor noise "
+            "(docs/rendering.md; all off by default)");
     v.Field("attachment", attachment, "mount relative to the vehicle or to the world");
     v.Field("mount", mount, "pose of the camera's sensor frame (x forward, y right, z down)");
     v.Field("sees_own_body", sees_own_body,
@@ -66,7 +71,7 @@ struct CameraConfig {
             "camera sees every vehicle)");
   }
   /// Throws InvalidField naming the field (e.g. `hfov_deg`, `distortion.k1`, `mount.pitch_deg`,
-  /// `sees_own_body` on a world-attached camera).
+  /// `sees_own_body` on a world-attached camera, `effects` on a camera without RGB).
   void Validate() const;
   /// Validate() plus rate_hz <= physics_rate_hz: a camera renders at most once per tick.
   void ValidateForPhysicsRate(double physics_rate_hz) const;

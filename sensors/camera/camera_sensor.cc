@@ -37,11 +37,13 @@ void CopyPose(const Eigen::Isometry3d& T_WC, std::span<double> out) {
 }
 
 CameraSensor::CameraSensor(std::string name, const CameraConfig& config,
-                           std::shared_ptr<const engine::RenderScene> scene)
+                           std::shared_ptr<const engine::RenderScene> scene,
+                           engine::RandomStream stream)
     : engine::ImageSensor(std::move(name), Validated(config).rate_hz),
       config_(config),
       scene_(std::move(scene)),
       renderer_(scene_->context(), config_.CalcIntrinsics(), config_.outputs),
+      effects_(config_.effects, renderer_.intrinsics(), stream.Fork("noise").NextU64()),
       stream_(MakeImageStream(this->name(), config_, renderer_.intrinsics())) {}
 
 const engine::CameraFrame& CameraSensor::latest(std::size_t index) const {
@@ -62,8 +64,11 @@ void CameraSensor::CopyLatestRow(std::span<double> out) const {
 }
 
 void CameraSensor::Render(const engine::SensorContext& context, engine::CameraFrame& out) {
+  const engine::FrameConditions conditions = CalcConditions(context.now_ns);
+  SetFrameLighting(scene_->gpu_scene().lighting(), conditions, renderer_);
   renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
                    context.now_ns, out, CalcBodyPoses(context, stream_, body_poses_W_));
+  ApplyEffects(effects_, conditions, out);
 }
 
 void CameraSensor::Sample(const engine::SensorContext& context) { Render(context, frame_); }
@@ -94,6 +99,28 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
   s.sees_own_body = config.sees_own_body;
   s.rate_hz = config.rate_hz;
   return s;
+}
+
+void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameConditions& conditions,
+                      engine::CameraRenderer& renderer) {
+  if (!conditions.sun_direction_W && !conditions.fog_distance_m) {
+    renderer.set_lighting(std::nullopt);
+    return;
+  }
+  engine::SceneLighting lighting = scene;
+  if (conditions.sun_direction_W) lighting.sun_direction_W = *conditions.sun_direction_W;
+  if (conditions.fog_distance_m) {
+    lighting.fog_distance_m = static_cast<float>(*conditions.fog_distance_m);
+  }
+  renderer.set_lighting(lighting);
+}
+
+void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameConditions& conditions,
+                  engine::CameraFrame& frame) {
+  const engine::CameraEffectsAdjustment adjustment{conditions.exposure_ev_offset,
+                                                   conditions.read_noise_e};
+  if (frame.rgba.empty() || !effects.active(adjustment)) return;
+  effects.Apply(frame.rgba, frame.time_ns, adjustment);
 }
 
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene) {

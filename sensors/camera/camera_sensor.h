@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/random.h"
+#include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
 #include "engine/render/render_scene.h"
 #include "engine/world/image_sensor.h"
@@ -18,9 +20,10 @@ namespace airis::sensors {
 class CameraSensor : public engine::ImageSensor {
  public:
   /// Validates `config` (throws InvalidField) and builds the renderer on `scene`'s context (throws
-  /// what CameraRenderer throws).
+  /// what CameraRenderer throws). `stream` seeds the sensor noise (config.effects).
   CameraSensor(std::string name, const CameraConfig& config,
-               std::shared_ptr<const engine::RenderScene> scene);
+               std::shared_ptr<const engine::RenderScene> scene,
+               engine::RandomStream stream = engine::RandomStream(0));
 
   std::span<const std::string> columns() const override;
   void CopyLatestRow(std::span<double> out) const override;
@@ -45,6 +48,7 @@ class CameraSensor : public engine::ImageSensor {
   CameraConfig config_;
   std::shared_ptr<const engine::RenderScene> scene_;
   engine::CameraRenderer renderer_;
+  engine::CameraEffects effects_;
   engine::ImageStream stream_;
   engine::CameraFrame frame_;
   std::vector<Eigen::Isometry3d> body_poses_W_;  // scratch: T_WB of every vehicle
@@ -58,6 +62,14 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
 engine::BodyPoses CalcBodyPoses(const engine::SensorContext& context,
                                 const engine::ImageStream& stream,
                                 std::vector<Eigen::Isometry3d>& T_WB);
+/// Points `renderer` at the lighting of a frame under `conditions`: `scene`'s, with the sun and fog
+/// the conditions set.
+void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameConditions& conditions,
+                      engine::CameraRenderer& renderer);
+/// Applies `effects`, adjusted by `conditions`, to `frame`'s colour image (if it has one and they
+/// change it).
+void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameConditions& conditions,
+                  engine::CameraFrame& frame);
 /// The GL strings of `scene`'s context.
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene);
 

@@ -14,11 +14,16 @@ const StereoCameraConfig& Validated(const StereoCameraConfig& config) {
 }  // namespace
 
 StereoCameraSensor::StereoCameraSensor(std::string name, const StereoCameraConfig& config,
-                                       std::shared_ptr<const engine::RenderScene> scene)
+                                       std::shared_ptr<const engine::RenderScene> scene,
+                                       engine::RandomStream stream)
     : engine::ImageSensor(std::move(name), Validated(config).camera.rate_hz),
       config_(config),
       scene_(std::move(scene)),
-      renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs) {
+      renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs),
+      effects_{engine::CameraEffects(config_.camera.effects, renderer_.intrinsics(),
+                                     stream.Fork("noise_left").NextU64()),
+               engine::CameraEffects(config_.camera.effects, renderer_.intrinsics(),
+                                     stream.Fork("noise_right").NextU64())} {
   const std::vector<std::string> names = StreamNames(this->name());
   for (std::size_t i = 0; i < 2; ++i) {
     const std::string side = i == 0 ? "left" : "right";
@@ -55,6 +60,8 @@ void StereoCameraSensor::CopyLatestRow(std::span<double> out) const {
 void StereoCameraSensor::Render(const engine::SensorContext& context, engine::CameraFrame& left,
                                 engine::CameraFrame& right) {
   // Both eyes see the same bodies: one mount, one vehicle.
+  const engine::FrameConditions conditions = CalcConditions(context.now_ns);
+  SetFrameLighting(scene_->gpu_scene().lighting(), conditions, renderer_);
   const engine::BodyPoses bodies = CalcBodyPoses(context, streams_[0], body_poses_W_);
   const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
   const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);
@@ -62,6 +69,8 @@ void StereoCameraSensor::Render(const engine::SensorContext& context, engine::Ca
   renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns, bodies);
   renderer_.Collect(left);
   renderer_.Collect(right);
+  ApplyEffects(effects_[0], conditions, left);
+  ApplyEffects(effects_[1], conditions, right);
 }
 
 void StereoCameraSensor::Sample(const engine::SensorContext& context) {

@@ -17,9 +17,10 @@ namespace airis::sensors {
 class StereoCameraSensor : public engine::ImageSensor {
  public:
   /// Validates `config` (throws InvalidField) and builds the renderer (throws what CameraRenderer
-  /// throws).
+  /// throws). `stream` seeds the sensor noise (each eye its own).
   StereoCameraSensor(std::string name, const StereoCameraConfig& config,
-                     std::shared_ptr<const engine::RenderScene> scene);
+                     std::shared_ptr<const engine::RenderScene> scene,
+                     engine::RandomStream stream = engine::RandomStream(0));
 
   std::span<const std::string> columns() const override;
   void CopyLatestRow(std::span<double> out) const override;
@@ -45,7 +46,8 @@ class StereoCameraSensor : public engine::ImageSensor {
  private:
   StereoCameraConfig config_;
   std::shared_ptr<const engine::RenderScene> scene_;
-  engine::CameraRenderer renderer_;  // one renderer, two frames in flight
+  engine::CameraRenderer renderer_;               // one renderer, two frames in flight
+  std::array<engine::CameraEffects, 2> effects_;  // left, right: the same, with their own noise
   std::array<engine::ImageStream, 2> streams_;
   // Renders both eyes at `context`'s instant into `left` and `right`.
   void Render(const engine::SensorContext& context, engine::CameraFrame& left,

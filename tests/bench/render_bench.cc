@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
 #include "tools/bench/bench_render.h"
 #include "tools/bench/synthetic_scenes.h"
@@ -158,3 +159,30 @@ BENCHMARK(BM_CollectVisibleCity)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace airis::engine
+
+// The CPU side of the camera's sensor effects (docs/rendering.md, "Sensor effects") on a 640x480
+// frame of mid-grey: range(0) selects exposure only (one table lookup per channel), vignetting and
+// exposure, or noise + vignetting + auto exposure (every effect: a draw per channel).
+void BM_CameraEffects640x480(benchmark::State& state) {
+  airis::engine::CameraEffectsConfig config;
+  config.exposure_ev = 0.5;
+  config.vignetting = state.range(0) >= 1;
+  config.noise = state.range(0) >= 2;
+  config.auto_exposure = state.range(0) >= 2;
+  const auto k = airis::engine::CameraIntrinsics::FromHorizontalFov(640, 480, 90.0);
+  const airis::engine::CameraEffects effects(config, k, 1);
+  airis::engine::Image<std::uint8_t> source;
+  source.Resize(640, 480, 4);
+  for (std::size_t i = 0; i < source.pixels.size(); ++i) source.pixels[i] = (i % 7) * 30;
+  airis::engine::Image<std::uint8_t> frame = source;
+  airis::engine::TimeNs t = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    frame.pixels = source.pixels;
+    state.ResumeTiming();
+    effects.Apply(frame, t += 50'000'000);
+    benchmark::DoNotOptimize(frame.pixels.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_CameraEffects640x480)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "sensors/camera/stereo_camera_sensor.h"
 #include "tests/render/render_test_util.h"
@@ -184,6 +185,89 @@ TEST(CameraConfigTest, ValidateNamesNestedFields) {
   EXPECT_EQ(k.fy_px, 500.0);
   EXPECT_EQ(k.cx_px, 300.0);
   EXPECT_EQ(k.cy_px, 239.5);
+}
+
+// Every output of a camera at `p_W` looking north, rendered once at the first frame.
+engine::CameraFrame RenderAll(const CameraConfig& config,
+                              std::function<engine::FrameConditions(engine::TimeNs)> source = {}) {
+  static const auto scene = BoxesScene();
+  CameraSensor camera("front", config, scene, engine::RandomStream(5));
+  if (source) camera.set_conditions(std::move(source));
+  RigidBodyState state;
+  state.p_W = {-5.0, 1.0, -3.0};
+  SensorContext context;
+  context.state = &state;
+  context.now_ns = kFirstFrameDue;
+  EXPECT_TRUE(camera.Update(context));
+  return camera.latest(0);
+}
+
+CameraConfig EveryOutput() {
+  CameraConfig c = SmallCamera();
+  c.outputs = {true, true, true, true, true};
+  return c;
+}
+
+// The sensor effects change the colour image only: depth, normals and labels (and so COCO) are
+// the same bytes with them on or off.
+TEST(CameraSensorTest, EffectsTouchColourOnly) {
+  const engine::CameraFrame plain = RenderAll(EveryOutput());
+  CameraConfig config = EveryOutput();
+  config.effects.noise = true;
+  config.effects.vignetting = true;
+  config.effects.exposure_ev = 0.5;
+  const engine::CameraFrame effected = RenderAll(config);
+  EXPECT_NE(effected.rgba.pixels, plain.rgba.pixels);
+  EXPECT_EQ(effected.depth_planar_m.pixels, plain.depth_planar_m.pixels);
+  EXPECT_EQ(effected.depth_perspective_m.pixels, plain.depth_perspective_m.pixels);
+  EXPECT_EQ(effected.class_id.pixels, plain.class_id.pixels);
+  EXPECT_EQ(effected.instance_id.pixels, plain.instance_id.pixels);
+  EXPECT_EQ(effected.normal_C.pixels, plain.normal_C.pixels);
+  // Same seed and time: the same noise.
+  EXPECT_EQ(RenderAll(config).rgba.pixels, effected.rgba.pixels);
+}
+
+// A frame's conditions replace the scene's sun: the scene's own sun given as a condition renders
+// the same bytes as none, another sun changes the colour and nothing else.
+TEST(CameraSensorTest, ConditionsReplaceTheSun) {
+  const engine::CameraFrame plain = RenderAll(EveryOutput());
+  const Eigen::Vector3d own_sun = engine::testing::MakeEmptyScene().lighting.sun_direction_W;
+  const engine::CameraFrame same = RenderAll(EveryOutput(), [&](engine::TimeNs) {
+    engine::FrameConditions c;
+    c.sun_direction_W = own_sun;
+    return c;
+  });
+  EXPECT_EQ(same.rgba.pixels, plain.rgba.pixels);
+  engine::TimeNs asked = -1;
+  const engine::CameraFrame low_sun = RenderAll(EveryOutput(), [&](engine::TimeNs t) {
+    asked = t;
+    engine::FrameConditions c;
+    c.sun_direction_W = Eigen::Vector3d(-1.0, 0.0, 0.2).normalized();
+    return c;
+  });
+  EXPECT_EQ(asked, kFirstFrameDue);
+  EXPECT_NE(low_sun.rgba.pixels, plain.rgba.pixels);
+  EXPECT_EQ(low_sun.depth_planar_m.pixels, plain.depth_planar_m.pixels);
+  EXPECT_EQ(low_sun.instance_id.pixels, plain.instance_id.pixels);
+}
+
+TEST(CameraConfigTest, EffectsNeedAColourImage) {
+  CameraConfig config = SmallCamera();  // depth and labels only
+  config.effects.vignetting = true;
+  try {
+    config.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "effects");
+  }
+  config.effects = {};
+  config.effects.full_well_e = 0.0;
+  try {
+    config.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "effects.full_well_e");
+  }
 }
 
 }  // namespace

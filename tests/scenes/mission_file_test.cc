@@ -67,6 +67,29 @@ TEST(MissionFileTest, UnknownKeyInAStepNamesTheFullPath) {
   EXPECT_NE(e.find("speed_m_s"), std::string::npos) << e;
 }
 
+TEST(MissionFileTest, ReadsARandomizeBlock) {
+  const engine::Mission m = ParseMission(
+      "randomize: {per: episode, sun_elevation_deg: [10, 60], exposure_ev: [-1, 1]}\n"
+      "steps:\n  - hover: {duration_s: 1}\n",
+      "m.yaml");
+  EXPECT_EQ(m.randomize.per, engine::RandomizeEvery::kEpisode);
+  ASSERT_TRUE(m.randomize.sun_elevation_deg);
+  EXPECT_EQ((*m.randomize.sun_elevation_deg)[1], 60.0);
+  EXPECT_FALSE(m.randomize.fog_distance_m);
+  EXPECT_FALSE(ParseMission("steps:\n  - hover: {duration_s: 1}\n", "m.yaml").randomize.any());
+}
+
+TEST(MissionFileTest, BadRandomizeRangeNamesKeyAndLine) {
+  const std::string e = MissionErrorOf(
+      "steps:\n  - hover: {duration_s: 1}\nrandomize:\n  fog_distance_m: [500, 100]\n");
+  EXPECT_NE(e.find("missions/m.yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("randomize.fog_distance_m"), std::string::npos) << e;
+  EXPECT_NE(e.find("lo <= hi"), std::string::npos) << e;
+  const std::string typo =
+      MissionErrorOf("randomize: {sun_elevaton_deg: [0, 9]}\nsteps:\n  - hover: {duration_s: 1}\n");
+  EXPECT_NE(typo.find("did you mean 'sun_elevation_deg'"), std::string::npos) << typo;
+}
+
 TEST(MissionFileTest, InvalidValueNamesKeyLineAndValue) {
   const std::string e = MissionErrorOf(
       "steps:\n  - hover: {duration_s: 2}\n  - takeoff:\n      height_above_start_m: -5\n");

@@ -161,6 +161,7 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
           {named, world.vehicle(vehicle).name(), {}, outputs, tartanair, depth_unit_m, 0, 0});
       cameras.push_back(recordings_.size() - 1);
     }
+    recorded_.push_back(image);
     image->set_sample_gate([this, cameras](engine::TimeNs now_ns) {
       bool any = false;  // every stream is numbered, whichever this run writes
       for (std::size_t c : cameras) any = TakeFrame(c, now_ns) || any;
@@ -247,6 +248,18 @@ void DatasetRecorder::PlanCaptures(const engine::Mission& mission,
         if (std::find(rates.begin(), rates.end(), rate_hz) == rates.end()) rates.push_back(rate_hz);
       }
     }
+  }
+}
+
+void DatasetRecorder::SetRandomization(const engine::DomainRandomizationConfig& config,
+                                       std::uint64_t seed) {
+  randomize_ = config;
+  randomize_seed_ = seed;
+  const engine::SceneLighting lighting = world_.scene().lighting;
+  for (engine::ImageSensor* image : recorded_) {
+    image->set_conditions([config, seed, lighting](engine::TimeNs now_ns) {
+      return engine::DrawDomain(config, seed, now_ns, lighting).ToFrameConditions();
+    });
   }
 }
 
@@ -370,6 +383,7 @@ const std::vector<engine::LogColumn>& DatasetRecorder::PoseColumns() {
 void DatasetRecorder::WritePoses(const Recording& rec, const std::filesystem::path& path) const {
   std::vector<std::string> names = {"time_ns", "time_s"};
   for (const engine::LogColumn& c : PoseColumns()) names.push_back(c.name);
+  for (const std::string& c : engine::DomainColumns(randomize_)) names.push_back(c);
   engine::CsvWriter out(path, names);
   for (const Recording::Pose& pose : rec.poses) {
     const Eigen::Vector3d p = pose.T_WC.translation();
@@ -382,6 +396,10 @@ void DatasetRecorder::WritePoses(const Recording& rec, const std::filesystem::pa
     out.Add(engine::RadToDeg(g.latitude_rad))
         .Add(engine::RadToDeg(g.longitude_rad))
         .Add(g.altitude_m);
+    // The conditions the frame was rendered under: the same draw as its render's.
+    const engine::DomainDraw draw =
+        engine::DrawDomain(randomize_, randomize_seed_, pose.time_ns, world_.scene().lighting);
+    for (double value : engine::DomainValues(randomize_, draw)) out.Add(value);
     out.EndRow();
   }
   out.Close();

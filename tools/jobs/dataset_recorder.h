@@ -9,6 +9,7 @@
 #include "engine/core/clock.h"
 #include "engine/dataset/csv_writer.h"
 #include "engine/dataset/dataset_writer.h"
+#include "engine/mission/domain_randomization.h"
 #include "engine/mission/mission.h"
 #include "engine/world/image_sensor.h"
 #include "engine/world/world.h"
@@ -66,6 +67,11 @@ class DatasetRecorder {
   /// camera cannot give exactly (its rate divided by a whole number). Call before the flight.
   void PlanCaptures(const engine::Mission& mission, const std::vector<std::size_t>& vehicles);
 
+  /// Renders every recorded camera's frames under conditions drawn from `config` (domain
+  /// randomization; engine::DrawDomain with `seed`) and writes the drawn values into each frame's
+  /// row of poses.csv (DomainColumns). Call before the flight.
+  void SetRandomization(const engine::DomainRandomizationConfig& config, std::uint64_t seed);
+
   /// Starts or stops recording of vehicle `vehicle`'s cameras and lidars (a capture step of its
   /// track); rate_hz > 0 records every n-th camera frame (as PlanCaptures checked); the lidars
   /// record every scan, whichever cameras the step names.
@@ -113,6 +119,9 @@ class DatasetRecorder {
   std::vector<std::unique_ptr<Recording>> recordings_;
   std::vector<VehicleCameras> vehicles_;  // by world vehicle index
   std::vector<std::string> redone_;
+  std::vector<engine::ImageSensor*> recorded_;  // the image sensors with a recorded stream
+  engine::DomainRandomizationConfig randomize_;
+  std::uint64_t randomize_seed_ = 0;
 };
 
 }  // namespace airis::tools

@@ -1,6 +1,7 @@
 #include "tools/jobs/dataset_session.h"
 
 #include "engine/core/error.h"
+#include "engine/core/random.h"
 #include "engine/dataset/file_io.h"
 #include "tools/jobs/output_folder.h"
 
@@ -66,6 +67,10 @@ DatasetSession::DatasetSession(SimulationJob& job, const DatasetWriteOptions& o,
   // nothing.
   recorder_ = std::make_unique<DatasetRecorder>(job.world(), RecorderOptions(job.world(), o));
   if (mission) recorder_->PlanCaptures(*mission, mission_vehicles);
+  if (mission && mission->randomize.any()) {
+    recorder_->SetRandomization(
+        mission->randomize, engine::RandomStreams(job.scene().seed).SeedFor("dataset/randomize"));
+  }
   if (!o.resume) PrepareEmptyOutputFolder(o.out, "--out");
   const nlohmann::json start =
       MakeDatasetManifest(source_, job.scene(), mission, job.world(), *recorder_, false, 0.0);

@@ -1,0 +1,118 @@
+#include "engine/mission/domain_randomization.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/frames.h"
+#include "engine/core/random.h"
+
+namespace airis::engine {
+namespace {
+
+constexpr EnumName<RandomizeEvery> kEveryNames[] = {{RandomizeEvery::kFrame, "frame"},
+                                                    {RandomizeEvery::kEpisode, "episode"}};
+
+void RequireRange(std::string_view field, const std::optional<Eigen::Vector2d>& range, double lo,
+                  double hi) {
+  if (!range) return;
+  RequireInRange(std::string(field) + "[0]", (*range)[0], lo, hi);
+  RequireInRange(std::string(field) + "[1]", (*range)[1], lo, hi);
+  Require((*range)[0] <= (*range)[1], field,
+          "a range [lo, hi] needs lo <= hi (got [" + FormatNumber((*range)[0]) + ", " +
+              FormatNumber((*range)[1]) + "])");
+}
+
+// A uniform draw from `range` on the stream of `key`.
+std::optional<double> Draw(const RandomStream& stream, const char* key,
+                           const std::optional<Eigen::Vector2d>& range) {
+  if (!range) return std::nullopt;
+  RandomStream own = stream.Fork(key);
+  return own.Uniform((*range)[0], (*range)[1]);
+}
+
+}  // namespace
+
+std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery) { return kEveryNames; }
+
+void DomainRandomizationConfig::Validate() const {
+  RequireRange("sun_elevation_deg", sun_elevation_deg, -90.0, 90.0);
+  RequireRange("sun_azimuth_deg", sun_azimuth_deg, -360.0, 360.0);
+  RequireRange("fog_distance_m", fog_distance_m, 0.0, 1e6);
+  RequireRange("exposure_ev", exposure_ev, -20.0, 20.0);
+  RequireRange("read_noise_e", read_noise_e, 0.0, 1e4);
+}
+
+bool DomainRandomizationConfig::any() const {
+  return sun_elevation_deg || sun_azimuth_deg || fog_distance_m || exposure_ev || read_noise_e;
+}
+
+Eigen::Vector3d CalcSunDirection_W(double azimuth_deg, double elevation_deg) {
+  const double az = DegToRad(azimuth_deg), el = DegToRad(elevation_deg);
+  // Toward the sun: north, east, down components; light travels the other way.
+  return -Eigen::Vector3d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), -std::sin(el));
+}
+
+void CalcSunAngles(const Eigen::Vector3d& sun_direction_W, double& azimuth_deg,
+                   double& elevation_deg) {
+  const Eigen::Vector3d to_sun = -sun_direction_W.normalized();
+  elevation_deg = RadToDeg(std::asin(std::clamp(-to_sun.z(), -1.0, 1.0)));
+  azimuth_deg = RadToDeg(std::atan2(to_sun.y(), to_sun.x()));
+}
+
+DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
+                      const SceneLighting& scene) {
+  const RandomStream base(seed);
+  const RandomStream stream = config.per == RandomizeEvery::kEpisode
+                                  ? base.Fork("episode")
+                                  : base.Fork("frame " + std::to_string(time_ns));
+  DomainDraw d;
+  if (config.sun_elevation_deg || config.sun_azimuth_deg) {
+    double azimuth_deg = 0.0, elevation_deg = 0.0;
+    CalcSunAngles(scene.sun_direction_W, azimuth_deg, elevation_deg);
+    d.sun_elevation_deg =
+        Draw(stream, "sun_elevation_deg", config.sun_elevation_deg).value_or(elevation_deg);
+    d.sun_azimuth_deg =
+        Draw(stream, "sun_azimuth_deg", config.sun_azimuth_deg).value_or(azimuth_deg);
+  }
+  d.fog_distance_m = Draw(stream, "fog_distance_m", config.fog_distance_m);
+  d.exposure_ev = Draw(stream, "exposure_ev", config.exposure_ev);
+  d.read_noise_e = Draw(stream, "read_noise_e", config.read_noise_e);
+  return d;
+}
+
+FrameConditions DomainDraw::ToFrameConditions() const {
+  FrameConditions c;
+  if (sun_elevation_deg && sun_azimuth_deg) {
+    c.sun_direction_W = CalcSunDirection_W(*sun_azimuth_deg, *sun_elevation_deg);
+  }
+  c.fog_distance_m = fog_distance_m;
+  c.exposure_ev_offset = exposure_ev.value_or(0.0);
+  c.read_noise_e = read_noise_e;
+  return c;
+}
+
+std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) {
+  std::vector<std::string> out;
+  if (config.sun_elevation_deg || config.sun_azimuth_deg) {
+    out.push_back("sun_elevation_deg");
+    out.push_back("sun_azimuth_deg");
+  }
+  if (config.fog_distance_m) out.push_back("fog_distance_m");
+  if (config.exposure_ev) out.push_back("exposure_ev");
+  if (config.read_noise_e) out.push_back("read_noise_e");
+  return out;
+}
+
+std::vector<double> DomainValues(const DomainRandomizationConfig& config, const DomainDraw& draw) {
+  std::vector<double> out;
+  if (config.sun_elevation_deg || config.sun_azimuth_deg) {
+    out.push_back(*draw.sun_elevation_deg);
+    out.push_back(*draw.sun_azimuth_deg);
+  }
+  if (config.fog_distance_m) out.push_back(*draw.fog_distance_m);
+  if (config.exposure_ev) out.push_back(*draw.exposure_ev);
+  if (config.read_noise_e) out.push_back(*draw.read_noise_e);
+  return out;
+}
+
+}  // namespace airis::engine

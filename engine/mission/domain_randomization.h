@@ -1,0 +1,86 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/core/clock.h"
+#include "engine/core/config.h"
+#include "engine/scene/static_scene.h"
+#include "engine/world/image_sensor.h"
+
+namespace airis::engine {
+
+/// How often a dataset draws new conditions.
+enum class RandomizeEvery {
+  kFrame,    ///< each render instant draws its own (every camera of that instant shares them)
+  kEpisode,  ///< one draw for the whole run
+};
+std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery);
+
+/// Domain randomization of a dataset (a mission's `randomize:` block, docs/dataset-format.md):
+/// ranges [lo, hi] from which the sun, the fog and the cameras' exposure and noise are drawn
+/// uniformly, per frame or per episode. A range that is not given leaves the scene's or the
+/// camera's own value.
+struct DomainRandomizationConfig {
+  RandomizeEvery per = RandomizeEvery::kFrame;
+  std::optional<Eigen::Vector2d> sun_elevation_deg;
+  std::optional<Eigen::Vector2d> sun_azimuth_deg;
+  std::optional<Eigen::Vector2d> fog_distance_m;
+  std::optional<Eigen::Vector2d> exposure_ev;
+  std::optional<Eigen::Vector2d> read_noise_e;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("per", per, "frame (each render instant draws anew) or episode (one draw per run)");
+    v.Field("sun_elevation_deg", sun_elevation_deg,
+            "[lo, hi]: sun elevation above the horizon (deg, -90 to 90)");
+    v.Field("sun_azimuth_deg", sun_azimuth_deg,
+            "[lo, hi]: direction toward the sun, clockwise from north (deg, -360 to 360)");
+    v.Field("fog_distance_m", fog_distance_m,
+            "[lo, hi]: distance at which fog reaches 63% (m; 0 = no fog)");
+    v.Field("exposure_ev", exposure_ev,
+            "[lo, hi]: added to every camera's exposure (EV stops; docs/rendering.md)");
+    v.Field("read_noise_e", read_noise_e,
+            "[lo, hi]: every camera's read noise (electrons); turns its sensor noise on");
+  }
+  /// Throws InvalidField naming the range (lo > hi, or outside its bounds).
+  void Validate() const;
+  /// True when some range is given.
+  bool any() const;
+};
+
+/// The values one draw gave (those of the ranges given), and the sun they place.
+struct DomainDraw {
+  std::optional<double> sun_elevation_deg;  ///< set when either sun angle is randomized
+  std::optional<double> sun_azimuth_deg;    ///< set when either sun angle is randomized
+  std::optional<double> fog_distance_m;
+  std::optional<double> exposure_ev;
+  std::optional<double> read_noise_e;
+
+  /// The conditions cameras render under.
+  FrameConditions ToFrameConditions() const;
+};
+
+/// Draws the conditions of the frame at `time_ns` (or of the episode) from `seed`: a function of
+/// the seed, the time (per frame) and the config only, so that a shard, a resumed run and any
+/// thread count draw the same. Each range draws from its own stream, so adding a range keeps the
+/// others' draws. A sun angle not randomized keeps `scene`'s.
+DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
+                      const SceneLighting& scene);
+
+/// Columns of a draw in a dataset's poses.csv, in order: those of the ranges `config` gives.
+std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config);
+/// The values of `draw` in the order of DomainColumns(config).
+std::vector<double> DomainValues(const DomainRandomizationConfig& config, const DomainDraw& draw);
+
+/// Unit vector along which sunlight travels (world NED) for a sun at `azimuth_deg` (clockwise from
+/// north) and `elevation_deg`; and back.
+Eigen::Vector3d CalcSunDirection_W(double azimuth_deg, double elevation_deg);
+void CalcSunAngles(const Eigen::Vector3d& sun_direction_W, double& azimuth_deg,
+                   double& elevation_deg);
+
+}  // namespace airis::engine

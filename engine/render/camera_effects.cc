@@ -1,0 +1,224 @@
+#include "engine/render/camera_effects.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.h"
+
+namespace airis::engine {
+namespace {
+
+// Linear [0, 1] -> sRGB (IEC 61966-2-1), and back.
+double EncodeSrgb(double c) {
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+double DecodeSrgb(double e) {
+  return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+
+// The linear value of each 8-bit sRGB code.
+const std::array<float, 256>& DecodeTable() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) t[i] = static_cast<float>(DecodeSrgb(i / 255.0));
+    return t;
+  }();
+  return table;
+}
+
+// The 8-bit sRGB code of linear value i / kEncodeSteps: fine enough that the darkest sRGB steps
+// (1/255/12.92 linear) are several entries apart.
+constexpr int kEncodeSteps = 65535;
+const std::vector<std::uint8_t>& EncodeTable() {
+  static const std::vector<std::uint8_t> table = [] {
+    std::vector<std::uint8_t> t(kEncodeSteps + 1);
+    for (int i = 0; i <= kEncodeSteps; ++i) {
+      t[i] = static_cast<std::uint8_t>(std::lround(255.0 * EncodeSrgb(double(i) / kEncodeSteps)));
+    }
+    return t;
+  }();
+  return table;
+}
+
+std::uint8_t EncodeLinear(const std::vector<std::uint8_t>& table, double c) {
+  return table[static_cast<std::size_t>(std::clamp(c, 0.0, 1.0) * kEncodeSteps + 0.5)];
+}
+
+// Metered exposure is kept within this many stops of the renderer's (a black frame does not ask
+// for an infinite gain).
+constexpr double kMaxMeteredEv = 16.0;
+// Below this mean the Poisson law is sampled exactly; above it, its normal approximation (same
+// mean and variance; skewness 1/sqrt(mean) < 0.23).
+constexpr double kExactPoissonBelow_e = 20.0;
+
+// Standard normal draws by Marsaglia and Tsang's ziggurat (J. Stat. Softw. 5(8), 2000), 128
+// layers, with the layer index taken from bits apart from the sign and magnitude (Doornik 2005's
+// remedy for the original's correlation): a few times cheaper than the polar method, and the noise
+// draws about a million per frame.
+struct Ziggurat {
+  static constexpr int kLayers = 128;
+  static constexpr double kR = 3.442619855899;  // start of the tail
+  static constexpr double kArea = 9.91256303526217e-3;
+  std::array<double, kLayers> x{};  // layer edges, x[0] the base's equivalent width
+  std::array<double, kLayers> f{};  // exp(-x^2 / 2) at the edges
+
+  Ziggurat() {
+    x[0] = kArea / std::exp(-0.5 * kR * kR);
+    x[1] = kR;
+    f[0] = 1.0;  // unused for layer 0 (the base)
+    f[1] = std::exp(-0.5 * kR * kR);
+    for (int i = 2; i < kLayers; ++i) {
+      x[i] = std::sqrt(-2.0 * std::log(kArea / x[i - 1] + f[i - 1]));
+      f[i] = std::exp(-0.5 * x[i] * x[i]);
+    }
+  }
+};
+
+const Ziggurat& ZigguratTables() {
+  static const Ziggurat z;
+  return z;
+}
+
+double FastGaussian(const Ziggurat& z, RandomStream& rng) {
+  for (;;) {
+    const std::uint64_t bits = rng.NextU64();
+    const int i = static_cast<int>(bits & (Ziggurat::kLayers - 1));
+    const double sign = (bits & 0x100) ? -1.0 : 1.0;
+    const double u = static_cast<double>(bits >> 11) * 0x1.0p-53;  // [0, 1)
+    // Layer i spans [0, x_i) over heights [f(x_{i}), f(x_{i+1})) (layer 0 the base and tail).
+    const double edge = z.x[i];
+    const double inner = i + 1 < Ziggurat::kLayers ? z.x[i + 1] : 0.0;
+    const double xv = u * edge;
+    if (xv < inner) return sign * xv;  // inside the rectangle under the curve
+    if (i == 0) {
+      // The base: a rectangle of width x_0 over [0, f(R)) and the tail beyond R.
+      if (xv < Ziggurat::kR) return sign * xv;
+      double t, y;
+      do {
+        t = -std::log(1.0 - rng.Uniform01()) / Ziggurat::kR;
+        y = -std::log(1.0 - rng.Uniform01());
+      } while (2.0 * y < t * t);
+      return sign * (Ziggurat::kR + t);
+    }
+    // The wedge between the rectangle and the curve.
+    const double y0 = z.f[i], y1 = i + 1 < Ziggurat::kLayers ? z.f[i + 1] : 1.0;
+    if (y0 + rng.Uniform01() * (y1 - y0) < std::exp(-0.5 * xv * xv)) return sign * xv;
+  }
+}
+
+}  // namespace
+
+void CameraEffectsConfig::Validate() const {
+  RequireInRange("exposure_ev", exposure_ev, -20.0, 20.0);
+  RequireInRange("auto_exposure_target", auto_exposure_target, 1e-3, 1.0);
+  RequireInRange("full_well_e", full_well_e, 1.0, 1e7);
+  RequireInRange("read_noise_e", read_noise_e, 0.0, full_well_e);
+  RequireInRange("adc_bits", adc_bits, 8, 16);
+}
+
+std::uint16_t SampleSensorDn(double mean_e, double full_well_e, double read_noise_e, int adc_bits,
+                             RandomStream& rng) {
+  double e;
+  if (mean_e < kExactPoissonBelow_e) {
+    // Knuth's method: count uniforms until their product falls below exp(-mean).
+    const double limit = std::exp(-std::max(mean_e, 0.0));
+    int n = 0;
+    for (double p = rng.Uniform01(); p > limit; p *= rng.Uniform01()) ++n;
+    e = n + read_noise_e * FastGaussian(ZigguratTables(), rng);
+  } else {
+    e = mean_e +
+        std::sqrt(mean_e + read_noise_e * read_noise_e) * FastGaussian(ZigguratTables(), rng);
+  }
+  const double max_dn = std::ldexp(1.0, adc_bits) - 1.0;
+  const double gain_dn_e = max_dn / full_well_e;
+  return static_cast<std::uint16_t>(std::clamp(e, 0.0, full_well_e) * gain_dn_e + 0.5);
+}
+
+double CalcVignetting(const CameraIntrinsics& k, double u, double v) {
+  const auto ray = k.CalcRay(Eigen::Vector2d(u, v));
+  if (!ray) return 0.0;
+  const double c = ray->z() / ray->norm();
+  return c * c * c * c;
+}
+
+CameraEffects::CameraEffects(const CameraEffectsConfig& config, const CameraIntrinsics& intrinsics,
+                             std::uint64_t seed)
+    : config_(config), seed_(seed) {
+  if (!config_.vignetting) return;
+  vignetting_.resize(static_cast<std::size_t>(intrinsics.width_px) * intrinsics.height_px);
+  for (int v = 0; v < intrinsics.height_px; ++v) {
+    for (int u = 0; u < intrinsics.width_px; ++u) {
+      vignetting_[static_cast<std::size_t>(v) * intrinsics.width_px + u] =
+          static_cast<float>(CalcVignetting(intrinsics, u, v));
+    }
+  }
+}
+
+bool CameraEffects::active(const CameraEffectsAdjustment& adjustment) const {
+  return config_.any() || adjustment.exposure_ev_offset != 0.0 || adjustment.read_noise_e;
+}
+
+double CameraEffects::MeterEv(const Image<std::uint8_t>& rgba) const {
+  // Mean Rec. 709 luminance of the signal at the reference exposure, vignetting included (the
+  // sensor meters what reaches it).
+  const auto& decode = DecodeTable();
+  double sum = 0.0;
+  const std::size_t n = static_cast<std::size_t>(rgba.width) * rgba.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* p = &rgba.pixels[4 * i];
+    const double y = 0.2126 * decode[p[0]] + 0.7152 * decode[p[1]] + 0.0722 * decode[p[2]];
+    sum += vignetting_.empty() ? y : y * vignetting_[i];
+  }
+  if (sum <= 0.0) return kMaxMeteredEv;
+  return std::clamp(std::log2(config_.auto_exposure_target * double(n) / sum), -kMaxMeteredEv,
+                    kMaxMeteredEv);
+}
+
+double CameraEffects::Apply(Image<std::uint8_t>& rgba, TimeNs time_ns,
+                            const CameraEffectsAdjustment& adjustment) const {
+  AIRIS_DEMAND(rgba.channels == 4);
+  AIRIS_DEMAND(vignetting_.empty() || vignetting_.size() == rgba.pixels.size() / 4);
+  double ev = config_.exposure_ev + adjustment.exposure_ev_offset;
+  if (config_.auto_exposure) ev += MeterEv(rgba);
+  const double scale = std::exp2(ev);
+  const bool noise = config_.noise || adjustment.read_noise_e.has_value();
+  const auto& decode = DecodeTable();
+  if (!noise && vignetting_.empty()) {
+    // Exposure alone maps each code to one code.
+    std::array<std::uint8_t, 256> map{};
+    for (int i = 0; i < 256; ++i) map[i] = EncodeLinear(EncodeTable(), decode[i] * scale);
+    for (std::size_t i = 0; i < rgba.pixels.size(); i += 4) {
+      for (int c = 0; c < 3; ++c) rgba.pixels[i + c] = map[rgba.pixels[i + c]];
+    }
+    return ev;
+  }
+  const double full_well_e = config_.full_well_e;
+  const double read_e = adjustment.read_noise_e.value_or(config_.read_noise_e);
+  const double dn_to_step = kEncodeSteps / (std::ldexp(1.0, config_.adc_bits) - 1.0);
+  const auto& encode = EncodeTable();
+  // One stream per row, from the frame's time and the row: a pixel's noise depends on nothing
+  // but the seed, the time and where it is.
+  const std::uint64_t frame_seed =
+      RandomStream(seed_ ^ static_cast<std::uint64_t>(time_ns)).NextU64();
+  for (int v = 0; v < rgba.height; ++v) {
+    RandomStream rng(frame_seed + 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(v));
+    for (int u = 0; u < rgba.width; ++u) {
+      const std::size_t i = static_cast<std::size_t>(v) * rgba.width + u;
+      const double s = vignetting_.empty() ? scale : scale * vignetting_[i];
+      std::uint8_t* p = &rgba.pixels[4 * i];
+      for (int c = 0; c < 3; ++c) {
+        const double linear = decode[p[c]] * s;
+        if (noise) {
+          const std::uint16_t dn =
+              SampleSensorDn(linear * full_well_e, full_well_e, read_e, config_.adc_bits, rng);
+          p[c] = encode[static_cast<std::size_t>(dn * dn_to_step + 0.5)];
+        } else {
+          p[c] = EncodeLinear(encode, linear);
+        }
+      }
+    }
+  }
+  return ev;
+}
+
+}  // namespace airis::engine

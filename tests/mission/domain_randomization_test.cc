@@ -1,0 +1,119 @@
+#include "engine/mission/domain_randomization.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace airis::engine {
+namespace {
+
+DomainRandomizationConfig EveryRange() {
+  DomainRandomizationConfig c;
+  c.sun_elevation_deg = Eigen::Vector2d(10.0, 60.0);
+  c.sun_azimuth_deg = Eigen::Vector2d(-90.0, 90.0);
+  c.fog_distance_m = Eigen::Vector2d(200.0, 2000.0);
+  c.exposure_ev = Eigen::Vector2d(-1.0, 1.0);
+  c.read_noise_e = Eigen::Vector2d(1.0, 10.0);
+  return c;
+}
+
+constexpr TimeNs kFrame = 50'000'000;  // 20 Hz
+
+TEST(DomainRandomizationTest, SameSeedSameDrawsInTheirRanges) {
+  const DomainRandomizationConfig c = EveryRange();
+  const SceneLighting scene;
+  std::set<double> elevations;
+  for (int k = 1; k <= 200; ++k) {
+    const DomainDraw a = DrawDomain(c, 7, k * kFrame, scene);
+    const DomainDraw b = DrawDomain(c, 7, k * kFrame, scene);
+    EXPECT_EQ(DomainValues(c, a), DomainValues(c, b));
+    EXPECT_NE(DomainValues(c, a), DomainValues(c, DrawDomain(c, 8, k * kFrame, scene)));
+    const std::vector<double> v = DomainValues(c, a);
+    ASSERT_EQ(v.size(), 5u);
+    EXPECT_GE(v[0], 10.0);
+    EXPECT_LT(v[0], 60.0);
+    EXPECT_GE(v[1], -90.0);
+    EXPECT_LT(v[1], 90.0);
+    EXPECT_GE(v[2], 200.0);
+    EXPECT_LT(v[2], 2000.0);
+    EXPECT_GE(v[3], -1.0);
+    EXPECT_LT(v[3], 1.0);
+    EXPECT_GE(v[4], 1.0);
+    EXPECT_LT(v[4], 10.0);
+    elevations.insert(v[0]);
+  }
+  EXPECT_EQ(elevations.size(), 200u);  // per frame: every frame draws anew
+}
+
+// Each range has its own stream: adding one keeps the draws of the others.
+TEST(DomainRandomizationTest, AddingARangeKeepsTheOthersDraws) {
+  DomainRandomizationConfig fog_only;
+  fog_only.fog_distance_m = Eigen::Vector2d(200.0, 2000.0);
+  const SceneLighting scene;
+  for (int k = 1; k <= 20; ++k) {
+    EXPECT_EQ(DrawDomain(fog_only, 3, k * kFrame, scene).fog_distance_m,
+              DrawDomain(EveryRange(), 3, k * kFrame, scene).fog_distance_m);
+  }
+}
+
+TEST(DomainRandomizationTest, PerEpisodeDrawsOnce) {
+  DomainRandomizationConfig c = EveryRange();
+  c.per = RandomizeEvery::kEpisode;
+  const SceneLighting scene;
+  const std::vector<double> first = DomainValues(c, DrawDomain(c, 7, kFrame, scene));
+  for (int k = 2; k <= 50; ++k)
+    EXPECT_EQ(DomainValues(c, DrawDomain(c, 7, k * kFrame, scene)), first);
+}
+
+// A sun angle not randomized keeps the scene's; the conditions carry the sun the angles place.
+TEST(DomainRandomizationTest, SunKeepsTheSceneAngleNotRandomized) {
+  SceneLighting scene;
+  scene.sun_direction_W = CalcSunDirection_W(135.0, 50.0);
+  DomainRandomizationConfig c;
+  c.sun_azimuth_deg = Eigen::Vector2d(0.0, 30.0);
+  const DomainDraw d = DrawDomain(c, 1, kFrame, scene);
+  EXPECT_NEAR(*d.sun_elevation_deg, 50.0, 1e-9);
+  const FrameConditions f = d.ToFrameConditions();
+  ASSERT_TRUE(f.sun_direction_W);
+  EXPECT_TRUE(f.sun_direction_W->isApprox(CalcSunDirection_W(*d.sun_azimuth_deg, 50.0)));
+  EXPECT_FALSE(f.fog_distance_m);
+  EXPECT_FALSE(f.read_noise_e);
+  EXPECT_EQ(f.exposure_ev_offset, 0.0);
+  EXPECT_EQ(DomainColumns(c), (std::vector<std::string>{"sun_elevation_deg", "sun_azimuth_deg"}));
+}
+
+// The sun direction in NED: a sun due east at 30 degrees lights along -east and down.
+TEST(DomainRandomizationTest, SunDirectionClosedForm) {
+  const Eigen::Vector3d d = CalcSunDirection_W(90.0, 30.0);
+  EXPECT_NEAR(d.x(), 0.0, 1e-12);
+  EXPECT_NEAR(d.y(), -std::cos(M_PI / 6), 1e-12);
+  EXPECT_NEAR(d.z(), 0.5, 1e-12);
+  double az = 0.0, el = 0.0;
+  CalcSunAngles(d, az, el);
+  EXPECT_NEAR(az, 90.0, 1e-9);
+  EXPECT_NEAR(el, 30.0, 1e-9);
+}
+
+TEST(DomainRandomizationTest, ValidateNamesTheRange) {
+  DomainRandomizationConfig c;
+  c.fog_distance_m = Eigen::Vector2d(500.0, 100.0);
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "fog_distance_m");
+  }
+  c = {};
+  c.sun_elevation_deg = Eigen::Vector2d(0.0, 95.0);
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "sun_elevation_deg[1]");
+  }
+  EXPECT_FALSE(DomainRandomizationConfig{}.any());
+}
+
+}  // namespace
+}  // namespace airis::engine

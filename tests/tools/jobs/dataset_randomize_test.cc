@@ -1,0 +1,128 @@
+// Domain randomization of a dataset (docs/dataset-format.md, "Domain randomization"): the draws
+// are the seed's, lie in their ranges, are written beside each frame and are what was rendered.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "engine/core/random.h"
+#include "engine/dataset/csv_reader.h"
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/image_encoding.h"
+#include "engine/mission/domain_randomization.h"
+#include "engine/render/camera_effects.h"
+#include "tests/fixtures/temp_dir.h"
+#include "tools/jobs/dataset_job.h"
+
+namespace airis::tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kScene =
+    "scene: {name: small, seed: 3}\n"
+    "objects:\n"
+    "  - {name: crate, primitive: box, position_ned_m: [8, 0, -1], scale: [2, 2, 2], class: car}\n"
+    "vehicles:\n"
+    "  - name: d\n"
+    "    preset: quad_x\n"
+    "    start: {position_ned_m: [0, 0, -1], on_ground: true}\n"
+    "    sensors:\n"
+    "      - name: cam\n"
+    "        camera:\n"
+    "          {rate_hz: 10, width_px: 64, height_px: 48,\n"
+    "           outputs: {rgb: true, depth_planar: true, segmentation: true}}\n";
+
+constexpr const char* kSteps =
+    "steps:\n"
+    "  - takeoff: {height_above_start_m: 2}\n"
+    "  - capture: {enabled: true}\n"
+    "  - hover: {duration_s: 0.5}\n"
+    "  - capture: {enabled: false}\n";
+
+constexpr const char* kEverything =
+    "randomize: {sun_elevation_deg: [5, 70], sun_azimuth_deg: [0, 360], fog_distance_m: [30, 300],"
+    " exposure_ev: [-1, 1], read_noise_e: [2, 20]}\n";
+
+fs::path RunWith(const std::string& name, const std::string& randomize) {
+  DatasetJobOptions o;
+  o.scene.path = airis::testing::WriteTempFile("rand_scene.yaml", kScene).string();
+  o.mission = airis::testing::WriteTempFile(name + "_mission.yaml", randomize + kSteps).string();
+  o.out = (airis::testing::TestTempDir() / name).string();
+  const DatasetJobResult r = RunDatasetJob(o);
+  EXPECT_TRUE(r.succeeded) << r.failure;
+  EXPECT_GT(r.frames, 2);
+  return o.out;
+}
+
+std::string Text(const fs::path& p) {
+  const auto bytes = engine::ReadFileBytes(p);
+  return {bytes.begin(), bytes.end()};
+}
+
+std::vector<std::uint8_t> Bytes(const fs::path& dir, const char* kind, std::int64_t frame) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "%06lld.png", static_cast<long long>(frame));
+  return engine::ReadFileBytes(dir / "cam" / kind / name);
+}
+
+TEST(DatasetRandomizeTest, SameSeedSameDrawsInRangeAndLabelsUnchanged) {
+  const fs::path plain = RunWith("rand_plain", "");
+  const fs::path a = RunWith("rand_a", kEverything);
+  const fs::path b = RunWith("rand_b", kEverything);
+  // The same seed: the same draws and the same images, noise included.
+  EXPECT_EQ(Text(a / "cam" / "poses.csv"), Text(b / "cam" / "poses.csv"));
+  EXPECT_EQ(Text(a / "checksums.csv"), Text(b / "checksums.csv"));
+
+  engine::DomainRandomizationConfig config;
+  config.sun_elevation_deg = Eigen::Vector2d(5, 70);
+  config.sun_azimuth_deg = Eigen::Vector2d(0, 360);
+  config.fog_distance_m = Eigen::Vector2d(30, 300);
+  config.exposure_ev = Eigen::Vector2d(-1, 1);
+  config.read_noise_e = Eigen::Vector2d(2, 20);
+  const std::uint64_t seed = engine::RandomStreams(3).SeedFor("dataset/randomize");
+  const engine::CsvText csv = engine::ReadCsvText(a / "cam" / "poses.csv");
+  const std::vector<std::string> columns = engine::DomainColumns(config);
+  ASSERT_GT(csv.rows.size(), 2u);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const engine::TimeNs t = csv.Integer(r, csv.Column("time_ns"));
+    // Both sun angles are drawn, so the scene's own sun does not enter.
+    const std::vector<double> want =
+        engine::DomainValues(config, engine::DrawDomain(config, seed, t, engine::SceneLighting{}));
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const double got = csv.Number(r, csv.Column(columns[c]));
+      EXPECT_NEAR(got, want[c], 1e-9 * (1.0 + std::abs(want[c]))) << columns[c] << " row " << r;
+    }
+    EXPECT_GE(csv.Number(r, csv.Column("fog_distance_m")), 30.0);
+    EXPECT_LE(csv.Number(r, csv.Column("fog_distance_m")), 300.0);
+    const std::int64_t frame = csv.Integer(r, csv.Column("frame"));
+    // Colour changes; depth and labels are the same bytes as without randomization.
+    EXPECT_NE(Bytes(a, "rgb", frame), Bytes(plain, "rgb", frame));
+    EXPECT_EQ(Bytes(a, "depth", frame), Bytes(plain, "depth", frame));
+    EXPECT_EQ(Bytes(a, "seg_class", frame), Bytes(plain, "seg_class", frame));
+    EXPECT_EQ(Bytes(a, "seg_instance", frame), Bytes(plain, "seg_instance", frame));
+  }
+  EXPECT_EQ(Text(a / "cam" / "coco_instances.json"), Text(plain / "cam" / "coco_instances.json"));
+  EXPECT_EQ(Text(plain / "cam" / "poses.csv").find("exposure_ev"), std::string::npos);
+}
+
+// The exposure written beside a frame is the one it was rendered with: the plain frame exposed
+// by that many stops is the randomized frame, byte for byte.
+TEST(DatasetRandomizeTest, WrittenExposureIsTheRenderedOne) {
+  const fs::path plain = RunWith("rand_plain_ev", "");
+  const fs::path ev = RunWith("rand_ev", "randomize: {exposure_ev: [-2, 2]}\n");
+  const engine::CsvText csv = engine::ReadCsvText(ev / "cam" / "poses.csv");
+  ASSERT_GT(csv.rows.size(), 2u);
+  const engine::CameraIntrinsics k = engine::CameraIntrinsics::FromHorizontalFov(64, 48, 90.0);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const std::int64_t frame = csv.Integer(r, csv.Column("frame"));
+    engine::CameraEffectsConfig exposure;
+    exposure.exposure_ev = csv.Number(r, csv.Column("exposure_ev"));
+    engine::Image<std::uint8_t> image = engine::DecodeRgbPng(Bytes(plain, "rgb", frame));
+    engine::CameraEffects(exposure, k, 0).Apply(image, 0);
+    EXPECT_EQ(engine::EncodeRgbPng(image), Bytes(ev, "rgb", frame)) << "frame " << frame;
+  }
+}
+
+}  // namespace
+}  // namespace airis::tools
