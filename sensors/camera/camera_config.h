@@ -7,6 +7,7 @@
 #include "engine/core/camera_frame.h"
 #include "engine/core/camera_model.h"
 #include "engine/core/config.h"
+#include "engine/core/instance_image_format.h"
 #include "engine/world/mount.h"
 
 namespace airis::sensors {
@@ -37,6 +38,8 @@ struct CameraConfig {
   double far_m = 1000.0;
   engine::BrownConradyDistortion distortion;
   engine::RenderOutputs outputs;
+  /// How a dataset stores its instance ids (seg_instance/NNNNNN.png).
+  engine::InstanceImageFormat instance_format = engine::InstanceImageFormat::kRgb24;
   CameraAttachment attachment = CameraAttachment::kVehicle;
   engine::MountConfig mount;
   /// Its images show its own vehicle's body (a camera that looks at its own airframe: landing gear,
@@ -59,6 +62,9 @@ struct CameraConfig {
     v.Field("far_m", far_m, "far clip plane (m)");
     v.Field("distortion", distortion, "Brown-Conrady lens distortion (OpenCV convention)");
     v.Field("outputs", outputs, "images to produce");
+    v.Field("instance_format", instance_format,
+            "dataset instance images: rgb24 (8-bit RGB, id = R + 256 G + 65536 B) or gray16 "
+            "(16-bit grey; scenes of at most 65,535 objects and vehicles)");
     v.Field("attachment", attachment, "mount relative to the vehicle or to the world");
     v.Field("mount", mount, "pose of the camera's sensor frame (x forward, y right, z down)");
     v.Field("sees_own_body", sees_own_body,
@@ -70,6 +76,9 @@ struct CameraConfig {
   void Validate() const;
   /// Validate() plus rate_hz <= physics_rate_hz: a camera renders at most once per tick.
   void ValidateForPhysicsRate(double physics_rate_hz) const;
+  /// Throws InvalidField naming `instance_format` when its images cannot hold the ids of a scene of
+  /// `instances` objects and vehicles.
+  void ValidateForInstances(std::size_t instances) const;
 
   /// The intrinsics this config describes (no validation).
   engine::CameraIntrinsics CalcIntrinsics() const;
@@ -91,6 +100,8 @@ struct StereoCameraConfig {
   void Validate() const;
   /// Validate() plus camera.rate_hz <= physics_rate_hz.
   void ValidateForPhysicsRate(double physics_rate_hz) const;
+  /// As CameraConfig's, naming `camera.instance_format`.
+  void ValidateForInstances(std::size_t instances) const;
 };
 
 }  // namespace airis::sensors
