@@ -15,6 +15,7 @@
 
 #include "engine/core/config.h"
 #include "engine/core/limits.h"
+#include "scenes/mesh_file_check_dae.h"
 #include "scenes/mesh_file_check_ply.h"
 #include "scenes/mesh_loader.h"
 
@@ -259,109 +260,6 @@ void CheckObj(const std::string& text) {
   }
 }
 
-/// A COLLADA index list (`<p>`, `<vcount>`, `<h>`, `<v>`; its element's name ends at `name_end`)
-/// holds whole numbers and white space only (the schema's ListOfUInts; skin
-/// weights' `<v>` may hold -1), each below the vertex limit. assimp 5.2.5 reads "0OOO 1 2" as a
-/// list that never ends and allocates gigabytes (docs/fuzzing.md, "Findings").
-void CheckDaeIndexList(const std::string& text, const std::string& tag, std::size_t name_end,
-                       std::size_t index) {
-  const std::size_t close = text.find('>', name_end);
-  if (close == std::string::npos) Refuse("COLLADA <" + tag + "> " + Count(index) + " does not end");
-  if (text[close - 1] == '/') return;
-  const std::size_t end = std::min(text.find('<', close), text.size());
-  for (std::size_t k = close + 1; k < end;) {
-    const unsigned char c = static_cast<unsigned char>(text[k]);
-    if (std::isspace(c)) {
-      ++k;
-      continue;
-    }
-    const std::size_t digits = k + (tag == "v" && c == '-' ? 1 : 0);
-    std::uint64_t value = 0;
-    const auto r = std::from_chars(text.data() + digits, text.data() + end, value);
-    const bool ends =
-        r.ptr == text.data() + end || std::isspace(static_cast<unsigned char>(*r.ptr));
-    if (r.ec != std::errc() || !ends || value >= 3 * kMaxMeshVertices) {
-      std::size_t word_end = k;
-      while (word_end < end && !std::isspace(static_cast<unsigned char>(text[word_end]))) {
-        ++word_end;
-      }
-      Refuse("COLLADA <" + tag + "> " + Count(index) + " holds " +
-             engine::QuoteValue(text.substr(k, word_end - k)) +
-             " where an index (a whole number below " + Count(3 * kMaxMeshVertices) + ") belongs");
-    }
-    k = static_cast<std::size_t>(r.ptr - text.data());
-  }
-}
-
-/// COLLADA (1.4/1.5): every value array (`<float_array>`, `<int_array>`, `<Name_array>`, ...) has
-/// the `count` attribute the schema requires, and holds that many values. assimp 5.2.5 dereferences
-/// a null pointer reading an array without one (docs/fuzzing.md, "Findings"). Index lists are
-/// checked by CheckDaeIndexList.
-void CheckDae(const std::string& text) {
-  static const std::string kArrays[] = {"float_array",  "int_array",  "Name_array", "IDREF_array",
-                                        "SIDREF_array", "bool_array", "token_array"};
-  // The index lists of primitives (<p>, <vcount>, <h>) and of skin weights (<v>).
-  static const std::string kIndexLists[] = {"p", "vcount", "h", "v"};
-  std::size_t index = 0;
-  std::size_t lists = 0;
-  for (std::size_t open = text.find('<'); open != std::string::npos;
-       open = text.find('<', open + 1)) {
-    std::size_t name_end = open + 1;
-    while (name_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[name_end])) ||
-                                      text[name_end] == '_' || text[name_end] == ':')) {
-      ++name_end;
-    }
-    const std::string tag = text.substr(open + 1, name_end - open - 1);
-    if (std::find(std::begin(kIndexLists), std::end(kIndexLists), tag) != std::end(kIndexLists)) {
-      CheckDaeIndexList(text, tag, name_end, lists++);
-      continue;
-    }
-    if (std::find(std::begin(kArrays), std::end(kArrays), tag) == std::end(kArrays)) continue;
-    const std::string what = "COLLADA <" + tag + "> " + Count(index++);
-    const std::size_t close = text.find('>', name_end);
-    if (close == std::string::npos) Refuse(what + " does not end");
-    // count="N" among the attributes (spaces around '=' allowed, either quote).
-    std::optional<std::uint64_t> declared;
-    const std::string_view attributes(text.data() + name_end, close - name_end);
-    for (std::size_t at = attributes.find("count"); at != std::string_view::npos;
-         at = attributes.find("count", at + 1)) {
-      if (at == 0 || !std::isspace(static_cast<unsigned char>(attributes[at - 1]))) continue;
-      std::size_t k = at + 5;
-      auto skip_spaces = [&] {
-        while (k < attributes.size() && std::isspace(static_cast<unsigned char>(attributes[k])))
-          ++k;
-      };
-      skip_spaces();
-      if (k >= attributes.size() || attributes[k] != '=') continue;
-      ++k;
-      skip_spaces();
-      if (k >= attributes.size() || (attributes[k] != '"' && attributes[k] != '\'')) continue;
-      const char quote = attributes[k++];
-      const char* end = attributes.data() + attributes.size();
-      std::uint64_t n = 0;
-      const auto r = std::from_chars(attributes.data() + k, end, n);
-      if (r.ec == std::errc() && r.ptr < end && *r.ptr == quote) declared = n;
-      break;
-    }
-    if (!declared) Refuse(what + " without a whole-number 'count' attribute");
-    RequireCount("values in one COLLADA array", *declared, 3 * kMaxMeshVertices);
-    std::uint64_t values = 0;
-    if (text[close - 1] != '/') {
-      const std::size_t end = std::min(text.find('<', close), text.size());
-      bool in_value = false;
-      for (std::size_t k = close + 1; k < end; ++k) {
-        const bool space = std::isspace(static_cast<unsigned char>(text[k])) != 0;
-        if (!space && !in_value) ++values;
-        in_value = !space;
-      }
-    }
-    if (values != *declared) {
-      Refuse(what + " declares count=" + Count(*declared) + " but holds " + Count(values) +
-             " values");
-    }
-  }
-}
-
 /// Bytes of one element of a glTF accessor (glTF 2.0, 3.6.2).
 std::uint64_t AccessorElementBytes(const nlohmann::json& accessor) {
   static const std::pair<const char*, std::uint64_t> kComponents[] = {
@@ -568,7 +466,7 @@ void CheckMeshFileBeforeImport(const std::string& path) {
   }
   if (extension == "ply") CheckPlyFile(path, bytes);
   if (extension == "stl") CheckStl(path, bytes);
-  if (extension == "dae") CheckDae(ReadBytes(path, 0, bytes));
+  if (extension == "dae") CheckDaeText(ReadBytes(path, 0, bytes));
   if (extension == "obj") CheckObj(ReadBytes(path, 0, bytes));
   if (extension == "fbx") CheckFbx(path, bytes);
   if (extension == "glb" || extension == "gltf") {

@@ -1,20 +1,35 @@
 #!/usr/bin/env bash
-# Runs one libFuzzer target for a bounded time and fails on any finding (a crash, a sanitizer report,
-# an uncaught exception, a leak, an input slower than 25 s or one that needs more than 2 GB):
+# Runs one libFuzzer target for a bounded budget and fails on any finding (a crash, a sanitizer
+# report, an uncaught exception, a leak, an input slower than 25 s or one that needs more than 2 GB):
 #
-#   tests/fuzz/run_fuzzer.sh FUZZER WORK_DIR SECONDS CORPUS [MORE_CORPORA...] [-- LIBFUZZER_FLAGS...]
+#   tests/fuzz/run_fuzzer.sh FUZZER WORK_DIR BUDGET CORPUS [MORE_CORPORA...] [-- LIBFUZZER_FLAGS...]
 #
-# New inputs that reach new code go to WORK_DIR/corpus (never into the repository's corpora, which
-# are read only); a finding is written to WORK_DIR/findings/ and its path printed. CTest runs it as
-# Fuzz.NAME (tests/fuzz/CMakeLists.txt); docs/fuzzing.md shows a longer run.
+# BUDGET is either SECONDS (a run by hand that explores; WORK_DIR/corpus carries over to the next
+# run) or runs=N: N executions from the seeds alone (WORK_DIR/corpus emptied first), which with a
+# fixed -seed repeat the same inputs on any machine, at any speed, from any folder: what CTest runs
+# (tests/fuzz/CMakeLists.txt), so a CI result is the same wherever it runs. For that, a runs=N budget
+# turns off what makes libFuzzer's choices depend on the clock or on addresses: re-reading the
+# output folder every second (-reload=0), and the operands of comparisons as mutation material
+# (-use_cmp=0: pointers compared in the target differ from run to run with address randomization
+# and the size of the environment). Longer runs by SECONDS keep both.
+#
+# The seeds (every file under the CORPUS folders) reach libFuzzer as one list in byte order of their
+# paths, not by reading the folders, whose order differs between file systems. New inputs that reach
+# new code go to WORK_DIR/corpus (never into the repository's corpora, which are read only); a
+# finding is written to WORK_DIR/findings/ and its path printed. docs/fuzzing.md shows a longer run.
 set -euo pipefail
-fuzzer=$1 work=$2 seconds=$3
+fuzzer=$1 work=$2 budget=$3
 shift 3
 corpora=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do corpora+=("$1"); shift; done
 [ $# -gt 0 ] && shift  # the --
+case $budget in
+  runs=*) limit=(-runs="${budget#runs=}" -reload=0 -use_cmp=0); rm -rf "$work/corpus" ;;
+  *) limit=(-max_total_time="$budget") ;;
+esac
 mkdir -p "$work/corpus" "$work/findings"
+find "${corpora[@]}" -type f | LC_ALL=C sort | paste -sd, > "$work/seeds"
 export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-exec "$fuzzer" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2048 -max_len=65536 \
-  -print_final_stats=1 -artifact_prefix="$work/findings/" "$@" "$work/corpus" "${corpora[@]}"
+exec "$fuzzer" "${limit[@]}" -seed_inputs=@"$work/seeds" -timeout=25 -rss_limit_mb=2048 \
+  -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/findings/" "$@" "$work/corpus"
