@@ -37,6 +37,8 @@ std::span<const LimitDoc> Limits() {
       {"objects and vehicles of a scene (ground, generated objects and vehicle bodies included: "
        "each has an instance id)",
        Count(kMaxInstances), "`objects`, `repeat`, `generators`, `vehicles`"},
+      {"objects and vehicles of a scene with a camera writing 16-bit grey instance images",
+       Count(kMaxGray16Instances), "`camera.instance_format: gray16`"},
       {"size of a mesh file", Mebibytes(kMaxMeshFileBytes), "`mesh`, `car_mesh`"},
       {"triangles of one mesh file (declared counts checked before reading)",
        Count(kMaxMeshTriangles), "`mesh`, `car_mesh`"},

@@ -69,8 +69,8 @@ struct SunPosition {
 
 /// A loaded, validated scene: the static scene, environment description, geodetic origin, seed and
 /// the vehicles to create. A scene that loads has poses within kMaxCoordinate_m of the origin,
-/// positive scales, unique instance ids in 1..65535, each class, object name and generator name
-/// once, readable meshes and textures, and no vehicle body below the ground. What needs the
+/// positive scales, unique instance ids in 1..kMaxInstances, each class, object name and generator
+/// name once, readable meshes and textures, and no vehicle body below the ground. What needs the
 /// physics world (a vehicle overlapping an object or another vehicle, sensors faster than the
 /// physics rate) BuildWorld checks.
 struct Scene {

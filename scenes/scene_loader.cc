@@ -279,7 +279,7 @@ class SceneAssembler {
     stored_triangles_ += triangles;
     if (!AddTerrain(c, std::move(field), cls, builder_)) {
       entry.Fail("", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                         " objects (instance ids are 16-bit)");
+                         " objects (docs/limits.md)");
     }
   }
 
@@ -337,7 +337,7 @@ class SceneAssembler {
                  "places " + std::to_string(copies) + " objects where " + std::to_string(free_ids) +
                      " instance ids are left (a scene holds at most " +
                      std::to_string(engine::kMaxInstances) +
-                     " objects: instance ids are 16-bit; docs/limits.md)");
+                     " objects: instance ids are 24-bit; docs/limits.md)");
     }
     for (const int row : {0, r.rows - 1}) {
       for (const int i : {0, r.count - 1}) {
@@ -426,7 +426,7 @@ class SceneAssembler {
     }
     if (report.out_of_instance_ids) {
       entry.Fail(summary.kind, "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                                   " objects (instance ids are 16-bit)");
+                                   " objects (docs/limits.md)");
     }
     summary.objects = report.objects;
     summary.buildings = report.buildings;
@@ -601,7 +601,7 @@ class SceneAssembler {
     }
     if (!builder_.AddVehicleBody(model, c.CalcModelPose(), cls, v.name, material)) {
       entry.Fail("body", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                             " objects and vehicles (instance ids are 16-bit)");
+                             " objects and vehicles (docs/limits.md)");
     }
   }
 

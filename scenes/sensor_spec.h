@@ -32,6 +32,9 @@ class SensorSpec {
   virtual std::string_view kind() const = 0;
   /// Throws InvalidField when the sensor cannot run with physics ticking at `physics_rate_hz`.
   virtual void ValidateForPhysicsRate(double physics_rate_hz) const = 0;
+  /// Throws InvalidField when the sensor cannot run in a scene of `instances` objects and vehicle
+  /// bodies (a camera whose instance images hold fewer ids).
+  virtual void ValidateForInstances(std::size_t instances) const = 0;
   /// The engine sensor named `name`. Throws InvalidField on a config its class refuses.
   virtual std::unique_ptr<engine::Sensor> Build(const std::string& name,
                                                 SensorBuildContext& context) const = 0;
@@ -53,6 +56,11 @@ class SensorSpecOf final : public SensorSpec {
   void ValidateForPhysicsRate(double physics_rate_hz) const override {
     if constexpr (requires { config_.ValidateForPhysicsRate(1.0); }) {
       config_.ValidateForPhysicsRate(physics_rate_hz);
+    }
+  }
+  void ValidateForInstances(std::size_t instances) const override {
+    if constexpr (requires { config_.ValidateForInstances(std::size_t{1}); }) {
+      config_.ValidateForInstances(instances);
     }
   }
   std::unique_ptr<engine::Sensor> Build(const std::string& name,

@@ -61,6 +61,8 @@ void AddVehicle(const Scene& scene, const VehicleDescription& v,
     try {
       // A sensor cannot sample faster than the physics ticks, and some need its period.
       s.spec->ValidateForPhysicsRate(scene.physics.rate_hz);
+      s.spec->ValidateForInstances(scene.static_scene.objects.size() +
+                                   scene.static_scene.vehicle_bodies.size());
       if (!cameras && s.spec->renders()) continue;
       SensorBuildContext context{streams.Stream("vehicles/" + v.name + "/" + s.name), render_scene};
       world.AddSensor(index, s.spec->Build(s.name, context));

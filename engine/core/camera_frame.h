@@ -16,7 +16,7 @@ struct RenderOutputs {
   bool rgb = true;                 ///< RGBA8, sRGB-encoded, alpha 255
   bool depth_planar = false;       ///< float32 metres along the optical axis (camera z)
   bool depth_perspective = false;  ///< float32 metres along the pixel's ray (range)
-  bool segmentation = false;       ///< class id (uint8) and instance id (uint16), 0 = sky
+  bool segmentation = false;       ///< class id (uint8) and instance id (uint32), 0 = sky
   bool normals = false;  ///< float32 x3 unit surface normal in the camera frame, 0 for sky
 
   template <class V>
@@ -24,7 +24,7 @@ struct RenderOutputs {
     v.Field("rgb", rgb, "colour image (sRGB, RGBA8)");
     v.Field("depth_planar", depth_planar, "depth along the optical axis (float32, m)");
     v.Field("depth_perspective", depth_perspective, "distance along each pixel's ray (float32, m)");
-    v.Field("segmentation", segmentation, "class id (uint8) and instance id (uint16) per pixel");
+    v.Field("segmentation", segmentation, "class id (uint8) and instance id (uint32) per pixel");
     v.Field("normals", normals, "surface normal in the camera frame (3 x float32)");
   }
   /// Throws InvalidField when no output is enabled.
@@ -70,7 +70,7 @@ struct CameraFrame {
   Image<float> depth_planar_m;        ///< kSkyDepthM for sky
   Image<float> depth_perspective_m;   ///< kSkyDepthM for sky
   Image<std::uint8_t> class_id;       ///< kNoClass (0) for sky
-  Image<std::uint16_t> instance_id;   ///< kNoInstance (0) for sky
+  Image<std::uint32_t> instance_id;   ///< kNoInstance (0) for sky
   Image<float> normal_C;              ///< 3 channels, zero for sky
 };
 

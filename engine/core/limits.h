@@ -9,9 +9,11 @@
 
 namespace airis::engine {
 
-/// Objects of one scene (instance ids are 16-bit: segmentation images store them so), the ground
-/// and every generated object included.
-inline constexpr std::uint32_t kMaxInstances = 65535;
+/// Objects of one scene, the ground, every generated object and every vehicle body included: each
+/// has an instance id, and instance images store ids in 24 bits (RGB, instance_image_format.h).
+inline constexpr std::uint32_t kMaxInstances = 16'777'215;
+/// Objects of a scene whose cameras write 16-bit grey instance images (`instance_format: gray16`).
+inline constexpr std::uint32_t kMaxGray16Instances = 65'535;
 /// Largest scene, mission or campaign YAML file (bytes).
 inline constexpr std::uintmax_t kMaxYamlFileBytes = 16u << 20;
 /// Values (scalars, lists and maps) of one file, counting every expansion of a YAML alias

@@ -1,6 +1,7 @@
 #include "engine/dataset/coco_annotations.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "engine/core/error.h"
 
@@ -48,41 +49,45 @@ std::vector<std::uint32_t> DecodeCocoRleCounts(const std::string& text) {
   return counts;
 }
 
-std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint16_t>& instance_id,
+std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint32_t>& instance_id,
                                                            const Image<std::uint8_t>& class_id,
                                                            const AnnotationRules& rules) {
   const int w = instance_id.width, h = instance_id.height;
   AIRIS_DEMAND(class_id.width == w && class_id.height == h);
   struct Accumulator {
-    bool seen = false;
     std::uint8_t class_id = 0;
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     std::int64_t area = 0;
     std::uint32_t run_end = 0;  // column-major index just past the last pixel of the instance
     std::vector<std::uint32_t> counts;
   };
-  // Dense slot per possible id (16-bit ids), compact accumulators for the ids present.
-  std::vector<std::int32_t> slot(65536, -1);
+  // Compact accumulators for the ids present, found by id: a table per possible id would be
+  // 64 MiB for 24-bit ids. Neighbouring pixels mostly share an id, so the last one is remembered.
+  std::unordered_map<std::uint32_t, std::size_t> slot;
   std::vector<Accumulator> acc;
-  std::vector<std::uint16_t> present;
+  std::vector<std::uint32_t> present;
+  std::uint32_t last_id = 0;
+  std::size_t last_slot = 0;
   // Column-major scan, as COCO's RLE runs down the columns.
   std::uint32_t k = 0;
   for (int x = 0; x < w; ++x) {
     for (int y = 0; y < h; ++y, ++k) {
-      const std::uint16_t id = instance_id.at(x, y);
+      const std::uint32_t id = instance_id.at(x, y);
       if (id == 0) continue;
-      if (slot[id] < 0) {
-        slot[id] = static_cast<std::int32_t>(acc.size());
-        acc.emplace_back();
+      if (id != last_id) {
+        const auto [it, added] = slot.try_emplace(id, acc.size());
+        if (added) {
+          acc.emplace_back();
+          Accumulator& first = acc.back();
+          first.class_id = class_id.at(x, y);
+          first.x0 = first.x1 = x;
+          first.y0 = first.y1 = y;
+          present.push_back(id);
+        }
+        last_id = id;
+        last_slot = it->second;
       }
-      Accumulator& a = acc[static_cast<std::size_t>(slot[id])];
-      if (!a.seen) {
-        a.seen = true;
-        a.class_id = class_id.at(x, y);
-        a.x0 = a.x1 = x;
-        a.y0 = a.y1 = y;
-        present.push_back(id);
-      }
+      Accumulator& a = acc[last_slot];
       a.x0 = std::min(a.x0, x);
       a.x1 = std::max(a.x1, x);
       a.y0 = std::min(a.y0, y);
@@ -101,8 +106,8 @@ std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint
   const auto total = static_cast<std::uint32_t>(w) * static_cast<std::uint32_t>(h);
   std::sort(present.begin(), present.end());
   std::vector<InstanceAnnotation> out;
-  for (std::uint16_t id : present) {
-    Accumulator& a = acc[static_cast<std::size_t>(slot[id])];
+  for (std::uint32_t id : present) {
+    Accumulator& a = acc[slot.at(id)];
     if (a.area < rules.min_area_px || rules.stuff[a.class_id]) continue;
     if (a.run_end < total) a.counts.push_back(total - a.run_end);
     InstanceAnnotation ann;

@@ -33,7 +33,7 @@ struct AnnotationRules {
 /// (counts over the image in column-major order, alternating background and object runs,
 /// LEB128-like 6-bit groups offset by 48, counts after the second stored as differences). Sorted by
 /// instance id.
-std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint16_t>& instance_id,
+std::vector<InstanceAnnotation> ExtractInstanceAnnotations(const Image<std::uint32_t>& instance_id,
                                                            const Image<std::uint8_t>& class_id,
                                                            const AnnotationRules& rules = {});
 

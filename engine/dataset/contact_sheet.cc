@@ -59,7 +59,7 @@ void WriteContactSheet(const std::filesystem::path& camera_dir,
           mm.pixels[p] == 0 ? kSkyDepthM : static_cast<float>(mm.pixels[p] * depth_unit_m);
     }
     const auto cls = DecodePng8(ReadFileBytes(FramePath(camera_dir, "seg_class", index)));
-    const auto ins = DecodePng16(ReadFileBytes(FramePath(camera_dir, "seg_instance", index)));
+    const auto ins = DecodeInstancePng(ReadFileBytes(FramePath(camera_dir, "seg_instance", index)));
     Blit(rgba, step, sheet, 0, r * ph);
     Blit(ColorizeDepth(depth, near_m, static_cast<float>(65535.0 * depth_unit_m)), step, sheet, pw,
          r * ph);

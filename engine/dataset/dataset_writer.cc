@@ -183,7 +183,8 @@ void DatasetWriter::Adopt(int camera, std::int64_t index) {
   AdoptFiles(FrameFiles(camera, index));
   std::vector<InstanceAnnotation> anns;
   if (cam.outputs.segmentation) {
-    const auto ids = DecodePng16(ReadFileBytes(FramePath(camera, "seg_instance", index, ".png")));
+    const auto ids =
+        DecodeInstancePng(ReadFileBytes(FramePath(camera, "seg_instance", index, ".png")));
     const auto cls = DecodePng8(ReadFileBytes(FramePath(camera, "seg_class", index, ".png")));
     anns = ExtractInstanceAnnotations(ids, cls, options_.annotations);
   }
@@ -359,7 +360,7 @@ void DatasetWriter::WriteFrame(const Job& job) {
   if (o.segmentation) {
     write(FramePath(job.camera, "seg_class", job.index, ".png"), EncodeClassPng(f.class_id));
     write(FramePath(job.camera, "seg_instance", job.index, ".png"),
-          EncodeInstancePng(f.instance_id));
+          EncodeInstancePng(f.instance_id, o.instance_format));
     anns = ExtractInstanceAnnotations(f.instance_id, f.class_id, options_.annotations);
   }
   Record(written);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/core/camera_frame.h"
+#include "engine/core/instance_image_format.h"
 #include "engine/dataset/coco_annotations.h"
 #include "engine/dataset/tartanair.h"
 #include "engine/world/sensor_samples.h"
@@ -27,11 +28,14 @@ struct DatasetOutputs {
   /// depth/NNNNNN.png, 16-bit planar depth in the camera's depth unit (ChooseDepthUnit_m of its
   /// far plane: 1 mm up to 65.5 m), 0 = no return
   bool depth_png = true;
-  bool depth_npy = false;    ///< depth/NNNNNN.npy, float32 metres of planar depth (inf = no return)
-  bool segmentation = true;  ///< seg_class/NNNNNN.png (8-bit) and seg_instance/NNNNNN.png (16-bit)
-  bool normals = false;      ///< normals/NNNNNN.npy, float32 x3 camera-frame normals
+  bool depth_npy = false;  ///< depth/NNNNNN.npy, float32 metres of planar depth (inf = no return)
+  /// seg_class/NNNNNN.png (8-bit) and seg_instance/NNNNNN.png (in `instance_format`)
+  bool segmentation = true;
+  bool normals = false;  ///< normals/NNNNNN.npy, float32 x3 camera-frame normals
   bool tartanair =
       false;  ///< the TartanAir layout too (tartanair.h): image, depth and seg per frame
+  /// Pixel format of seg_instance/NNNNNN.png: 24-bit RGB ids, or 16-bit grey (65,535 ids at most).
+  InstanceImageFormat instance_format = InstanceImageFormat::kRgb24;
 };
 
 /// A file's size and SHA-256 (hex), recorded when it was written: checksums.csv, and resume's

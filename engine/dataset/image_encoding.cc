@@ -77,9 +77,49 @@ std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id) {
   return Encode(Wrap(class_id, CV_8UC1));
 }
 
-std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint16_t>& instance_id) {
+std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance_id,
+                                            InstanceImageFormat format) {
   AIRIS_DEMAND(instance_id.channels == 1);
-  return Encode(Wrap(instance_id, CV_16UC1));
+  const std::uint32_t max_id = MaxInstanceId(format);
+  if (format == InstanceImageFormat::kGray16) {
+    cv::Mat png(instance_id.height, instance_id.width, CV_16UC1);
+    auto* out = png.ptr<std::uint16_t>();
+    for (std::size_t i = 0; i < instance_id.pixels.size(); ++i) {
+      AIRIS_DEMAND(instance_id.pixels[i] <= max_id);
+      out[i] = static_cast<std::uint16_t>(instance_id.pixels[i]);
+    }
+    return Encode(png);
+  }
+  // OpenCV writes its three channels as B, G, R: channel 2 (R) holds the low byte.
+  cv::Mat png(instance_id.height, instance_id.width, CV_8UC3);
+  auto* out = png.ptr<std::uint8_t>();
+  for (std::size_t i = 0; i < instance_id.pixels.size(); ++i) {
+    const std::uint32_t id = instance_id.pixels[i];
+    AIRIS_DEMAND(id <= max_id);
+    out[3 * i + 0] = static_cast<std::uint8_t>(id >> 16);
+    out[3 * i + 1] = static_cast<std::uint8_t>(id >> 8);
+    out[3 * i + 2] = static_cast<std::uint8_t>(id);
+  }
+  return Encode(png);
+}
+
+Image<std::uint32_t> DecodeInstancePng(const std::vector<std::uint8_t>& bytes) {
+  const cv::Mat m = Decode(bytes, cv::IMREAD_UNCHANGED);
+  Image<std::uint32_t> out;
+  out.Resize(m.cols, m.rows, 1);
+  if (m.type() == CV_16UC1) {
+    const auto* in = m.ptr<std::uint16_t>();
+    for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = in[i];
+  } else if (m.type() == CV_8UC3) {
+    const auto* in = m.ptr<std::uint8_t>();  // B, G, R
+    for (std::size_t i = 0; i < out.pixels.size(); ++i) {
+      out.pixels[i] =
+          in[3 * i + 2] | (std::uint32_t{in[3 * i + 1]} << 8) | (std::uint32_t{in[3 * i]} << 16);
+    }
+  } else {
+    throw DatasetIoError("expected an instance PNG: 8-bit RGB (rgb24) or 16-bit grey (gray16)");
+  }
+  return out;
 }
 
 Image<std::uint8_t> DecodePng8(const std::vector<std::uint8_t>& bytes) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "engine/core/camera_frame.h"
+#include "engine/core/instance_image_format.h"
 
 namespace airis::engine {
 
@@ -29,8 +30,14 @@ std::uint16_t EncodeDepth(float depth_m, double unit_m);
 
 /// 8-bit grey PNG of class ids.
 std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id);
-/// 16-bit grey PNG of instance ids.
-std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint16_t>& instance_id);
+/// PNG of instance ids in `format`: 8-bit RGB with id = R + 256 G + 65536 B (COCO panoptic), or
+/// 16-bit grey. Requires every id to fit the format (MaxInstanceId; the scene check refuses a
+/// gray16 camera in a scene with more instances).
+std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance_id,
+                                            InstanceImageFormat format);
+/// Instance ids of a PNG of either format, told apart by its pixels: 8-bit RGB (rgb24) or 16-bit
+/// grey (gray16). Throws DatasetIoError for any other PNG.
+Image<std::uint32_t> DecodeInstancePng(const std::vector<std::uint8_t>& bytes);
 
 /// Decoders (tests, resume, merge): 8- or 16-bit single-channel PNGs; colour PNGs as RGBA8.
 Image<std::uint8_t> DecodePng8(const std::vector<std::uint8_t>& bytes);

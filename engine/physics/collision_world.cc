@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <tuple>
 
 #include "engine/core/error.h"
 #include "engine/physics/static_collider_grid.h"
@@ -198,6 +200,10 @@ struct CollisionWorld::Bullet {
   std::vector<std::vector<btScalar>> mesh_vertices;
   std::vector<btBvhTriangleMeshShape*>
       mesh_shapes;  // per scene mesh, built on first use (owned above)
+  // Convex hulls by (mesh, scale), built on first use (owned above) and shared by every object
+  // that places the same mesh at the same scale: a city's cars and lamp posts are hundreds of
+  // thousands of copies of a few hulls.
+  std::map<std::tuple<std::uint32_t, double, double, double>, btCollisionShape*> hull_shapes;
   std::vector<std::unique_ptr<btCollisionObject>> statics;
   std::vector<std::vector<float>> heightfield_data;  // per terrain chunk, Bullet's layout
   std::shared_ptr<const Heightfield> terrain;        // the scene's, or null
@@ -417,13 +423,18 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
         }
       }
       if (shape == nullptr && kind == CollisionShape::kConvexHull) {
-        auto* hull = new btConvexHullShape();
-        for (const auto& p : mesh.positions) {
-          hull->addPoint(ToBt(scale.cwiseProduct(p.cast<double>())), false);
+        btCollisionShape*& hull_shape = b.hull_shapes[{part.mesh, scale.x(), scale.y(), scale.z()}];
+        if (hull_shape == nullptr) {
+          auto* hull = new btConvexHullShape();
+          for (const auto& p : mesh.positions) {
+            hull->addPoint(ToBt(scale.cwiseProduct(p.cast<double>())), false);
+          }
+          hull->setMargin(btScalar(kHullMargin_m));
+          hull->recalcLocalAabb();
+          hull_shape = b.Own(hull);
         }
-        hull->setMargin(btScalar(kHullMargin_m));
-        hull->recalcLocalAabb();
-        shape = hull;
+        b.AddStatic(hull_shape, ToBt(R, centre), make_collider(part.material));
+        continue;
       } else if (shape == nullptr) {
         btBvhTriangleMeshShape* unscaled = b.MeshShape(scene, part.mesh);
         if ((scale - Vec3::Ones()).cwiseAbs().maxCoeff() <= 1e-9) {

@@ -15,8 +15,10 @@ namespace {
 
 enum Target { kRgb = 0, kDepthPlanar, kDepthPerspective, kClass, kInstance, kNormal };
 
+// Instance ids are 32-bit unsigned integers on the GPU (exact through every driver, llvmpipe
+// included: no colour channel or normalisation touches them); files store 24 bits of them.
 constexpr GLenum kInternalFormat[] = {GL_SRGB8_ALPHA8, GL_R32F,  GL_R32F,
-                                      GL_R8UI,         GL_R16UI, GL_RGBA32F};
+                                      GL_R8UI,         GL_R32UI, GL_RGBA32F};
 constexpr const char* kDefine[] = {"OUT_RGB",   "OUT_DEPTH_PLANAR", "OUT_DEPTH_PERSPECTIVE",
                                    "OUT_CLASS", "OUT_INSTANCE",     "OUT_NORMAL"};
 constexpr const char* kRemapSampler[] = {"u_rgb",   "u_depth_planar", "u_depth_perspective",
@@ -24,9 +26,9 @@ constexpr const char* kRemapSampler[] = {"u_rgb",   "u_depth_planar", "u_depth_p
 // What the frame stores per pixel, and the read format that delivers exactly that.
 constexpr GLenum kPreferredFormat[] = {GL_RGBA,        GL_RED,         GL_RED,
                                        GL_RED_INTEGER, GL_RED_INTEGER, GL_RGBA};
-constexpr GLenum kPreferredType[] = {GL_UNSIGNED_BYTE, GL_FLOAT,          GL_FLOAT,
-                                     GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_FLOAT};
-constexpr int kPreferredBytes[] = {4, 4, 4, 1, 2, 16};
+constexpr GLenum kPreferredType[] = {GL_UNSIGNED_BYTE, GL_FLOAT,        GL_FLOAT,
+                                     GL_UNSIGNED_BYTE, GL_UNSIGNED_INT, GL_FLOAT};
+constexpr int kPreferredBytes[] = {4, 4, 4, 1, 4, 16};
 // The combination every ES 3.0 implementation must accept for that kind of buffer (fallback,
 // converted).
 constexpr GLenum kFallbackFormat[] = {GL_RGBA,         GL_RGBA,         GL_RGBA,
@@ -202,7 +204,7 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
     r.bytes_per_pixel = preferred ? kPreferredBytes[t] : 16;
     r.direct = preferred && t != kNormal;
     // Each image starts on a 16-byte boundary: glReadPixels into a buffer needs an offset that is
-    // a multiple of the type's size (a 16-bit instance image after an odd-sized 8-bit class image
+    // a multiple of the type's size (a 32-bit instance image after an odd-sized 8-bit class image
     // would be refused).
     pbo_bytes = (pbo_bytes + 15) / 16 * 16;
     for (auto& slot : slots_) slot.offset[t] = pbo_bytes;
@@ -449,7 +451,7 @@ void CameraRenderer::DeliverFromBytes(int target, const void* bytes, CameraFrame
       if (target == kClass) {
         out.class_id.pixels[i] = static_cast<std::uint8_t>(src[i * 4]);
       } else {
-        out.instance_id.pixels[i] = static_cast<std::uint16_t>(src[i * 4]);
+        out.instance_id.pixels[i] = src[i * 4];
       }
     }
   }

@@ -65,13 +65,13 @@ SegmentationPalette CalcSegmentationPalette(std::span<const SemanticClass> class
 }
 
 Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
-                                         const Image<std::uint16_t>& instance_id,
+                                         const Image<std::uint32_t>& instance_id,
                                          std::span<const SemanticClass> classes) {
   return ColorizeSegmentation(class_id, instance_id, CalcSegmentationPalette(classes));
 }
 
 Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
-                                         const Image<std::uint16_t>& instance_id,
+                                         const Image<std::uint32_t>& instance_id,
                                          const SegmentationPalette& palette) {
   AIRIS_DEMAND(class_id.width == instance_id.width && class_id.height == instance_id.height);
   Image<std::uint8_t> out;

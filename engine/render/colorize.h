@@ -23,11 +23,11 @@ SegmentationPalette CalcSegmentationPalette(std::span<const SemanticClass> class
 /// Labels as an RGB8 picture: each class in its `palette` colour, each instance a little lighter or
 /// darker so neighbours stand apart; sky black. The images must have the same size.
 Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
-                                         const Image<std::uint16_t>& instance_id,
+                                         const Image<std::uint32_t>& instance_id,
                                          const SegmentationPalette& palette);
 /// The same with the palette of `classes`.
 Image<std::uint8_t> ColorizeSegmentation(const Image<std::uint8_t>& class_id,
-                                         const Image<std::uint16_t>& instance_id,
+                                         const Image<std::uint32_t>& instance_id,
                                          std::span<const SemanticClass> classes);
 
 /// RGBA8 -> RGB8 (drops alpha).

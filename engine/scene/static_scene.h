@@ -17,7 +17,7 @@ namespace airis::engine {
 
 /// Class id of pixels and rays that hit nothing (sky). Real classes are 1..255.
 inline constexpr std::uint8_t kNoClass = 0;
-/// Instance id of nothing. Real instances are 1..65535 (they must fit a 16-bit segmentation image).
+/// Instance id of nothing. Real ids are 1..kMaxInstances (they fit a 24-bit instance image).
 inline constexpr std::uint32_t kNoInstance = 0;
 
 /// A semantic class (building, tree, road, ...): id, name and the colour used in colourised label
@@ -92,7 +92,7 @@ struct StaticObject {
   Eigen::Affine3d T_WO =
       Eigen::Affine3d::Identity();          ///< model -> world NED (rotation, translation, scale)
   std::uint8_t class_id = kNoClass;         ///< semantic class, 1..255
-  std::uint32_t instance_id = kNoInstance;  ///< unique per object, 1..65535, stable per seed
+  std::uint32_t instance_id = kNoInstance;  ///< unique, 1..kMaxInstances, stable per seed
   std::int32_t material_override = -1;      ///< material index replacing every part's, or -1
   CollisionShape collision = CollisionShape::kAuto;
   std::string name;  ///< instance name (user's, or generated)
@@ -105,7 +105,7 @@ struct VehicleBody {
   /// Model -> body FRD (centre of mass): rotation, translation and scale of the model frame.
   Eigen::Affine3d T_BM = Eigen::Affine3d::Identity();
   std::uint8_t class_id = kNoClass;         ///< semantic class, 1..255
-  std::uint32_t instance_id = kNoInstance;  ///< unique among objects and bodies, 1..65535
+  std::uint32_t instance_id = kNoInstance;  ///< unique among objects and bodies, 1..kMaxInstances
   std::int32_t material_override = -1;      ///< material index replacing every part's, or -1
   std::string name;                         ///< the vehicle's name
 };

@@ -124,7 +124,8 @@ std::vector<std::string> StaticSceneBuilder::ClassNames() const {
 
 void StaticSceneBuilder::ReserveObjects(std::size_t n) {
   std::vector<StaticObject>& objects = scene_.objects;
-  const std::size_t wanted = std::min<std::size_t>(objects.size() + n, kMaxInstances);
+  if (n > kMaxInstances - objects.size()) return;
+  const std::size_t wanted = objects.size() + n;
   if (wanted <= objects.capacity()) return;
   objects.reserve(std::min<std::size_t>(std::max(wanted, 2 * objects.capacity()), kMaxInstances));
 }

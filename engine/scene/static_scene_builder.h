@@ -40,19 +40,20 @@ class StaticSceneBuilder {
   /// The class names, for "expected one of" messages.
   std::vector<std::string> ClassNames() const;
 
-  /// Places an object; assigns the next instance id. Returns false when the 65535 instance ids are
-  /// used up.
+  /// Places an object; assigns the next instance id. Returns false when the kMaxInstances instance
+  /// ids are used up.
   bool AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
                  CollisionShape collision, std::string name, std::int32_t material_override = -1);
 
   /// Adds the look of the next vehicle (StaticScene::vehicle_bodies, in vehicle order) with the
-  /// next instance id. Returns false when the 65535 instance ids are used up.
+  /// next instance id. Returns false when the kMaxInstances instance ids are used up.
   bool AddVehicleBody(std::uint32_t model, const Eigen::Affine3d& T_BM, std::uint8_t class_id,
                       std::string name, std::int32_t material_override = -1);
 
-  /// Reserves room for `n` more objects (generators call this before a batch), at most up to
-  /// kMaxInstances. The capacity grows geometrically: reserving a few more for every object of a
-  /// long list stays linear in the list.
+  /// Reserves room for `n` more objects (generators call this before a batch); nothing when they
+  /// would pass kMaxInstances (such a batch cannot be placed whole, and room for every id is
+  /// gigabytes). The capacity grows geometrically: reserving a few more for every object of a long
+  /// list stays linear in the list.
   void ReserveObjects(std::size_t n);
 
   StaticScene& scene() { return scene_; }

@@ -9,6 +9,7 @@
 
 #include "engine/core/camera_frame.h"
 #include "engine/core/camera_model.h"
+#include "engine/core/instance_image_format.h"
 #include "engine/physics/rigid_body_state.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
@@ -23,8 +24,10 @@ struct ImageStream {
   std::string side = "left";    ///< "left" for a mono camera or the left eye, "right" for the right
   CameraIntrinsics intrinsics;  ///< pinhole model, clip planes and distortion of its images
   RenderOutputs outputs;        ///< the image planes its frames carry
-  MountConfig mount;            ///< the sensor's mount on its vehicle (or in the world)
-  bool world_fixed = false;     ///< the mount is in the world frame, not on the vehicle's body
+  /// How a dataset stores its instance ids (its camera's `instance_format`).
+  InstanceImageFormat instance_format = InstanceImageFormat::kRgb24;
+  MountConfig mount;         ///< the sensor's mount on its vehicle (or in the world)
+  bool world_fixed = false;  ///< the mount is in the world frame, not on the vehicle's body
   /// Its images show its own vehicle's body (a camera on a vehicle leaves it out unless its mount
   /// is set to see it; a world-fixed camera sees every vehicle).
   bool sees_own_body = false;

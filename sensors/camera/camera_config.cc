@@ -1,6 +1,7 @@
 #include "sensors/camera/camera_config.h"
 
 #include <algorithm>
+#include <string>
 
 #include "engine/core/limits.h"
 
@@ -48,6 +49,15 @@ void CameraConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
   engine::RequireRate("rate_hz", rate_hz, physics_rate_hz);
 }
 
+void CameraConfig::ValidateForInstances(std::size_t instances) const {
+  const std::uint32_t max_id = engine::MaxInstanceId(instance_format);
+  engine::Require(instances <= max_id, "instance_format",
+                  std::string(engine::ToString(instance_format)) +
+                      " images hold instance ids up to " + std::to_string(max_id) +
+                      ", but the scene has " + std::to_string(instances) +
+                      " objects and vehicles (use rgb24; docs/limits.md)");
+}
+
 engine::CameraIntrinsics CameraConfig::CalcIntrinsics() const {
   engine::CameraIntrinsics k;
   if (fx_px) {
@@ -75,6 +85,10 @@ void StereoCameraConfig::Validate() const {
 void StereoCameraConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
   WithPrefix("camera.", [&] { camera.ValidateForPhysicsRate(physics_rate_hz); });
   engine::RequirePositive("baseline_m", baseline_m);
+}
+
+void StereoCameraConfig::ValidateForInstances(std::size_t instances) const {
+  WithPrefix("camera.", [&] { camera.ValidateForInstances(instances); });
 }
 
 }  // namespace airis::sensors

@@ -7,6 +7,7 @@
 #include "engine/core/camera_frame.h"
 #include "engine/core/camera_model.h"
 #include "engine/core/config.h"
+#include "engine/core/instance_image_format.h"
 #include "engine/render/camera_effects.h"
 #include "engine/world/mount.h"
 
@@ -39,6 +40,8 @@ struct CameraConfig {
   engine::BrownConradyDistortion distortion;
   engine::RenderOutputs outputs;
   engine::CameraEffectsConfig effects;  ///< exposure, vignetting, noise of the RGB image; all off
+  /// How a dataset stores its instance ids (seg_instance/NNNNNN.png).
+  engine::InstanceImageFormat instance_format = engine::InstanceImageFormat::kRgb24;
   CameraAttachment attachment = CameraAttachment::kVehicle;
   engine::MountConfig mount;
   /// Its images show its own vehicle's body (a camera that looks at its own airframe: landing gear,
@@ -64,6 +67,9 @@ struct CameraConfig {
     v.Field("effects", effects,
             "what a real camera does to the colour image: exposure, vignetting, sensor noise "
             "(docs/rendering.md; all off by default)");
+    v.Field("instance_format", instance_format,
+            "dataset instance images: rgb24 (8-bit RGB, id = R + 256 G + 65536 B) or gray16 "
+            "(16-bit grey; scenes of at most 65,535 objects and vehicles)");
     v.Field("attachment", attachment, "mount relative to the vehicle or to the world");
     v.Field("mount", mount, "pose of the camera's sensor frame (x forward, y right, z down)");
     v.Field("sees_own_body", sees_own_body,
@@ -75,6 +81,9 @@ struct CameraConfig {
   void Validate() const;
   /// Validate() plus rate_hz <= physics_rate_hz: a camera renders at most once per tick.
   void ValidateForPhysicsRate(double physics_rate_hz) const;
+  /// Throws InvalidField naming `instance_format` when its images cannot hold the ids of a scene of
+  /// `instances` objects and vehicles.
+  void ValidateForInstances(std::size_t instances) const;
 
   /// The intrinsics this config describes (no validation).
   engine::CameraIntrinsics CalcIntrinsics() const;
@@ -96,6 +105,8 @@ struct StereoCameraConfig {
   void Validate() const;
   /// Validate() plus camera.rate_hz <= physics_rate_hz.
   void ValidateForPhysicsRate(double physics_rate_hz) const;
+  /// As CameraConfig's, naming `camera.instance_format`.
+  void ValidateForInstances(std::size_t instances) const;
 };
 
 }  // namespace airis::sensors

@@ -94,6 +94,7 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
   s.rig = name;
   s.intrinsics = intrinsics;
   s.outputs = config.outputs;
+  s.instance_format = config.instance_format;
   s.mount = config.mount;
   s.world_fixed = config.attachment == CameraAttachment::kWorld;
   s.sees_own_body = config.sees_own_body;

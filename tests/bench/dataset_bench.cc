@@ -36,7 +36,7 @@ std::shared_ptr<engine::CameraFrame> StreetFrame() {
                                    : ground ? 5.0f + 0.1f * (480 - v)
                                             : 10.0f + band;
       f->class_id.at(u, v) = sky ? 0 : ground ? 2 : static_cast<std::uint8_t>(1 + band % 4);
-      f->instance_id.at(u, v) = sky ? 0 : ground ? 1 : static_cast<std::uint16_t>(2 + band);
+      f->instance_id.at(u, v) = sky ? 0 : ground ? 1 : static_cast<std::uint32_t>(2 + band);
       for (int c = 0; c < 3; ++c) {
         f->rgba.at(u, v, c) =
             static_cast<std::uint8_t>((sky ? 180 : 60 + 3 * band + c * 20) + (noise >> 29));

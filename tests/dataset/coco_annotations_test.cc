@@ -87,8 +87,39 @@ TEST(InstanceAnnotationTest, StuffClassesGetNoAnnotation) {
   EXPECT_LT(things.size(), all.size());
 }
 
+TEST(InstanceAnnotationTest, AnnotationsCarryIdsBeyond16Bits) {
+  // GIVEN two instances whose ids differ only above bit 16 (a 16-bit id would merge them), in
+  // interleaved columns so that each id comes back after the other
+  Image<std::uint32_t> ids;
+  Image<std::uint8_t> cls;
+  ids.Resize(6, 4, 1);
+  cls.Resize(6, 4, 1);
+  constexpr std::uint32_t kLow = 70'000, kHigh = 70'000 + 65'536 * 200;
+  for (int x = 0; x < 6; ++x) {
+    for (int y = 0; y < 4; ++y) {
+      ids.at(x, y) = x % 2 == 0 ? kLow : kHigh;
+      cls.at(x, y) = x % 2 == 0 ? 4 : 6;
+    }
+  }
+  // WHEN annotated
+  const auto anns = ExtractInstanceAnnotations(ids, cls, {1});
+  // THEN both ids, sorted, each with its own columns, class and mask
+  ASSERT_EQ(anns.size(), 2u);
+  EXPECT_EQ(anns[0].instance_id, kLow);
+  EXPECT_EQ(anns[1].instance_id, kHigh);
+  EXPECT_EQ(anns[0].class_id, 4);
+  EXPECT_EQ(anns[1].class_id, 6);
+  EXPECT_EQ(anns[0].area_px, 12);
+  EXPECT_EQ(anns[0].bbox_xywh, (std::array<int, 4>{0, 0, 5, 4}));
+  EXPECT_EQ(anns[1].bbox_xywh, (std::array<int, 4>{1, 0, 5, 4}));
+  EXPECT_EQ(DecodeCocoRleCounts(anns[0].rle_counts),
+            (std::vector<std::uint32_t>{0, 4, 4, 4, 4, 4, 4}));
+  EXPECT_EQ(DecodeCocoRleCounts(anns[1].rle_counts),
+            (std::vector<std::uint32_t>{4, 4, 4, 4, 4, 4}));
+}
+
 TEST(InstanceAnnotationTest, MaskStartingAtTheFirstPixelHasLeadingZeroCount) {
-  Image<std::uint16_t> ids;
+  Image<std::uint32_t> ids;
   Image<std::uint8_t> cls;
   ids.Resize(4, 4, 1);
   cls.Resize(4, 4, 1);

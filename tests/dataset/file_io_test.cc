@@ -92,10 +92,44 @@ TEST(ImageEncodingTest, DepthPngCountsInItsUnitWithZeroForNoReturn) {
   }
 }
 
+TEST(ImageEncodingTest, Rgb24InstancePngsCarry24BitIdsInCocoPanopticOrder) {
+  // Ids that need each byte, up to the largest 24-bit id.
+  const std::vector<std::uint32_t> ids = {0,      1,      255,      256,      65'535,
+                                          65'536, 65'537, 0x123456, 0xFEDCBA, 16'777'215};
+  Image<std::uint32_t> image;
+  image.Resize(static_cast<int>(ids.size()), 1, 1);
+  image.pixels = ids;
+  const std::vector<std::uint8_t> png = EncodeInstancePng(image, InstanceImageFormat::kRgb24);
+  EXPECT_EQ(DecodeInstancePng(png).pixels, ids);
+  // Read as an ordinary colour image (another decoder path): id = R + 256 G + 65536 B, the
+  // encoding of COCO panoptic's PNGs (panopticapi rgb2id).
+  const Image<std::uint8_t> rgba = DecodeRgbPng(png);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const std::uint32_t r = rgba.pixels[4 * i], g = rgba.pixels[4 * i + 1],
+                        b = rgba.pixels[4 * i + 2];
+    EXPECT_EQ(r + 256 * g + 65536 * b, ids[i]) << i;
+  }
+}
+
+TEST(ImageEncodingTest, Gray16InstancePngsAreTheIdsThemselves) {
+  Image<std::uint32_t> image;
+  image.Resize(3, 1, 1);
+  image.pixels = {0, 4242, 65'535};
+  const std::vector<std::uint8_t> png = EncodeInstancePng(image, InstanceImageFormat::kGray16);
+  EXPECT_EQ(DecodePng16(png).pixels, (std::vector<std::uint16_t>{0, 4242, 65'535}));
+  EXPECT_EQ(DecodeInstancePng(png).pixels, image.pixels);
+  // A class image is neither instance format.
+  EXPECT_THROW(DecodeInstancePng(EncodeClassPng(Image<std::uint8_t>{3, 1, 1, {1, 2, 3}})),
+               DatasetIoError);
+}
+
 TEST(ImageEncodingTest, LabelAndColourPngsRoundTripExactly) {
   const auto frame = testing::MakeFrame(40, 30, 5.0f);
   EXPECT_EQ(DecodePng8(EncodeClassPng(frame->class_id)).pixels, frame->class_id.pixels);
-  EXPECT_EQ(DecodePng16(EncodeInstancePng(frame->instance_id)).pixels, frame->instance_id.pixels);
+  for (const auto format : {InstanceImageFormat::kRgb24, InstanceImageFormat::kGray16}) {
+    EXPECT_EQ(DecodeInstancePng(EncodeInstancePng(frame->instance_id, format)).pixels,
+              frame->instance_id.pixels);
+  }
   EXPECT_EQ(DecodeRgbPng(EncodeRgbPng(frame->rgba)).pixels, frame->rgba.pixels);
   // Fixed settings: the same image gives the same bytes.
   EXPECT_EQ(EncodeRgbPng(frame->rgba), EncodeRgbPng(frame->rgba));

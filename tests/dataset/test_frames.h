@@ -21,7 +21,7 @@ inline std::shared_ptr<CameraFrame> MakeFrame(int w, int h, float depth_m, int x
     for (int u = 0; u < w; ++u) {
       float d = kSkyDepthM;
       std::uint8_t cls = 0;
-      std::uint16_t inst = 0;
+      std::uint32_t inst = 0;
       if (u >= x0 && u < x1 && v >= y0 && v < y1) {
         d = depth_m;
         cls = 3;

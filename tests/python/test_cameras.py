@@ -16,7 +16,7 @@ def test_capture_gives_every_plane_with_its_shape_and_type(sim):
     f = sim.vehicles["drone1"].cameras["front"].capture()
     assert f.rgb.shape == (48, 64, 3) and f.rgb.dtype == np.uint8
     assert f.depth.shape == (48, 64) and f.depth.dtype == np.float32
-    assert f.class_id.dtype == np.uint8 and f.instance_id.dtype == np.uint16
+    assert f.class_id.dtype == np.uint8 and f.instance_id.dtype == np.uint32
     assert f.normals.shape == (48, 64, 3) and f.normals.dtype == np.float32
     assert f.depth_perspective is None  # not configured
     assert f.time_ns == sim.time_ns
@@ -124,11 +124,52 @@ def test_dataset_reader_gives_streams_labels_and_frames(write, airis_bin, tmp_pa
     # 16-bit PNG depth decoded with the manifest's unit: within half a unit of the wall's 10 m.
     unit = ds.cameras["front"].depth_unit_m
     assert f["depth_m"][24, 32] == pytest.approx(10.0, abs=unit / 2 + 0.01)
-    assert f["rgb"].shape == (48, 64, 3) and f["instance_id"].dtype == np.uint16
+    assert f["rgb"].shape == (48, 64, 3) and f["instance_id"].dtype == np.uint32
     with pytest.raises(IndexError):
         ds.cameras["front"][len(ds.cameras["front"])]
     with pytest.raises(FileNotFoundError, match="manifest"):
         airis.Dataset(str(tmp_path))
+
+
+def test_dataset_reader_decodes_both_instance_formats(write, airis_bin, tmp_path):
+    # The same flight written with the default rgb24 instance images and with gray16 ones: the
+    # files differ (8-bit RGB vs 16-bit grey), the ids the reader decodes do not.
+    from PIL import Image
+    _, rgb24 = _small_dataset(write, airis_bin, tmp_path)
+    gray16_scene = CAMERA_SCENE.replace("          mount: {position_frd_m: [0, 0, 0]}\n",
+                                        "          mount: {position_frd_m: [0, 0, 0]}\n"
+                                        "          instance_format: gray16\n", 1)
+    assert gray16_scene != CAMERA_SCENE
+    out = tmp_path / "gray16"
+    run([airis_bin, "dataset", write("gray16.yaml", gray16_scene), "--mission",
+         write("m.yaml", CAPTURE_MISSION), "--out", str(out), "--cameras", "front"])
+    gray16 = airis.Dataset(str(out))
+    a, b = rgb24.cameras["front"], gray16.cameras["front"]
+    assert a.info["seg_instance"]["format"] == "rgb24"
+    assert b.info["seg_instance"]["format"] == "gray16"
+    with Image.open(a._file("seg_instance", a[0]["index"], "png")) as im:
+        assert im.mode == "RGB"
+    with Image.open(b._file("seg_instance", b[0]["index"], "png")) as im:
+        assert im.mode.startswith("I")
+    assert len(a) == len(b) > 0
+    for i in range(len(a)):
+        assert a[i]["instance_id"].dtype == np.uint32
+        assert np.array_equal(a[i]["instance_id"], b[i]["instance_id"]), i
+    assert a[0]["instance_id"][24, 32] != 0  # the wall
+
+
+def test_instance_png_decoding_carries_24_bit_ids(tmp_path):
+    # COCO panoptic's encoding written by PIL (independent of airis's encoder): id = R + 256 G +
+    # 65536 B, here ids that need all three bytes.
+    from PIL import Image
+    from airis.dataset import _read_instance_png
+    ids = np.array([[0, 1, 65535], [65536, 0x123456, 16_777_215]], dtype=np.uint32)
+    rgb = np.stack([ids & 255, (ids >> 8) & 255, ids >> 16], axis=-1).astype(np.uint8)
+    path = str(tmp_path / "ids.png")
+    Image.fromarray(rgb, "RGB").save(path)
+    assert np.array_equal(_read_instance_png(path, "rgb24"), ids)
+    with pytest.raises(ValueError, match="16-bit grey"):
+        _read_instance_png(path, "gray16")
 
 
 def test_dataset_as_a_torch_dataset(write, airis_bin, tmp_path):

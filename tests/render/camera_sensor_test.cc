@@ -38,7 +38,7 @@ CameraConfig SmallCamera() {
   return c;
 }
 
-std::uint16_t CentreInstance(const engine::CameraFrame& f) {
+std::uint32_t CentreInstance(const engine::CameraFrame& f) {
   return f.instance_id.at(f.instance_id.width / 2, f.instance_id.height / 2);
 }
 

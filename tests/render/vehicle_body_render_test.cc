@@ -41,7 +41,7 @@ Eigen::Isometry3d BodyAt(const Eigen::Vector3d& p_W, double yaw_rad = 0.0) {
 struct Centre {
   float depth_m;
   std::uint8_t class_id;
-  std::uint16_t instance_id;
+  std::uint32_t instance_id;
 };
 
 Centre CentreOf(const CameraFrame& f) {
@@ -130,7 +130,7 @@ TEST(VehicleBodyRenderTest, BodiesRenderDeterministically) {
   second.Submit(gpu, T_WC, 0, {T_WB, -1});
   ASSERT_TRUE(second.Collect(c));
   int drawn[2] = {0, 0};
-  for (std::uint16_t id : a.instance_id.pixels) {
+  for (std::uint32_t id : a.instance_id.pixels) {
     if (id == 501 || id == 502) ++drawn[id - 501];
   }
   EXPECT_GT(drawn[0], 20);  // both bodies are in view

@@ -23,10 +23,30 @@ TEST(StaticSceneBuilderTest, ObjectsAddedOneByOneReallocateLogarithmicallyOften)
   EXPECT_LE(capacities.size(), 20u);
 }
 
-TEST(StaticSceneBuilderTest, ReservationStopsAtTheInstanceLimit) {
+TEST(StaticSceneBuilderTest, ReservationBeyondTheInstanceLimitAllocatesNothing) {
   StaticSceneBuilder builder;
-  builder.ReserveObjects(std::size_t{1} << 40);  // a count no scene may hold: never allocated
-  EXPECT_EQ(builder.scene().objects.capacity(), kMaxInstances);
+  builder.ReserveObjects(kMaxInstances + std::size_t{1});  // a count no scene may hold
+  EXPECT_EQ(builder.scene().objects.capacity(), 0u);
+  builder.ReserveObjects(std::size_t{1} << 40);
+  EXPECT_EQ(builder.scene().objects.capacity(), 0u);
+  builder.ReserveObjects(1000);  // within the limit: reserved
+  EXPECT_GE(builder.scene().objects.capacity(), 1000u);
+}
+
+TEST(StaticSceneBuilderTest, InstanceIdsRunPast16Bits) {
+  // GIVEN 70,000 objects (more than a 16-bit id holds) and a vehicle body after them
+  StaticSceneBuilder builder;
+  const std::uint32_t box = builder.PrimitiveModel(Primitive::kBox);
+  constexpr std::uint32_t kObjects = 70'000;
+  builder.ReserveObjects(kObjects);
+  for (std::uint32_t i = 0; i < kObjects; ++i) {
+    ASSERT_TRUE(builder.AddObject(box, Eigen::Affine3d::Identity(), 1, CollisionShape::kAuto, "b"));
+  }
+  ASSERT_TRUE(builder.AddVehicleBody(box, Eigen::Affine3d::Identity(), 2, "drone"));
+  // THEN ids are 1..70000 in order, and the body takes 70001
+  EXPECT_EQ(builder.scene().objects.front().instance_id, 1u);
+  EXPECT_EQ(builder.scene().objects.back().instance_id, kObjects);
+  EXPECT_EQ(builder.scene().vehicle_bodies.back().instance_id, kObjects + 1);
 }
 
 }  // namespace

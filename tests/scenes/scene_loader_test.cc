@@ -225,12 +225,29 @@ TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
   const std::string path = f.Write("s.yaml",
                                    "objects:\n"
                                    "  - primitive: box\n"
-                                   "    repeat: {count: 65535, step_ned_m: [2, 0, 0]}\n");
-  EXPECT_EQ(
-      LoadError(path),
-      path +
-          ":3:5: objects[0].repeat: places 65535 objects where 65534 instance ids are left (a "
-          "scene holds at most 65535 objects: instance ids are 16-bit; docs/limits.md)");
+                                   "    repeat: {count: 65535, step_ned_m: [1, 0, 0], rows: 257, "
+                                   "row_step_ned_m: [0, 1, 0]}\n");
+  EXPECT_EQ(LoadError(path),
+            path +
+                ":3:5: objects[0].repeat: places 16842495 objects where 16777214 instance ids are "
+                "left (a scene holds at most 16777215 objects: instance ids are 24-bit; "
+                "docs/limits.md)");
+}
+
+TEST(SceneLoaderTest, MoreObjectsThan16BitIdsNumberLoadWithDistinctIds) {
+  SceneFiles f("past16bit");
+  const std::string path = f.Write("s.yaml",
+                                   "objects:\n"
+                                   "  - primitive: box\n"
+                                   "    repeat: {count: 300, step_ned_m: [2, 0, 0], rows: 230, "
+                                   "row_step_ned_m: [0, 2, 0]}\n");
+  const Scene s = LoadScene(path);
+  // 69,000 boxes and the ground: ids 1..69001 in order, so past 65,535 and none repeated.
+  const auto& objects = s.static_scene.objects;
+  ASSERT_EQ(objects.size(), 69'001u);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    ASSERT_EQ(objects[i].instance_id, i + 1) << i;
+  }
 }
 
 TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {

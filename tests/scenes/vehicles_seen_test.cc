@@ -85,7 +85,7 @@ struct Pixel {
 Pixel Centre(const engine::CameraFrame& f) {
   const int u = f.depth_planar_m.width / 2;
   const int v = f.depth_planar_m.height / 2;
-  return {f.depth_planar_m.at(u, v), f.class_id.at(u, v), f.instance_id.at(u, v)};
+  return {f.depth_planar_m.at(u, v), f.class_id.at(u, v), static_cast<int>(f.instance_id.at(u, v))};
 }
 
 // GIVEN a drone whose forward camera looks at a second drone hovering 6 m ahead, level with it

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "engine/core/error.h"
+#include "engine/core/instance_image_format.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/sha256.h"
 #include "engine/world/image_sensor.h"
@@ -111,6 +112,14 @@ nlohmann::json CameraJson(const DatasetRecorder::CameraInfo& c) {
                         {"frames", c.frames}};
   if (c.outputs.tartanair)
     cam["tartanair"] = {{"trajectory", c.tartanair.trajectory}, {"side", c.tartanair.side}};
+  if (c.outputs.segmentation) {
+    const engine::InstanceImageFormat f = c.outputs.instance_format;
+    cam["seg_instance"] = {{"format", engine::ToString(f)},
+                           {"encoding", f == engine::InstanceImageFormat::kRgb24
+                                            ? "8-bit RGB, id = R + 256 G + 65536 B"
+                                            : "16-bit grey, id"},
+                           {"max_id", engine::MaxInstanceId(f)}};
+  }
   if (c.outputs.depth_png) {
     cam["depth_png"] = {{"unit_m", c.depth_unit_m},
                         {"max_m", 65535.0 * c.depth_unit_m},
@@ -126,7 +135,7 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
                                    const DatasetRecorder& recorder, bool complete, double sim_s) {
   nlohmann::json m;
   m["format"] = "airis-dataset";
-  m["format_version"] = 2;
+  m["format_version"] = 3;
   m["airis_version"] = kVersion;
   m["complete"] = complete;
   if (o.interrupted_by != 0) m["interrupted_by_signal"] = o.interrupted_by;

@@ -152,7 +152,8 @@ DatasetRecorder::DatasetRecorder(engine::World& world, const Options& options)
       rec->sensor = sensor;
       rec->own_name = s.name;
       rec->own_rig = s.rig;
-      const engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs, named.name);
+      engine::DatasetOutputs outputs = OutputsFor(options_.outputs, s.outputs, named.name);
+      outputs.instance_format = s.instance_format;
       const engine::TartanAirSlot tartanair{named.rig, s.side};
       const double depth_unit_m = engine::ChooseDepthUnit_m(s.intrinsics.far_m);
       rec->writer_camera = writer_.AddCamera(named.name, outputs, tartanair, depth_unit_m);

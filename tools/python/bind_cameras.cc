@@ -122,7 +122,7 @@ void BindCameras(py::module_& m) {
           "(H, W) uint8 semantic class (0 sky)")
       .def_property_readonly(
           "instance_id", [](const FrameHandle& f) { return View(f, f.get().instance_id, 1); },
-          "(H, W) uint16 instance (0 sky)")
+          "(H, W) uint32 instance (0 sky)")
       .def_property_readonly(
           "normals", [](const FrameHandle& f) { return View(f, f.get().normal_C, 3); },
           "(H, W, 3) float32 unit normals in the optical frame (0 for sky)")

@@ -63,6 +63,10 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
   const double unit_m = manifest["cameras"][0]["depth_png"]["unit_m"];
   EXPECT_EQ(unit_m, 0.05);
   EXPECT_EQ(manifest["cameras"][0]["depth_png"]["clipped_pixels"], 0);
+  // Instance images in the default format, which a reader learns from the manifest.
+  EXPECT_EQ(manifest["format_version"], 3);
+  EXPECT_EQ(manifest["cameras"][0]["seg_instance"]["format"], "rgb24");
+  EXPECT_EQ(manifest["cameras"][0]["seg_instance"]["max_id"], 16'777'215);
   EXPECT_EQ(manifest["scene"]["sha256"].get<std::string>().size(), 64u);
   EXPECT_FALSE(manifest["renderer"]["gl_renderer"].get<std::string>().empty());
 
@@ -106,8 +110,8 @@ TEST(DatasetCommandTest, FilesExistDecodeAndAgree) {
         engine::DecodeNpy(engine::ReadFileBytes(dir / "front/depth" / (name + ".npy")), name);
     const auto cls =
         engine::DecodePng8(engine::ReadFileBytes(dir / "front/seg_class" / (name + ".png")));
-    const auto ins =
-        engine::DecodePng16(engine::ReadFileBytes(dir / "front/seg_instance" / (name + ".png")));
+    const auto ins = engine::DecodeInstancePng(
+        engine::ReadFileBytes(dir / "front/seg_instance" / (name + ".png")));
     for (std::size_t p = 0; p < mm.pixels.size(); ++p) {
       // Depth PNG = float depth to half its unit (0 = no return, which only the sky is);
       // labels agree with labels.json; sky is 0 in both maps.

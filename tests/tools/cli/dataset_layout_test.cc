@@ -126,8 +126,8 @@ TEST(DatasetLayoutTest, ManifestIntrinsicsAndPosesPutEachBallWhereItWasDrawn) {
     const engine::Quat q_WC(col("attitude_cam_to_ned_w"), col("attitude_cam_to_ned_x"),
                             col("attitude_cam_to_ned_y"), col("attitude_cam_to_ned_z"));
     const std::string name = FrameName(poses.Integer(r, poses.Column("frame")));
-    const auto ins =
-        engine::DecodePng16(engine::ReadFileBytes(dir / "down/seg_instance" / (name + ".png")));
+    const auto ins = engine::DecodeInstancePng(
+        engine::ReadFileBytes(dir / "down/seg_instance" / (name + ".png")));
     const auto mm =
         engine::DecodePng16(engine::ReadFileBytes(dir / "down/depth" / (name + ".png")));
     // Centroid of each instance mask, in OpenCV pixel coordinates (pixel (i, j) centred at u = i, v

@@ -39,7 +39,7 @@ struct Frame {
   engine::Image<float> depth_m;  // float32 planar depth, inf for the sky
   engine::Image<std::uint16_t> depth_png;
   engine::Image<std::uint8_t> class_id;
-  engine::Image<std::uint16_t> instance_id;
+  engine::Image<std::uint32_t> instance_id;
 };
 
 Frame LoadFrame(const engine::CsvText& poses, std::size_t row) {
@@ -54,7 +54,7 @@ Frame LoadFrame(const engine::CsvText& poses, std::size_t row) {
   f.depth_png = engine::DecodePng16(engine::ReadFileBytes(cam / "depth" / (name + ".png")));
   f.class_id = engine::DecodePng8(engine::ReadFileBytes(cam / "seg_class" / (name + ".png")));
   f.instance_id =
-      engine::DecodePng16(engine::ReadFileBytes(cam / "seg_instance" / (name + ".png")));
+      engine::DecodeInstancePng(engine::ReadFileBytes(cam / "seg_instance" / (name + ".png")));
   return f;
 }
 
@@ -116,7 +116,7 @@ TEST(DemoDatasetTest, InstanceIdsAgreeFrameToFrame) {
       for (int u = 1; u + 1 < w; ++u) {
         const double z = a.depth_m.at(u, v);
         if (!std::isfinite(z)) continue;
-        const std::uint16_t id = a.instance_id.at(u, v);
+        const std::uint32_t id = a.instance_id.at(u, v);
         bool inside = true;
         for (int dv = -1; dv <= 1; ++dv)
           for (int du = -1; du <= 1; ++du)

@@ -38,6 +38,52 @@ std::string CheckScene(const std::string& name, double hours) {
       .string();
 }
 
+// 66,560 boxes (more than 16-bit instance ids number) in a 260 x 256 grid, the ground and a
+// quadrotor whose camera writes instance images in `instance_format`.
+std::string ManyObjectsScene(const std::string& name, const std::string& instance_format) {
+  return WriteTempFile(name,
+                       "objects:\n"
+                       "  - primitive: box\n"
+                       "    position_ned_m: [0, 0, -0.5]\n"
+                       "    repeat: {count: 260, step_ned_m: [3, 0, 0], rows: 256, "
+                       "row_step_ned_m: [0, 3, 0]}\n"
+                       "vehicles:\n"
+                       "  - name: quad\n"
+                       "    preset: quad_x\n"
+                       "    start: {position_ned_m: [-20, -20, -0.2]}\n"
+                       "    sensors:\n"
+                       "      - name: down\n"
+                       "        camera:\n"
+                       "          width_px: 64\n"
+                       "          height_px: 48\n"
+                       "          outputs: {segmentation: true}\n"
+                       "          instance_format: " +
+                           instance_format + "\n")
+      .string();
+}
+
+TEST(SceneCheckTest, AcceptsMoreObjectsThan16BitIdsNumber) {
+  const std::string scene = ManyObjectsScene("check_many.yaml", "rgb24");
+  const auto r = testing::RunAiris(&AddSceneCommand, "scene check " + scene);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("objects     66561 (ground 1, structure 66560)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("is valid"), std::string::npos) << r.out;
+}
+
+TEST(SceneCheckTest, Gray16InstanceImagesInAScenePast65535ObjectsAreRefused) {
+  // Ground, 66,560 boxes and the quadrotor's body: 66,562 instance ids, more than 16 bits hold.
+  const std::string scene = ManyObjectsScene("check_many_gray16.yaml", "gray16");
+  const auto r = testing::RunAiris(&AddSceneCommand, "scene check " + scene);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(scene +
+                       ":15:11: vehicles[0].sensors[0].camera.instance_format: gray16 images hold "
+                       "instance ids up to 65535, but the scene has 66562 objects and vehicles "
+                       "(use rgb24; docs/limits.md)"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(SceneCheckTest, PrintsTheSunAirframesAndCameras) {
   const std::string scene = CheckScene("check_day.yaml", 12.0);
   const auto r = testing::RunAiris(&AddSceneCommand, "scene check " + scene);

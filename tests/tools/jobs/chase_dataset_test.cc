@@ -113,13 +113,13 @@ TEST(ChaseDatasetTest, TheFilmedDroneIsInEveryFrameOfTheFilmingCameraAndOnTheCon
     const auto cls =
         engine::DecodePng8(engine::ReadFileBytes(camera_dir / FrameFile("seg_class", f)));
     const auto ins =
-        engine::DecodePng16(engine::ReadFileBytes(camera_dir / FrameFile("seg_instance", f)));
+        engine::DecodeInstancePng(engine::ReadFileBytes(camera_dir / FrameFile("seg_instance", f)));
     const auto depth =
         engine::DecodePng16(engine::ReadFileBytes(camera_dir / FrameFile("depth", f)));
     std::vector<double> ranges_m;
     for (int v = 0; v < ins.height; ++v) {
       for (int u = 0; u < ins.width; ++u) {
-        if (ins.at(u, v) != filmed) continue;
+        if (static_cast<int>(ins.at(u, v)) != filmed) continue;
         EXPECT_EQ(cls.at(u, v), drone_class);
         // Planar depth to range along the pixel's ray.
         ranges_m.push_back(depth.at(u, v) * unit_m * std::hypot(1.0, (u - cx) / fx, (v - cy) / fy));
@@ -168,7 +168,7 @@ TEST(ChaseDatasetTest, TheFilmedDroneIsInEveryFrameOfTheFilmingCameraAndOnTheCon
     const auto cls =
         engine::DecodePng8(engine::ReadFileBytes(camera_dir / FrameFile("seg_class", f)));
     const auto ins =
-        engine::DecodePng16(engine::ReadFileBytes(camera_dir / FrameFile("seg_instance", f)));
+        engine::DecodeInstancePng(engine::ReadFileBytes(camera_dir / FrameFile("seg_instance", f)));
     const auto colours = engine::ColorizeSegmentation(cls, ins, palette);
     int shown = 0;
     for (int v = 0; v < height; ++v) {
@@ -176,7 +176,7 @@ TEST(ChaseDatasetTest, TheFilmedDroneIsInEveryFrameOfTheFilmingCameraAndOnTheCon
         if (cls.at(u, v) != drone_class) {
           EXPECT_NE(palette[cls.at(u, v)], palette[drone_class]) << "class " << int{cls.at(u, v)};
         }
-        if (ins.at(u, v) != filmed) continue;
+        if (static_cast<int>(ins.at(u, v)) != filmed) continue;
         for (int k = 0; k < 3; ++k) {
           EXPECT_EQ(sheet.at(u, row * height + v, k), rgb.at(u, v, k));
           EXPECT_EQ(sheet.at(2 * width + u, row * height + v, k), colours.at(u, v, k));

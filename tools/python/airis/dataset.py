@@ -27,6 +27,20 @@ def _read_png(path):
         return np.array(im)
 
 
+def _read_instance_png(path, fmt):
+    """Instance ids (H, W) uint32 of a seg_instance PNG in the manifest's format: rgb24 (8-bit
+    RGB, id = R + 256 G + 65536 B, COCO panoptic's encoding) or gray16 (16-bit grey)."""
+    image = _read_png(path)
+    if fmt == "rgb24":
+        if image.ndim != 3 or image.dtype != np.uint8:
+            raise ValueError(f"{path}: expected an 8-bit RGB PNG (instance_format rgb24)")
+        rgb = image[:, :, :3].astype(np.uint32)
+        return rgb[:, :, 0] | (rgb[:, :, 1] << 8) | (rgb[:, :, 2] << 16)
+    if image.ndim != 2:
+        raise ValueError(f"{path}: expected a 16-bit grey PNG (instance_format {fmt})")
+    return image.astype(np.uint32)
+
+
 def _read_csv(path):
     """A CSV with a header as a structured array (ints, floats, else text)."""
     with open(path, newline="") as f:
@@ -147,8 +161,9 @@ class CameraFrames:
 
     Frame dict keys (when written): rgb (H, W, 3) uint8; depth_m (H, W) float32 metres (the
     16-bit PNG times its unit, or the .npy floats with --formats npy; 0 PNG values -> inf, no
-    return); depth_raw (H, W) uint16; class_id (H, W) uint8; instance_id (H, W) uint16; normals
-    (H, W, 3) float32; time_ns; T_WC (4, 4) float64 camera optical frame -> world NED.
+    return); depth_raw (H, W) uint16; class_id (H, W) uint8; instance_id (H, W) uint32 (decoded
+    from the format the manifest records: rgb24 or gray16); normals (H, W, 3) float32; time_ns;
+    T_WC (4, 4) float64 camera optical frame -> world NED.
     """
 
     def __init__(self, root, manifest_entry):
@@ -164,6 +179,8 @@ class CameraFrames:
                            [0.0, 0.0, 1.0]])
         depth = manifest_entry.get("depth_png") or {}
         self.depth_unit_m = depth.get("unit_m")
+        # Datasets of format_version 2 and earlier record no format: 16-bit grey.
+        self.instance_format = (manifest_entry.get("seg_instance") or {}).get("format", "gray16")
 
     def __len__(self):
         return len(self.poses)
@@ -202,10 +219,12 @@ class CameraFrames:
             out["depth_m"] = metres
         if os.path.exists(depth_npy):
             out["depth_m"] = np.load(depth_npy)
-        for kind, key in (("seg_class", "class_id"), ("seg_instance", "instance_id")):
-            path = self._file(kind, index, "png")
-            if os.path.exists(path):
-                out[key] = _read_png(path)
+        seg_class = self._file("seg_class", index, "png")
+        if os.path.exists(seg_class):
+            out["class_id"] = _read_png(seg_class)
+        seg_instance = self._file("seg_instance", index, "png")
+        if os.path.exists(seg_instance):
+            out["instance_id"] = _read_instance_png(seg_instance, self.instance_format)
         normals = self._file("normals", index, "npy")
         if os.path.exists(normals):
             out["normals"] = np.load(normals)
@@ -216,7 +235,7 @@ class CameraFrames:
 
         Items are dicts of tensors: rgb float32 (3, H, W) in [0, 1]; depth_m float32 (1, H, W)
         metres (inf: no return); class_id int64 (H, W); instance_id int64 (H, W) (torch has no
-        uint16: the ids are widened); T_WC float64 (4, 4); K float64 (3, 3); time_ns int64.
+        uint32: the ids are widened); T_WC float64 (4, 4); K float64 (3, 3); time_ns int64.
         """
         return _torch_dataset(self, keys)
 
