@@ -8,6 +8,7 @@
 
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
+#include "tests/fixtures/small_camera_scene.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tools/jobs/run_job.h"
 
@@ -16,20 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A small scene: a box in front of a quad with a 64x48 camera looking at it.
-constexpr const char* kScene =
-    "scene: {name: small, seed: 3}\n"
-    "objects:\n"
-    "  - {name: crate, primitive: box, position_ned_m: [8, 0, -1], scale: [2, 2, 2], class: car}\n"
-    "vehicles:\n"
-    "  - name: d\n"
-    "    preset: quad_x\n"
-    "    start: {position_ned_m: [0, 0, -1], on_ground: true}\n"
-    "    sensors:\n"
-    "      - name: cam\n"
-    "        camera:\n"
-    "          {rate_hz: 10, width_px: 64, height_px: 48,\n"
-    "           outputs: {rgb: true, depth_planar: true, segmentation: true}}\n";
+constexpr const char* kScene = testing::kSmallCameraScene;
 
 constexpr const char* kMission =
     "steps:\n"

@@ -11,6 +11,7 @@
 #include "engine/dataset/image_encoding.h"
 #include "engine/mission/domain_randomization.h"
 #include "engine/render/camera_effects.h"
+#include "tests/fixtures/small_camera_scene.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tools/jobs/dataset_job.h"
 
@@ -19,19 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kScene =
-    "scene: {name: small, seed: 3}\n"
-    "objects:\n"
-    "  - {name: crate, primitive: box, position_ned_m: [8, 0, -1], scale: [2, 2, 2], class: car}\n"
-    "vehicles:\n"
-    "  - name: d\n"
-    "    preset: quad_x\n"
-    "    start: {position_ned_m: [0, 0, -1], on_ground: true}\n"
-    "    sensors:\n"
-    "      - name: cam\n"
-    "        camera:\n"
-    "          {rate_hz: 10, width_px: 64, height_px: 48,\n"
-    "           outputs: {rgb: true, depth_planar: true, segmentation: true}}\n";
+constexpr const char* kScene = testing::kSmallCameraScene;
 
 constexpr const char* kSteps =
     "steps:\n"
