@@ -1,9 +1,9 @@
 #include "sensors/barometer.h"
 
 #include "engine/core/config.h"
+#include "engine/core/standard_normal.h"
 #include "engine/environment/atmosphere.h"
 #include "sensors/sensor_checks.h"
-#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -42,8 +42,8 @@ Barometer::Barometer(std::string name, const BarometerConfig& config, engine::Ra
       temperature_stream_(stream.Fork("temperature")) {
   // The drift starts in its stationary distribution, so its statistics do not depend on the run's
   // length.
-  drift_ = config.drift_sigma * StandardNormal(stream_);
-  temperature_offset_k_ = config.temperature_offset_k * StandardNormal(temperature_stream_);
+  drift_ = config.drift_sigma * engine::StandardNormal(stream_);
+  temperature_offset_k_ = config.temperature_offset_k * engine::StandardNormal(temperature_stream_);
 }
 
 std::span<const std::string> Barometer::columns() const { return kColumns; }
@@ -63,13 +63,13 @@ void Barometer::Sample(const engine::SensorContext& context) {
   const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
   const engine::AtmosphereSample air = context.environment->CalcAir(p_WS);
 
-  drift_ = drift_step_.Next(drift_, StandardNormal(stream_));
-  const double white_pa = config_.pressure_noise_pa * StandardNormal(stream_);
+  drift_ = drift_step_.Next(drift_, engine::StandardNormal(stream_));
+  const double white_pa = config_.pressure_noise_pa * engine::StandardNormal(stream_);
 
   latest_.time_ns = context.now_ns;
   latest_.pressure_pa = air.pressure_pa * (1.0 + drift_) + white_pa;
   latest_.temperature_k = air.temperature_k + temperature_offset_k_ +
-                          config_.temperature_noise_k * StandardNormal(temperature_stream_);
+                          config_.temperature_noise_k * engine::StandardNormal(temperature_stream_);
   latest_.altitude_m = engine::ussa1976::CalcAltitudeFromPressure(latest_.pressure_pa);
 }
 

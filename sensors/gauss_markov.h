@@ -4,7 +4,7 @@
 
 #include "engine/core/frames.h"
 #include "engine/core/random.h"
-#include "sensors/standard_normal.h"
+#include "engine/core/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -35,18 +35,18 @@ struct GaussMarkovStep {
 
   /// Three independent axes advanced from `stream` (StandardNormal draws, x, y, z in that order).
   engine::Vec3 Next(const engine::Vec3& x, engine::RandomStream& stream) const {
-    const double nx = StandardNormal(stream);
-    const double ny = StandardNormal(stream);
-    const double nz = StandardNormal(stream);
+    const double nx = engine::StandardNormal(stream);
+    const double ny = engine::StandardNormal(stream);
+    const double nz = engine::StandardNormal(stream);
     return engine::Vec3(a * x.x() + b * nx, a * x.y() + b * ny, a * x.z() + b * nz);
   }
 };
 
 /// Three standard normal draws (StandardNormal; x, y, z in that order), times `sigma`.
 inline engine::Vec3 GaussianVec3(engine::RandomStream& stream, double sigma) {
-  const double x = StandardNormal(stream);
-  const double y = StandardNormal(stream);
-  const double z = StandardNormal(stream);
+  const double x = engine::StandardNormal(stream);
+  const double y = engine::StandardNormal(stream);
+  const double z = engine::StandardNormal(stream);
   return engine::Vec3(sigma * x, sigma * y, sigma * z);
 }
 

@@ -5,9 +5,9 @@
 #include <limits>
 
 #include "engine/core/config.h"
+#include "engine/core/standard_normal.h"
 #include "sensors/gauss_markov.h"
 #include "sensors/sensor_checks.h"
-#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -189,9 +189,10 @@ void Gps::Sample(const engine::SensorContext& context) {
   }
   slow_error_ = slow_error_step_.Next(slow_error_, stream_);
   const Vec3 white = GaussianVec3(stream_, 1.0);
-  const double vn_noise = config_.velocity_noise_m_s * StandardNormal(stream_);
-  const double ve_noise = config_.velocity_noise_m_s * StandardNormal(stream_);
-  const double vd_noise = config_.velocity_down_noise_m_s * StandardNormal(vertical_stream_);
+  const double vn_noise = config_.velocity_noise_m_s * engine::StandardNormal(stream_);
+  const double ve_noise = config_.velocity_noise_m_s * engine::StandardNormal(stream_);
+  const double vd_noise =
+      config_.velocity_down_noise_m_s * engine::StandardNormal(vertical_stream_);
   const double eph = CalcEph_m(now);
   const double epv = CalcEpv_m(now);
 

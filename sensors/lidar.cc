@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "engine/core/config.h"
+#include "engine/core/standard_normal.h"
 #include "sensors/sensor_checks.h"
-#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -178,7 +178,7 @@ void Lidar::Sample(const engine::SensorContext& context) {
   for (std::size_t i = 0; i < hits_.size(); ++i) {
     const engine::RayHit& hit = hits_[i];
     LidarPoint& point = scan_.points[i];
-    const double noise_m = config_.range_noise_m * StandardNormal(stream_);
+    const double noise_m = config_.range_noise_m * engine::StandardNormal(stream_);
     point.hit = hit.hit();
     point.class_id = hit.class_id;
     point.instance_id = hit.instance_id;

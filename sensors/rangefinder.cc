@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "engine/core/config.h"
+#include "engine/core/standard_normal.h"
 #include "sensors/sensor_checks.h"
-#include "sensors/standard_normal.h"
 
 namespace airis::sensors {
 
@@ -72,7 +72,7 @@ void Rangefinder::Sample(const engine::SensorContext& context) {
 
   // One draw per sample whether or not there is a return, so the stream does not depend on the
   // scene.
-  const double noise_m = config_.noise_m * StandardNormal(stream_);
+  const double noise_m = config_.noise_m * engine::StandardNormal(stream_);
   latest_.time_ns = context.now_ns;
   latest_.hit = hit.hit();
   latest_.min_range_m = static_cast<float>(config_.min_range_m);

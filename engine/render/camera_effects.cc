@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/standard_normal.h"
 
 namespace airis::engine {
 namespace {
@@ -51,61 +52,6 @@ constexpr double kMaxMeteredEv = 16.0;
 // mean and variance; skewness 1/sqrt(mean) < 0.23).
 constexpr double kExactPoissonBelow_e = 20.0;
 
-// Standard normal draws by Marsaglia and Tsang's ziggurat (J. Stat. Softw. 5(8), 2000), 128
-// layers, with the layer index taken from bits apart from the sign and magnitude (Doornik 2005's
-// remedy for the original's correlation): a few times cheaper than the polar method, and the noise
-// draws about a million per frame.
-struct Ziggurat {
-  static constexpr int kLayers = 128;
-  static constexpr double kR = 3.442619855899;  // start of the tail
-  static constexpr double kArea = 9.91256303526217e-3;
-  std::array<double, kLayers> x{};  // layer edges, x[0] the base's equivalent width
-  std::array<double, kLayers> f{};  // exp(-x^2 / 2) at the edges
-
-  Ziggurat() {
-    x[0] = kArea / std::exp(-0.5 * kR * kR);
-    x[1] = kR;
-    f[0] = 1.0;  // unused for layer 0 (the base)
-    f[1] = std::exp(-0.5 * kR * kR);
-    for (int i = 2; i < kLayers; ++i) {
-      x[i] = std::sqrt(-2.0 * std::log(kArea / x[i - 1] + f[i - 1]));
-      f[i] = std::exp(-0.5 * x[i] * x[i]);
-    }
-  }
-};
-
-const Ziggurat& ZigguratTables() {
-  static const Ziggurat z;
-  return z;
-}
-
-double FastGaussian(const Ziggurat& z, RandomStream& rng) {
-  for (;;) {
-    const std::uint64_t bits = rng.NextU64();
-    const int i = static_cast<int>(bits & (Ziggurat::kLayers - 1));
-    const double sign = (bits & 0x100) ? -1.0 : 1.0;
-    const double u = static_cast<double>(bits >> 11) * 0x1.0p-53;  // [0, 1)
-    // Layer i spans [0, x_i) over heights [f(x_{i}), f(x_{i+1})) (layer 0 the base and tail).
-    const double edge = z.x[i];
-    const double inner = i + 1 < Ziggurat::kLayers ? z.x[i + 1] : 0.0;
-    const double xv = u * edge;
-    if (xv < inner) return sign * xv;  // inside the rectangle under the curve
-    if (i == 0) {
-      // The base: a rectangle of width x_0 over [0, f(R)) and the tail beyond R.
-      if (xv < Ziggurat::kR) return sign * xv;
-      double t, y;
-      do {
-        t = -std::log(1.0 - rng.Uniform01()) / Ziggurat::kR;
-        y = -std::log(1.0 - rng.Uniform01());
-      } while (2.0 * y < t * t);
-      return sign * (Ziggurat::kR + t);
-    }
-    // The wedge between the rectangle and the curve.
-    const double y0 = z.f[i], y1 = i + 1 < Ziggurat::kLayers ? z.f[i + 1] : 1.0;
-    if (y0 + rng.Uniform01() * (y1 - y0) < std::exp(-0.5 * xv * xv)) return sign * xv;
-  }
-}
-
 }  // namespace
 
 void CameraEffectsConfig::Validate() const {
@@ -124,10 +70,9 @@ std::uint16_t SampleSensorDn(double mean_e, double full_well_e, double read_nois
     const double limit = std::exp(-std::max(mean_e, 0.0));
     int n = 0;
     for (double p = rng.Uniform01(); p > limit; p *= rng.Uniform01()) ++n;
-    e = n + read_noise_e * FastGaussian(ZigguratTables(), rng);
+    e = n + read_noise_e * StandardNormal(rng);
   } else {
-    e = mean_e +
-        std::sqrt(mean_e + read_noise_e * read_noise_e) * FastGaussian(ZigguratTables(), rng);
+    e = mean_e + std::sqrt(mean_e + read_noise_e * read_noise_e) * StandardNormal(rng);
   }
   const double max_dn = std::ldexp(1.0, adc_bits) - 1.0;
   const double gain_dn_e = max_dn / full_well_e;

@@ -1,4 +1,4 @@
-#include "sensors/standard_normal.h"
+#include "engine/core/standard_normal.h"
 
 #include <gtest/gtest.h>
 
@@ -6,14 +6,14 @@
 #include <cmath>
 #include <vector>
 
-namespace airis::sensors {
+namespace airis::engine {
 namespace {
 
 double NormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
 TEST(StandardNormalTest, MomentsMatchTheNormalDistribution) {
   // GIVEN 4 million draws
-  engine::RandomStream stream(123);
+  RandomStream stream(123);
   const int n = 4'000'000;
   double s1 = 0, s2 = 0, s3 = 0, s4 = 0;
   for (int i = 0; i < n; ++i) {
@@ -32,7 +32,7 @@ TEST(StandardNormalTest, MomentsMatchTheNormalDistribution) {
 }
 
 TEST(StandardNormalTest, DistributionAndTailsMatchTheNormalCdf) {
-  engine::RandomStream stream(7);
+  RandomStream stream(7);
   const int n = 1'000'000;
   std::vector<double> x(n);
   for (double& v : x) v = StandardNormal(stream);
@@ -54,10 +54,10 @@ TEST(StandardNormalTest, DistributionAndTailsMatchTheNormalCdf) {
 }
 
 TEST(StandardNormalTest, SameStreamSameDraws) {
-  engine::RandomStream a(5);
-  engine::RandomStream b(5);
+  RandomStream a(5);
+  RandomStream b(5);
   for (int i = 0; i < 1000; ++i) ASSERT_EQ(StandardNormal(a), StandardNormal(b));
 }
 
 }  // namespace
-}  // namespace airis::sensors
+}  // namespace airis::engine

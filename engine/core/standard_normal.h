@@ -6,13 +6,13 @@
 
 #include "engine/core/random.h"
 
-namespace airis::sensors {
+namespace airis::engine {
 
 namespace ziggurat {
 /// Right edges x[i] of the 256 layers of the ziggurat (x[256] = 0); filled once at start-up.
 extern const std::array<double, 257> kLayerEdges;
 /// The rare cases (wedges and the tail, about 1% of draws), continuing from the 64-bit draw `u`.
-double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u);
+double SampleSlowPath(RandomStream& stream, std::uint64_t u);
 }  // namespace ziggurat
 
 /// A standard normal draw N(0, 1) from `stream` by the ziggurat method (Marsaglia and Tsang, "The
@@ -21,9 +21,10 @@ double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u);
 /// disjoint bits of one 64-bit draw, which avoids the correlation Doornik (2005) found in the
 /// 32-bit original. About 99% of draws cost one NextU64, a multiply and a compare (inline here);
 /// RandomStream::Gaussian (polar method: log, sqrt, division, rejection) costs several times more,
-/// which matters for an IMU drawing 12 normals a sample at 1 kHz. Deterministic: the same stream
+/// which matters for an IMU drawing 12 normals a sample at 1 kHz and a camera's noise drawing
+/// one per pixel and channel. Deterministic: the same stream
 /// gives the same draws.
-inline double StandardNormal(engine::RandomStream& stream) {
+inline double StandardNormal(RandomStream& stream) {
   const std::uint64_t u = stream.NextU64();
   const std::size_t i = u & 0xFF;
   const double x = static_cast<double>(u >> 11) * 0x1.0p-53 * ziggurat::kLayerEdges[i];
@@ -34,4 +35,4 @@ inline double StandardNormal(engine::RandomStream& stream) {
   return ziggurat::SampleSlowPath(stream, u);
 }
 
-}  // namespace airis::sensors
+}  // namespace airis::engine

@@ -1,8 +1,8 @@
-#include "sensors/standard_normal.h"
+#include "engine/core/standard_normal.h"
 
 #include <cmath>
 
-namespace airis::sensors::ziggurat {
+namespace airis::engine::ziggurat {
 
 namespace {
 
@@ -40,7 +40,7 @@ std::array<double, kLayers + 1> MakeEdgeDensities() {
 const std::array<double, kLayers + 1> kEdgeDensities = MakeEdgeDensities();
 }  // namespace
 
-double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u) {
+double SampleSlowPath(RandomStream& stream, std::uint64_t u) {
   for (;;) {
     const std::size_t i = u & 0xFF;
     const bool negative = ((u >> 8) & 1) != 0;
@@ -65,4 +65,4 @@ double SampleSlowPath(engine::RandomStream& stream, std::uint64_t u) {
   }
 }
 
-}  // namespace airis::sensors::ziggurat
+}  // namespace airis::engine::ziggurat
