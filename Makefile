@@ -20,10 +20,11 @@ build: configure
 
 # The whole test suite (GoogleTest, the layer and format checks, pytest through CTest), warnings as
 # errors, run twice in random order with one process per core: a test that depends on another's files
-# or on the order shows up. The sanitized build and its fuzz targets are `make sanitized` (below).
+# or on the order shows up. Then the sanitized build with its fuzz targets (`make sanitized`, below).
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS) --schedule-random
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS) --schedule-random
+	$(MAKE) sanitized
 
 # The sanitized build (docs/fuzzing.md), in its own folder with Debian's clang 14: the tests of the
 # libraries that parse untrusted input under AddressSanitizer and UndefinedBehaviorSanitizer, and each
