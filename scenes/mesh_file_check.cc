@@ -16,6 +16,7 @@
 #include "engine/core/config.h"
 #include "engine/core/limits.h"
 #include "scenes/mesh_file_check_dae.h"
+#include "scenes/mesh_file_check_obj.h"
 #include "scenes/mesh_file_check_ply.h"
 #include "scenes/mesh_loader.h"
 
@@ -160,106 +161,6 @@ void CheckStl(const std::string& path, std::uintmax_t file_bytes) {
          " (and it is no ASCII STL file, which starts with 'solid')");
 }
 
-/// Wavefront OBJ: every index of a face, line or point (`f`, `l`, `p`; `v`, `v/vt`, `v//vn` or
-/// `v/vt/vn`, negative ones counting back from the last element read) names a position, texture
-/// coordinate or normal that the file has. assimp 5.2.5 refuses one that does not, but leaks the
-/// meshes read until then (docs/fuzzing.md, "Findings").
-/// The rest of an OBJ `v`, `vt` or `vn` line (`line`, after its first word): numbers only, as many
-/// as the element has (v: x y z, with w or an r g b colour: 3, 4, 6 or 7; vt: 1 to 3; vn: 3).
-/// assimp 5.2.5 throws on a line it cannot count ("1.2!0.1 -1.2") and leaks the meshes read so far
-/// (docs/fuzzing.md, "Findings").
-void CheckObjNumbers(std::istringstream& line, const std::string& word, std::size_t number) {
-  std::size_t values = 0;
-  std::string value;
-  while (line >> value) {
-    const char* first = value.data() + (value[0] == '+' ? 1 : 0);
-    const char* last = value.data() + value.size();
-    double x = 0.0;
-    const auto r = std::from_chars(first, last, x);
-    if (r.ec != std::errc() || r.ptr != last) {
-      Refuse("OBJ line " + Count(number) + ": '" + word + "' holds " + engine::QuoteValue(value) +
-             " where a number belongs");
-    }
-    ++values;
-  }
-  const bool fits = word == "v"    ? values == 3 || values == 4 || values == 6 || values == 7
-                    : word == "vt" ? values >= 1 && values <= 3
-                                   : values == 3;
-  if (!fits) {
-    Refuse("OBJ line " + Count(number) + ": '" + word + "' with " + Count(values) +
-           " numbers (expected " +
-           (word == "v"    ? "3, 4, 6 or 7"
-            : word == "vt" ? "1 to 3"
-                           : "3") +
-           ")");
-  }
-}
-
-void CheckObj(const std::string& text) {
-  // A NUL byte ends assimp's reading of a line early, and assimp 5.2.5 leaks what it read of a file
-  // cut that way (docs/fuzzing.md, "Findings"); OBJ is text, so refuse it.
-  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
-    const auto line =
-        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
-    Refuse("OBJ line " + Count(static_cast<std::size_t>(line)) +
-           ": a NUL byte (an OBJ file is text)");
-  }
-  // Elements read so far: v, vt, vn.
-  std::int64_t counts[3] = {0, 0, 0};
-  // The largest positive index of each kind, and where it was.
-  std::int64_t largest[3] = {0, 0, 0};
-  std::size_t largest_line[3] = {0, 0, 0};
-  static constexpr const char* kKinds[] = {"position (v)", "texture coordinate (vt)",
-                                           "normal (vn)"};
-  std::size_t at = 0;
-  for (std::size_t number = 1; at < text.size(); ++number) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    std::istringstream line(text.substr(at, end - at));
-    at = end + 1;
-    std::string word;
-    if (!(line >> word)) continue;
-    if (word == "v" || word == "vt" || word == "vn") {
-      ++counts[word == "v" ? 0 : word == "vt" ? 1 : 2];
-      CheckObjNumbers(line, word, number);
-      continue;
-    }
-    if (word != "f" && word != "l" && word != "p") continue;
-    const std::string where = "OBJ line " + Count(number) + ": ";
-    std::string corner;
-    while (line >> corner) {
-      std::size_t from = 0;
-      for (int kind = 0; kind < 3 && from <= corner.size(); ++kind) {
-        const std::size_t slash = std::min(corner.find('/', from), corner.size());
-        const std::string_view part(corner.data() + from, slash - from);
-        from = slash + 1;
-        if (part.empty() && kind > 0) continue;  // v//vn, or v/vt without a normal
-        std::int64_t index = 0;
-        const auto r = std::from_chars(part.data(), part.data() + part.size(), index);
-        if (r.ec != std::errc() || r.ptr != part.data() + part.size() || index == 0) {
-          Refuse(where + "'" + word + "' corner " + engine::QuoteValue(corner) +
-                 " is not of the form v, v/vt, v//vn or v/vt/vn (indices from 1, or negative)");
-        }
-        if (index < 0 && -index > counts[kind]) {
-          Refuse(where + "index " + Count(static_cast<std::uint64_t>(-index)) +
-                 " from the end names no " + kKinds[kind] + ": " +
-                 Count(static_cast<std::uint64_t>(counts[kind])) + " are read before it");
-        }
-        if (index > largest[kind]) {
-          largest[kind] = index;
-          largest_line[kind] = number;
-        }
-      }
-    }
-  }
-  for (int kind = 0; kind < 3; ++kind) {
-    if (largest[kind] > counts[kind]) {
-      Refuse("OBJ line " + Count(largest_line[kind]) + ": index " +
-             Count(static_cast<std::uint64_t>(largest[kind])) + " names no " + kKinds[kind] +
-             ": the file has " + Count(static_cast<std::uint64_t>(counts[kind])));
-    }
-  }
-}
-
 /// Bytes of one element of a glTF accessor (glTF 2.0, 3.6.2).
 std::uint64_t AccessorElementBytes(const nlohmann::json& accessor) {
   static const std::pair<const char*, std::uint64_t> kComponents[] = {
@@ -400,6 +301,10 @@ void CheckGlb(const std::string& path, std::uintmax_t file_bytes) {
   if (length > file_bytes) {
     Refuse("the header declares " + Count(length) + " bytes but the file has " + Count(file_bytes));
   }
+  if (length < 20) {
+    Refuse("the header declares " + Count(length) +
+           " bytes, fewer than the 20 of the GLB header and its first chunk's header");
+  }
   const std::uint64_t json_bytes = LittleEndian(std::string_view(header).substr(12, 4));
   if (LittleEndian(std::string_view(header).substr(16, 4)) != 0x4E4F534Au) {
     Refuse("the first GLB chunk is not JSON");
@@ -467,7 +372,7 @@ void CheckMeshFileBeforeImport(const std::string& path) {
   if (extension == "ply") CheckPlyFile(path, bytes);
   if (extension == "stl") CheckStl(path, bytes);
   if (extension == "dae") CheckDaeText(ReadBytes(path, 0, bytes));
-  if (extension == "obj") CheckObj(ReadBytes(path, 0, bytes));
+  if (extension == "obj") CheckObjFile(path, ReadBytes(path, 0, bytes));
   if (extension == "fbx") CheckFbx(path, bytes);
   if (extension == "glb" || extension == "gltf") {
     // The glTF importer reads either form whatever the extension says.

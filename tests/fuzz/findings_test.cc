@@ -60,6 +60,9 @@ std::string ErrorOf(const std::string& target, const std::string& input) {
       const std::string extension =
           extensions[static_cast<unsigned char>(input.at(0)) % extensions.size()];
       const fs::path path = testing::WriteTempFile("finding." + extension, input.substr(1));
+      // The target keeps the example landing pad's material library next to its input.
+      fs::copy_file("scenes/assets/landing_pad.mtl", path.parent_path() / "landing_pad.mtl",
+                    fs::copy_options::overwrite_existing);
       LoadMeshFile(path.string(), MeshAxes::kYUp);
     } else if (target == "scene") {
       BuildWorldWithoutCameras(LoadSceneFromString(input, "scenes/fuzz_input.yaml"));

@@ -3,7 +3,9 @@
 // extensions scenes accept, in the order of scenes::MeshFileExtensions()); the rest is the file.
 // tests/fuzz/make_corpus.py writes the seeds that way. A refused file throws
 // scenes::MeshLoadError; anything else (another exception, a crash, a sanitizer report, a hang,
-// gigabytes allocated, inside airis or inside assimp) is a finding.
+// gigabytes allocated, inside airis or inside assimp) is a finding. The example landing pad's
+// material library is copied next to the input (when the target runs from the source folder, as
+// CTest runs it), so that the OBJ seeds' `mtllib landing_pad.mtl` reaches assimp's MTL reader.
 #include <unistd.h>
 
 #include <cstddef>
@@ -11,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 #include "scenes/mesh_file_check.h"
 #include "scenes/mesh_loader.h"
@@ -25,6 +28,9 @@ const fs::path& WorkDir() {
     const fs::path d =
         fs::temp_directory_path() / ("airis_mesh_fuzzer_" + std::to_string(getpid()));
     fs::create_directories(d);
+    std::error_code ignored;  // without the example (another folder), the seeds' mtllib is refused
+    fs::copy_file("scenes/assets/landing_pad.mtl", d / "landing_pad.mtl",
+                  fs::copy_options::overwrite_existing, ignored);
     return d;
   }();
   return dir;

@@ -149,5 +149,89 @@ TEST(MeshFileCheckTest, BrokenPlyAndStlAreRefusedWithTheirReason) {
   }
 }
 
+// Each rule of the OBJ grammar (scenes/mesh_file_check_obj.h): what assimp 5.2.5 would misread,
+// throw on (leaking what it built) or read out of bounds on is refused with its line.
+TEST(MeshFileCheckTest, BrokenObjIsRefusedWithItsLine) {
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const Refusal cases[] = {
+      {"obj", tri + "f 1 2 3\n", "ok 1"},
+      {"obj", "# a comment\r\n" + tri + "\r\nvt 0 0\r\nvt 1 0\r\nvt 0 1\r\nf 1/1 2/2 3/3\r\n",
+       "ok 1"},
+      {"obj", tri + "vn 0 0 1\nf 1//1 2//1 3//1\n", "ok 1"},
+      {"obj", "v 0 0 0 1\nv 1 0 0 2\nv 0 1 0 1\nf -3 -2 -1\n", "ok 1"},
+      {"obj", tri + "f 1 2 0\n", "OBJ line 4: 'f' corner '0' is not of the form"},
+      {"obj", tri + "f 1 2 4\n", "OBJ line 4: index 4 names no position (v): the file has 3"},
+      {"obj", tri + "f 1 2 -4\n", "OBJ line 4: index 4 from the end names no position (v)"},
+      {"obj", tri + "f 1 2\n", "OBJ line 4: 'f' with 2 corners (at least 3)"},
+      {"obj", tri + "l 1\n", "OBJ line 4: 'l' with 1 corners (at least 2)"},
+      {"obj", tri + "p 1/1\n", "OBJ line 4: 'p' corner '1/1': a point names a position (v) only"},
+      {"obj", tri + "vt 0 0\nf 1/1 2 3\n",
+       "OBJ line 5: 'f' corner '2' is not of the form of the statement's first corner '1/1'"},
+      {"obj", tri + "f 1/1/1/1 2 3\n", "OBJ line 4: 'f' corner '1/1/1/1' is not of the form"},
+      {"obj", tri + "f 1 2 3 # end\n", "OBJ line 4: 'f' corner '#' is not of the form"},
+      {"obj", tri + "vt 0\n", "OBJ line 4: 'vt' with 1 numbers (expected 2 or 3)"},
+      {"obj", tri + "vn 0 0\n", "OBJ line 4: 'vn' with 2 numbers (expected 3)"},
+      {"obj", "v 0 0 0 0 0\n", "OBJ line 1: 'v' with 5 numbers (expected 3, 4 or 6"},
+      {"obj", "v 0 0 0 1 1 1 1\n", "OBJ line 1: 'v' with 7 numbers"},
+      {"obj", "v 0 0 0 0\n", "OBJ line 1: 'v' with a weight w of 0"},
+      {"obj", "v 0 0 nan\n", "OBJ line 1: 'v' holds 'nan' where a number belongs"},
+      {"obj", "v 0 0 +-1\n", "OBJ line 1: 'v' holds '+-1' where a number belongs"},
+      {"obj", "v 0 0 .5\n", "OBJ line 1: 'v' holds '.5' where a number belongs"},
+      {"obj", "v 0 0 -.5\nv 1 0 +0.5\nv 0 1 1e-3\nf 1 2 3\n", "ok 1"},
+      {"obj", "v 0 0 1e999\n", "OBJ line 1: 'v' holds '1e999' where a number belongs"},
+      {"obj", "v 0 0 0 1 1 1\nv 1 0 0\n", "vertex colours on some vertices only"},
+      {"obj", "vtx 0 0\n", "OBJ line 1: unknown or unsupported OBJ statement 'vtx'"},
+      {"obj", tri + "lod 0\n", "OBJ line 4: unknown or unsupported OBJ statement 'lod'"},
+      {"obj", tri + "cstype bspline\n", "unknown or unsupported OBJ statement 'cstype'"},
+      {"obj", tri + " f 1 2 3\n", "OBJ line 4: a statement indented with white space"},
+      {"obj", tri + "f 1 2 \\\n3\n", "OBJ line 4: a line continued with '\\'"},
+      {"obj", tri + "f 1\v2 3\n", "OBJ line 4: a control character (byte 0x0b"},
+      {"obj", tri + "usemtl\n", "OBJ line 4: 'usemtl' without a material name"},
+      {"obj", "mtllib\n" + tri, "OBJ line 1: 'mtllib' without a file name"},
+      {"obj", "mtllib nothing_here.mtl\n" + tri,
+       "'mtllib' names 'nothing_here.mtl', which is not a file"},
+      {"obj", "mtllib mesh.obj\n" + tri, "'mtllib' names 'mesh.obj', not a .mtl file"},
+      {"obj", "mtllib m.mtl \n" + tri, "'mtllib' file name 'm.mtl ' ends in white space"},
+  };
+  for (const Refusal& c : cases) {
+    const std::string got = LoadText(c.extension, c.bytes);
+    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
+  }
+}
+
+// The material library an OBJ names is read as strictly: statements assimp 5.2.5 would write
+// through a null material, throw on, or misread are refused, naming the MTL file and its line.
+TEST(MeshFileCheckTest, BrokenMtlIsRefusedWithItsLine) {
+  const std::string obj = "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const struct {
+    std::string mtl;
+    const char* fragment;
+  } cases[] = {
+      {"# materials\nnewmtl a\n  Kd 0.5 0.5 0.5\n  Ns 10\n  illum 2\n  d 1\n", "ok 1"},
+      {"newmtl a\nmap_Kd -bm 0.5 -o 0 0 0 -clamp on tex.png\n", "texture file not found"},
+      {"Kd 1 1 1\nnewmtl a\n", "MTL file m.mtl line 1: 'Kd' before the first 'newmtl'"},
+      {"aniso 1\n", "MTL file m.mtl line 1: 'aniso' before the first 'newmtl'"},
+      {"newmtl a\naniso 1\n",
+       "MTL file m.mtl line 2: unknown or unsupported MTL statement 'aniso'"},
+      {"newmtl a\ndecal x.png\n", "unknown or unsupported MTL statement 'decal'"},
+      {"newmtl a\nKd 1 1\n", "MTL file m.mtl line 2: 'Kd' with 2 numbers (expected 1 or 3)"},
+      {"newmtl a\nNs high\n", "MTL file m.mtl line 2: 'Ns' holds 'high' where a number belongs"},
+      {"newmtl a\nillum 12\n", "'illum' takes one whole number from 0 to 10"},
+      {"newmtl a\nmap_Kd -bm x tex.png\n", "'map_Kd' holds 'x' where a number belongs"},
+      {"newmtl a\nmap_Kd -s 2 tex.png\n", "texture option '-s' needs 3 value(s)"},
+      {"newmtl a\nmap_Kd -zoom 2 tex.png\n", "unknown texture option '-zoom'"},
+      {"newmtl a\nmap_Kd\n", "'map_Kd' without a file name"},
+      {"  newmtl a\n", "MTL file m.mtl line 1: a statement indented with white space"},
+      {"newmtl\n", "MTL file m.mtl line 1: 'newmtl' without a material name"},
+  };
+  const fs::path dir = testing::MakeTempFolder("mtl");
+  for (const auto& c : cases) {
+    std::ofstream(dir / "m.mtl", std::ios::binary) << c.mtl;
+    std::ofstream(dir / "mesh.obj", std::ios::binary) << obj;
+    const std::string got = Load(dir / "mesh.obj");
+    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
+  }
+}
+
 }  // namespace
 }  // namespace airis::scenes
