@@ -22,11 +22,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A folder of this process's own (libFuzzer's -jobs and -fork run several processes).
+// A fresh folder of this process's own (libFuzzer's -jobs and -fork run several processes) in the
+// temporary folder, which tests/fuzz/run_fuzzer.sh points into its work folder; emptied first (a
+// folder left by an earlier process of the same id would hold other files that inputs could name).
 const fs::path& WorkDir() {
   static const fs::path dir = [] {
     const fs::path d =
         fs::temp_directory_path() / ("airis_mesh_fuzzer_" + std::to_string(getpid()));
+    fs::remove_all(d);
     fs::create_directories(d);
     std::error_code ignored;  // without the example (another folder), the seeds' mtllib is refused
     fs::copy_file("scenes/assets/landing_pad.mtl", d / "landing_pad.mtl",

@@ -28,6 +28,11 @@ case $budget in
   *) limit=(-max_total_time="$budget") ;;
 esac
 mkdir -p "$work/corpus" "$work/findings"
+# Files a target writes (the mesh target's input files) go under WORK_DIR/tmp, emptied here, not
+# into the system's temporary folder.
+rm -rf "$work/tmp"
+mkdir -p "$work/tmp"
+export TMPDIR="$work/tmp"
 find "${corpora[@]}" -type f | LC_ALL=C sort | paste -sd, > "$work/seeds"
 export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
