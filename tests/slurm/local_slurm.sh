@@ -65,6 +65,18 @@ is_our_stepd() {
   return 1
 }
 
+# True when pid $1 is a child of this shell that has not yet become its daemon: between the fork and
+# the daemon's exec it runs as a subshell, then env and setsid, none with the tag in its environment
+# (under load that can take a while). A child that exited (a zombie) is not starting.
+starting() {
+  local pid="$1" stat run_state ppid
+  [ -n "$pid" ] || return 1
+  stat="$(cat "/proc/$pid/stat" 2>/dev/null)" || return 1
+  stat="${stat##*) }"  # the fields after "pid (comm) ": state, ppid, ...
+  read -r run_state ppid _ <<<"$stat"
+  [ "$run_state" != Z ] && [ "$ppid" = "$BASHPID" ]
+}
+
 recorded_pid() {
   cat "$1/pids/$2" 2>/dev/null || true
 }
@@ -182,7 +194,7 @@ launch() {
 }
 
 cmd_start() {
-  local state node hw d t0 waited=0 state_now=""
+  local state node hw d pid t0 waited=0 state_now=""
   state="$(abs_dir "${1:-}")"
   require_root start
   for d in munged mungekey slurmctld slurmd sinfo; do
@@ -241,7 +253,8 @@ cmd_start() {
   export SLURM_CONF="$state/slurm.conf"
   while :; do
     for d in "${DAEMONS[@]}"; do
-      if ! is_ours "$(recorded_pid "$state" "$d")" "$state"; then
+      pid="$(recorded_pid "$state" "$d")"
+      if ! is_ours "$pid" "$state" && ! starting "$pid"; then
         show_logs "$state"
         stop_daemons "$state"
         die "$d exited during start (logs above; state kept in $state)"
