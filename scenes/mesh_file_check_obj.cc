@@ -190,7 +190,7 @@ void CheckMtl(const std::string& name, std::string_view text) {
         }
         if (IsOneOf(k, {"Ka", "Kd", "Ks", "Ke", "Tf", "Ps"})) {
           RequireCount(s, {1, 3}, "1 or 3");
-        } else if (IsOneOf(k, {"d", "Tr", "Ns", "Ni", "Pr", "Pm", "Pc", "Pcr"})) {
+        } else if (IsOneOf(k, {"d", "Tr", "Ns", "Ni", "Pr", "Pm", "Pc", "Pcr", "sharpness"})) {
           RequireCount(s, {1}, "1");
         } else if (k == "illum") {
           int model = -1;

@@ -19,9 +19,9 @@ namespace airis::scenes {
 ///  - `o`, `g`, `s`, `usemtl NAME`, `mtllib FILE` (a regular `.mtl` file next to the OBJ, read as
 ///    below).
 /// An MTL file: `newmtl NAME` before any other statement; `Ka`, `Kd`, `Ks`, `Ke`, `Tf`, `Ps` with
-/// 1 or 3 numbers; `d`, `Tr`, `Ns`, `Ni`, `Pr`, `Pm`, `Pc`, `Pcr` with one; `illum` with a whole
-/// number; texture statements (`map_Kd`, `bump`, `disp`, `norm`, ...) with known options and a
-/// file name. Throws MeshLoadError naming the file and line.
+/// 1 or 3 numbers; `d`, `Tr`, `Ns`, `Ni`, `Pr`, `Pm`, `Pc`, `Pcr`, `sharpness` with one; `illum`
+/// with a whole number; texture statements (`map_Kd`, `bump`, `disp`, `norm`, ...) with known
+/// options and a file name. Throws MeshLoadError naming the file and line.
 void CheckObjFile(const std::string& path, const std::string& text);
 
 }  // namespace airis::scenes

@@ -207,7 +207,8 @@ TEST(MeshFileCheckTest, BrokenMtlIsRefusedWithItsLine) {
     std::string mtl;
     const char* fragment;
   } cases[] = {
-      {"# materials\nnewmtl a\n  Kd 0.5 0.5 0.5\n  Ns 10\n  illum 2\n  d 1\n", "ok 1"},
+      {"# materials\nnewmtl a\n  Kd 0.5 0.5 0.5\n  Ns 10\n  illum 2\n  d 1\n  sharpness 60\n",
+       "ok 1"},
       {"newmtl a\nmap_Kd -bm 0.5 -o 0 0 0 -clamp on tex.png\n", "texture file not found"},
       {"Kd 1 1 1\nnewmtl a\n", "MTL file m.mtl line 1: 'Kd' before the first 'newmtl'"},
       {"aniso 1\n", "MTL file m.mtl line 1: 'aniso' before the first 'newmtl'"},
