@@ -16,6 +16,7 @@
 #include "engine/core/config.h"
 #include "engine/core/limits.h"
 #include "scenes/mesh_file_check_dae.h"
+#include "scenes/mesh_file_check_fbx.h"
 #include "scenes/mesh_file_check_obj.h"
 #include "scenes/mesh_file_check_ply.h"
 #include "scenes/mesh_loader.h"
@@ -325,31 +326,6 @@ void CheckGlb(const std::string& path, std::uintmax_t file_bytes) {
 }
 
 }  // namespace
-
-/// FBX: binary (its 21-byte magic "Kaydara FBX Binary  " and a NUL) or ASCII whose first record,
-/// after `;` comment lines, is `FBXHeaderExtension:` as every FBX writer puts it. assimp 5.2.5
-/// reads other bytes as ASCII FBX and leaks a token when its tokenizer fails (docs/fuzzing.md,
-/// "Findings").
-void CheckFbx(const std::string& path, std::uintmax_t file_bytes) {
-  static constexpr std::string_view kBinaryMagic("Kaydara FBX Binary  \0", 21);
-  static constexpr std::string_view kFirstRecord = "FBXHeaderExtension:";
-  const std::string head = ReadBytes(path, 0, std::min<std::uintmax_t>(file_bytes, 64 * 1024));
-  if (head.compare(0, kBinaryMagic.size(), kBinaryMagic) == 0) return;
-  std::size_t at = 0;
-  while (at < head.size()) {
-    if (std::isspace(static_cast<unsigned char>(head[at]))) {
-      ++at;
-    } else if (head[at] == ';') {
-      at = std::min(head.find('\n', at), head.size());
-    } else {
-      break;
-    }
-  }
-  if (head.compare(at, kFirstRecord.size(), kFirstRecord) != 0) {
-    Refuse("not an FBX file: neither the binary FBX magic nor an ASCII FBX starting with '" +
-           std::string(kFirstRecord) + "'");
-  }
-}
 
 std::span<const char* const> MeshFileExtensions() { return kMeshExtensions; }
 

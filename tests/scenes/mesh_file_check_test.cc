@@ -234,5 +234,29 @@ TEST(MeshFileCheckTest, BrokenMtlIsRefusedWithItsLine) {
   }
 }
 
+// ASCII FBX is tokenized and parsed as assimp 5.2.5 does (scenes/mesh_file_check_fbx.h); where
+// assimp's parser would stop with an error (leaking the elements it read), airis refuses first.
+TEST(MeshFileCheckTest, BrokenAsciiFbxIsRefusedWithItsLine) {
+  const std::string head = "; FBX 7.3.0 project file\nFBXHeaderExtension:  {\n";
+  std::string deep = "FBXHeaderExtension: ";
+  for (int i = 0; i < 70; ++i) deep += "k: {\n";
+  const Refusal cases[] = {
+      // Read by assimp, which finds no FBXVersion: past airis's grammar.
+      {"fbx", head + "\tList: 1,2,\n3\n\tCreator: \"x y\"\n}\n", "FBX-Parser"},
+      {"fbx", head + " a: 1\n", "ASCII FBX line 3: the file ends after a value"},
+      {"fbx", head + " a:\n", "ASCII FBX line 3: the file ends inside an element"},
+      {"fbx", head + " a: b\"c\"\n}\n", "ASCII FBX line 3: a '\"' inside a value"},
+      {"fbx", head + " : 1\n}\n", "ASCII FBX line 3: a ':' without a key name before it"},
+      {"fbx", head + "}\n1\n", "ASCII FBX line 4: expected a key"},
+      {"fbx", head + " a: 1\n\n2\n}\n", "ASCII FBX line 5: a value where '{', '}', ',' or a key"},
+      {"fbx", head + " a: x{,\n}\n}\n", "ASCII FBX line 3: a ',' right after '{' or '}'"},
+      {"fbx", deep, "scopes nested more than 64 deep"},
+  };
+  for (const Refusal& c : cases) {
+    const std::string got = LoadText(c.extension, c.bytes);
+    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
+  }
+}
+
 }  // namespace
 }  // namespace airis::scenes
