@@ -122,6 +122,16 @@ std::vector<Element> ParseHeader(const std::string& head, Format* format, std::s
       if (parsed.ec == std::errc::invalid_argument || parsed.ptr != w[2].data() + w[2].size()) {
         Refuse("a PLY element " + Quote(e.name) + " without a count (got " + Quote(w[2]) + ")");
       }
+      // assimp 5.2.5 knows these names; for any other it reads the count from the name itself (0,
+      // or the name's leading digits: "element 999...9face 1" asked for 100 GB), so its reading of
+      // the body would part from this one.
+      static constexpr std::string_view kKnownElements[] = {"vertex", "face", "tristrips", "edge",
+                                                            "material"};
+      if (std::find(std::begin(kKnownElements), std::end(kKnownElements), e.name) ==
+          std::end(kKnownElements)) {
+        Refuse(where + "an element " + Quote(e.name) +
+               " (assimp 5.2.5 reads vertex, face, tristrips, edge and material elements only)");
+      }
       for (const Element& other : elements) {
         if (other.name == e.name) Refuse(where + "a second element " + Quote(e.name));
       }

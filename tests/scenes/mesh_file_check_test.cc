@@ -123,6 +123,8 @@ TEST(MeshFileCheckTest, BrokenPlyAndStlAreRefusedWithTheirReason) {
        "float z\n"
        "element face 99\nend_header\n",
        "the PLY element 'face' has no properties"},
+      {"ply", "ply\nformat ascii 1.0\nelement camera 1\nproperty float x\nend_header\n0\n",
+       "PLY header line 3: an element 'camera' (assimp 5.2.5 reads vertex, face"},
       {"ply", "ply\nformat ascii 1.0\nelemnt vertex 3\nend_header\n",
        "PLY header line 3: unknown keyword 'elemnt'"},
       {"ply", "ply\nformat ascii 2.0\nend_header\n", "PLY header line 2: expected 'format"},
