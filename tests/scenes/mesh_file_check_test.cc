@@ -94,6 +94,16 @@ struct Refusal {
   const char* fragment;
 };
 
+/// Loads each case's bytes as a file of its extension and expects its fragment in the outcome
+/// ("ok N" for N triangles, else the error).
+template <std::size_t N>
+void ExpectEach(const Refusal (&cases)[N]) {
+  for (const Refusal& c : cases) {
+    const std::string got = LoadText(c.extension, c.bytes);
+    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
+  }
+}
+
 TEST(MeshFileCheckTest, BrokenPlyAndStlAreRefusedWithTheirReason) {
   const std::string binary_stl_header(80, ' ');
   std::string binary_stl_triangle;  // normal, three corners, attribute bytes
@@ -145,10 +155,7 @@ TEST(MeshFileCheckTest, BrokenPlyAndStlAreRefusedWithTheirReason) {
       {"stl", binary_stl_header + Bytes(std::uint32_t{1}) + binary_stl_triangle + '\0',
        "the header declares 1 triangles (134 bytes) but the file has 135"},
   };
-  for (const Refusal& c : cases) {
-    const std::string got = LoadText(c.extension, c.bytes);
-    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
-  }
+  ExpectEach(cases);
 }
 
 // Each rule of the OBJ grammar (scenes/mesh_file_check_obj.h): what assimp 5.2.5 would misread,
@@ -195,10 +202,7 @@ TEST(MeshFileCheckTest, BrokenObjIsRefusedWithItsLine) {
       {"obj", "mtllib mesh.obj\n" + tri, "'mtllib' names 'mesh.obj', not a .mtl file"},
       {"obj", "mtllib m.mtl \n" + tri, "'mtllib' file name 'm.mtl ' ends in white space"},
   };
-  for (const Refusal& c : cases) {
-    const std::string got = LoadText(c.extension, c.bytes);
-    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
-  }
+  ExpectEach(cases);
 }
 
 // The material library an OBJ names is read as strictly: statements assimp 5.2.5 would write
@@ -254,10 +258,7 @@ TEST(MeshFileCheckTest, BrokenAsciiFbxIsRefusedWithItsLine) {
       {"fbx", head + " a: x{,\n}\n}\n", "ASCII FBX line 3: a ',' right after '{' or '}'"},
       {"fbx", deep, "scopes nested more than 64 deep"},
   };
-  for (const Refusal& c : cases) {
-    const std::string got = LoadText(c.extension, c.bytes);
-    EXPECT_NE(got.find(c.fragment), std::string::npos) << c.fragment << "\ngot: " << got;
-  }
+  ExpectEach(cases);
 }
 
 }  // namespace
