@@ -194,10 +194,24 @@ std::uint64_t Unsigned(const nlohmann::json& object, const char* key) {
 /// or a file beside it), every view lies within its buffer, every accessor within its view, and no
 /// accessor (those without a view are zero-filled: nothing bounds them but their count) is larger
 /// than the limits. Nodes form a forest, as the specification requires (a node shared by two
-/// parents would be copied for each).
+/// parents would be copied for each). The JSON declares glTF 2.0 (`asset.version` a string starting
+/// with "2"): assimp 5.2.5 gives a .gltf or .glb file to its glTF 2.0 reader only then, and when no
+/// glTF reader claims the file, it offers it to every reader by content, so that the OBJ reader,
+/// say, would read a .gltf file that these checks never saw as OBJ.
 void CheckGltfJson(const std::string& path, const std::string& text, std::uint64_t glb_bin_bytes) {
   const nlohmann::json gltf = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (gltf.is_discarded() || !gltf.is_object()) Refuse("its glTF JSON does not parse");
+  const auto declares_2 = [&] {
+    const auto asset = gltf.find("asset");
+    if (asset == gltf.end() || !asset->is_object()) return false;
+    const auto version = asset->find("version");
+    return version != asset->end() && version->is_string() &&
+           version->get_ref<const std::string&>().starts_with('2');
+  };
+  if (!declares_2()) {
+    Refuse(
+        "the glTF JSON does not declare glTF 2.0 (asset.version \"2.0\"), the only version read");
+  }
   const nlohmann::json empty = nlohmann::json::array();
   auto list = [&](const char* key) -> const nlohmann::json& {
     const auto it = gltf.find(key);
@@ -350,13 +364,14 @@ void CheckMeshFileBeforeImport(const std::string& path) {
   if (extension == "dae") CheckDaeText(ReadBytes(path, 0, bytes));
   if (extension == "obj") CheckObjFile(path, ReadBytes(path, 0, bytes));
   if (extension == "fbx") CheckFbx(path, bytes);
-  if (extension == "glb" || extension == "gltf") {
-    // The glTF importer reads either form whatever the extension says.
+  // assimp reads a .glb file as binary glTF and a .gltf file as JSON, whatever the content; a file
+  // of the other form would go to its readers by content (see CheckGltfJson).
+  if (extension == "glb") CheckGlb(path, bytes);
+  if (extension == "gltf") {
     if (ReadBytes(path, 0, 4) == "glTF") {
-      CheckGlb(path, bytes);
-    } else {
-      CheckGltfJson(path, ReadBytes(path, 0, bytes), 0);
+      Refuse("a binary glTF (GLB) file named .gltf (name it .glb)");
     }
+    CheckGltfJson(path, ReadBytes(path, 0, bytes), 0);
   }
 }
 

@@ -240,6 +240,26 @@ TEST(MeshFileCheckTest, BrokenMtlIsRefusedWithItsLine) {
   }
 }
 
+// assimp 5.2.5 reads a .gltf file as glTF 2.0 JSON and a .glb file as binary glTF only when the
+// JSON declares version 2; otherwise it offers the file to every reader by content, and one that
+// airis never checked (the OBJ reader, when "usemtl" appears early on) would read it.
+TEST(MeshFileCheckTest, GltfThatIsNotGltf2OfItsFormIsRefused) {
+  const std::string v2 = R"({"asset":{"version":"2.0"}})";
+  const Refusal cases[] = {
+      {"gltf", "{}", "the glTF JSON does not declare glTF 2.0"},
+      {"gltf", std::string("{}\0\nusemtl m\nv 0 0 0\n", 21), "does not declare glTF 2.0"},
+      {"gltf", R"({"asset":{"version":"1.0"}})", "does not declare glTF 2.0"},
+      {"gltf", R"({"asset":{"version":2.0}})", "does not declare glTF 2.0"},
+      {"gltf", R"({"asset":"2.0"})", "does not declare glTF 2.0"},
+      {"gltf", "glTF" + Bytes(std::uint32_t{2}) + Bytes(std::uint32_t{20}) + v2,
+       "a binary glTF (GLB) file named .gltf (name it .glb)"},
+      {"glb", v2, "not a GLB file"},
+      // Declared glTF 2.0 with nothing in it: assimp's glTF 2.0 reader takes it (its own error).
+      {"gltf", v2, "GLTF: No scene"},
+  };
+  ExpectEach(cases);
+}
+
 // ASCII FBX is tokenized and parsed as assimp 5.2.5 does (scenes/mesh_file_check_fbx.h); where
 // assimp's parser would stop with an error (leaking the elements it read), airis refuses first.
 TEST(MeshFileCheckTest, BrokenAsciiFbxIsRefusedWithItsLine) {
