@@ -68,6 +68,33 @@ double Heightfield::CalcHeight_m(double north_m, double east_m) const {
   return h11 + (1.0 - u) * (h01 - h11) + (1.0 - v) * (h10 - h11);
 }
 
+Heightfield::SegmentClearance Heightfield::CalcLowestClearance(const Vec3& a_W,
+                                                               const Vec3& b_W) const {
+  const Vec3 d = b_W - a_W;
+  SegmentClearance lowest{a_W, -a_W.z() - CalcHeight_m(a_W.x(), a_W.y())};
+  auto consider = [&](double t) {
+    const Vec3 p = t >= 1.0 ? b_W : Vec3(a_W + t * d);
+    const double clearance = -p.z() - CalcHeight_m(p.x(), p.y());
+    if (clearance < lowest.clearance_m) lowest = {p, clearance};
+  };
+  consider(1.0);
+  // Grid coordinates (x along north, y along east, in samples) at the ends. The crossings of
+  // x = k, y = k and x + y = k (the diagonals) for whole k within the grid's range.
+  const double x0 = (a_W.x() - origin_ne_m_.x()) / spacing_m_;
+  const double y0 = (a_W.y() - origin_ne_m_.y()) / spacing_m_;
+  const double dx = d.x() / spacing_m_, dy = d.y() / spacing_m_;
+  auto crossings = [&](double start, double delta, double max_k) {
+    if (delta == 0.0) return;
+    const double lo = std::max(0.0, std::ceil(std::min(start, start + delta)));
+    const double hi = std::min(max_k, std::floor(std::max(start, start + delta)));
+    for (double k = lo; k <= hi; k += 1.0) consider(std::clamp((k - start) / delta, 0.0, 1.0));
+  };
+  crossings(x0, dx, rows_ - 1.0);
+  crossings(y0, dy, cols_ - 1.0);
+  crossings(x0 + y0, dx + dy, rows_ + cols_ - 2.0);
+  return lowest;
+}
+
 Vec3 Heightfield::CalcNormal_W(double north_m, double east_m) const {
   int r, c;
   double u, v;

@@ -46,6 +46,18 @@ class Heightfield {
   /// Unit normal of the surface's triangle under (north, east), world NED, pointing up (z < 0);
   /// off the grid as CalcHeight_m.
   Vec3 CalcNormal_W(double north_m, double east_m) const;
+  /// Where the straight segment from `a_W` to `b_W` (world NED) comes lowest relative to the
+  /// surface.
+  struct SegmentClearance {
+    Vec3 point_W;        ///< the point of the segment
+    double clearance_m;  ///< its height above the surface there (negative: under it)
+  };
+  /// The point of the segment from `a_W` to `b_W` with the least height above the surface. Exact:
+  /// along a segment the surface height is linear between the segment's crossings of the grid's
+  /// lines and of the cells' diagonals (and off the grid, of the lines' continuations), so the
+  /// least height is at one of those crossings or at an end; each is evaluated (about
+  /// 3 x length / spacing of them).
+  SegmentClearance CalcLowestClearance(const Vec3& a_W, const Vec3& b_W) const;
   /// Smooth normal at sample (r, c) for shading: the central difference of its neighbours (one
   /// sided at the edges), world NED, pointing up.
   Vec3 CalcSampleNormal_W(int r, int c) const;

@@ -1,9 +1,13 @@
 // Mission heights above the ground (`above_ground_m`, `follow_terrain`; docs/mission-format.md):
 // the mistakes refused when the file is read, and targets under the terrain refused when the
 // mission is checked against its scene, each naming the step's key.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/config.h"
@@ -79,11 +83,22 @@ const Scene& Hills() {
   return scene;
 }
 
-std::string CheckError(const std::string& mission_text) {
+// The same hills (same terrain block and seed) with the drone hovering at `start` (NED).
+Scene HillsWithDroneAt(const std::string& start) {
+  return LoadSceneFromString(
+      "scene: {seed: 4}\n"
+      "terrain: {extent_ne_m: [1000, 1000], resolution_m: 10, relief_m: 80}\n"
+      "vehicles:\n"
+      "  - {name: drone, preset: quad_x, start: {position_ned_m: " +
+          start + "}}\n",
+      "hills.yaml");
+}
+
+std::string CheckError(const std::string& mission_text, const Scene& scene = Hills()) {
   const engine::Mission mission = ParseMission(mission_text, "missions/m.yaml");
   const std::vector<std::size_t> first(mission.tracks.size(), 0);
   try {
-    CheckMissionInScene(mission, Hills(), first);
+    CheckMissionInScene(mission, scene, first);
   } catch (const ConfigError& e) {
     return e.what();
   }
@@ -123,6 +138,73 @@ TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
                        ne + "], above_ground_m: 10}\n  - orbit: {center_ne_m: [" + ne +
                        "], above_ground_m: 20, radius_m: 30}\n  - survey: {polygon_ne_m: [[" + ne +
                        "], [0, 0]], above_ground_m: 30}\n"),
+            "no error");
+}
+
+// GIVEN the hills' highest sample and two points 200 m south and north of it, each clear of the
+// ground at a height just under the top WHEN a goto, a path leg, an orbit or a survey at that NED
+// height joins them THEN the check refuses the step: the way runs under the top, and the message
+// gives the deepest point (the top sample, exactly: the check is not sampled). 2 m over the top
+// it passes.
+TEST(MissionHeightsTest, WaysThatRunUnderAHillAreRefusedNamingTheStep) {
+  const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
+  int top_r = 0, top_c = 0;
+  for (int r = 0; r < ground.rows(); ++r) {
+    for (int c = 0; c < ground.cols(); ++c) {
+      if (ground.height_m(r, c) > ground.height_m(top_r, top_c)) top_r = r, top_c = c;
+    }
+  }
+  const double n = ground.origin_ne_m().x() + top_r * ground.spacing_m();
+  const double e = ground.origin_ne_m().y() + top_c * ground.spacing_m();
+  const double top_m = ground.height_m(top_r, top_c);
+  const double low_m = std::max(ground.CalcHeight_m(n - 200, e), ground.CalcHeight_m(n + 200, e));
+  ASSERT_LT(low_m + 4.0, top_m);
+  const auto point = [](double north, double east, double up) {
+    return "[" + engine::FormatNumber(north) + ", " + engine::FormatNumber(east) + ", " +
+           engine::FormatNumber(-up) + "]";
+  };
+  const double under_m = std::round(top_m - 2.0);  // clear of both ends, under the top
+  const std::string a = point(n - 200, e, under_m), b = point(n + 200, e, under_m);
+  // Up over everything first (the hills are at most 80 m; 300 m up), then down to a.
+  const std::string up = "  - takeoff: {above_ground_m: 300}\n  - path: {waypoints_ned_m: [" +
+                         point(n - 200, e, 300) + ", " + a + "]}\n";
+  const std::string deepest = "at [" + engine::FormatRounded(n) + ", " + engine::FormatRounded(e) +
+                              "] the surface is " + engine::FormatRounded(top_m) +
+                              " m up and the way " + engine::FormatRounded(under_m) + " m (" +
+                              engine::FormatRounded(top_m - under_m) + " m under it)";
+  EXPECT_EQ(CheckError("steps:\n" + up + "  - goto: {position_ned_m: " + b + "}\n"),
+            "missions/m.yaml:4:12: steps[2].goto.position_ned_m: the straight way from " + a +
+                " to " + b + " m runs under the terrain: " + deepest +
+                "; fly higher, add a waypoint over the hill, or give above_ground_m");
+  EXPECT_NE(CheckError("steps:\n  - takeoff: {above_ground_m: 300}\n  - path: {waypoints_ned_m: [" +
+                       point(n - 200, e, 300) + ", " + a + ", " + b + "]}\n")
+                .find("steps[1].path.waypoints_ned_m[2]: the straight way from " + a + " to " + b +
+                      " m runs under the terrain: " + deepest),
+            std::string::npos);
+  // An orbit whose circle crosses the top (its centre 100 m south-west of it, none of its
+  // northernmost, southernmost, easternmost and westernmost points under the ground)...
+  const double d = 100.0 / std::sqrt(2.0);
+  for (const auto& [dn, de] : {std::pair{100.0, 0.0}, {-100.0, 0.0}, {0.0, 100.0}, {0.0, -100.0}}) {
+    ASSERT_LT(ground.CalcHeight_m(n - d + dn, e - d + de), under_m);
+  }
+  EXPECT_THAT(CheckError("steps:\n" + up + "  - orbit: {center_ned_m: " +
+                         point(n - d, e - d, under_m) + ", radius_m: 100}\n"),
+              ::testing::HasSubstr("steps[2].orbit.center_ned_m: the straight way from"));
+  // ... and a survey whose middle line does (flown 1 m over a drone hovering 1 m under a).
+  for (const double dn : {-200.0, 200.0}) {
+    for (const double de : {-5.0, 5.0}) ASSERT_LT(ground.CalcHeight_m(n + dn, e + de), under_m);
+  }
+  EXPECT_THAT(
+      CheckError("steps:\n  - survey: {polygon_ne_m: [[" + engine::FormatNumber(n - 200) + ", " +
+                     engine::FormatNumber(e - 5) + "], [" + engine::FormatNumber(n + 200) + ", " +
+                     engine::FormatNumber(e + 5) + "]], spacing_m: 5, height_above_start_m: 1}\n",
+                 HillsWithDroneAt(point(n - 200, e, under_m - 1))),
+      ::testing::HasSubstr("steps[0].survey.polygon_ne_m: the straight way from"));
+  // 2 m over the top, the same goto passes.
+  const std::string a2 = point(n - 200, e, top_m + 2), b2 = point(n + 200, e, top_m + 2);
+  EXPECT_EQ(CheckError("steps:\n  - takeoff: {above_ground_m: 300}\n  - path: {waypoints_ned_m: [" +
+                       point(n - 200, e, 300) + ", " + a2 + "]}\n  - goto: {position_ned_m: " + b2 +
+                       "}\n"),
             "no error");
 }
 

@@ -119,7 +119,12 @@ void GotoStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
   const char* field = position_ned_m  ? "position_ned_m"
                       : position_ne_m ? "position_ne_m"
                                       : "latitude_deg";
-  RequireInRegion(field, limits, CalcTarget_W(*plan.frame, plan.terrain));
+  const Vec3 target_W = CalcTarget_W(*plan.frame, plan.terrain);
+  RequireInRegion(field, limits, target_W);
+  if (!above_ground_m) {
+    const Vec3 way_W[] = {plan.position_W, target_W};
+    RequireClearOfTerrain(field, plan.terrain, way_W);
+  }
   RequireSpeed("speed_m_s", limits, speed_m_s);
 }
 

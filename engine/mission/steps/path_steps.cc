@@ -285,9 +285,15 @@ void PathStep::Validate() const {
   RequireDuration("timeout_s", timeout_s);
 }
 
-void PathStep::Check(const MissionLimits& limits, const StepPlan&) const {
+void PathStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
+  Vec3 from_W = plan.position_W;
   for (std::size_t i = 0; i < waypoints_ned_m.size(); ++i) {
-    RequireInRegion("waypoints_ned_m[" + std::to_string(i) + "]", limits, waypoints_ned_m[i]);
+    const std::string field = "waypoints_ned_m[" + std::to_string(i) + "]";
+    RequireInRegion(field, limits, waypoints_ned_m[i]);
+    // The leg that ends here (corners rounded by corner_radius_m are checked as their legs).
+    const Vec3 leg_W[] = {from_W, waypoints_ned_m[i]};
+    RequireClearOfTerrain(field, plan.terrain, leg_W);
+    from_W = waypoints_ned_m[i];
   }
   RequireSpeed("speed_m_s", limits, speed_m_s);
 }
@@ -335,6 +341,10 @@ void SurveyStep::Check(const MissionLimits& limits, const StepPlan& plan) const 
                          ? -(CalcGroundHeight_m(plan.terrain, c.x(), c.y()) + *above_ground_m)
                          : plan.home_W.z() - height_above_start_m.value_or(kDefaultHeight_m);
     RequireInRegion("polygon_ne_m[" + std::to_string(i) + "]", limits, Vec3(c.x(), c.y(), z));
+  }
+  if (!above_ground_m) {
+    RequireClearOfTerrain("polygon_ne_m", plan.terrain,
+                          WithStart(CalcWaypoints_W(plan.home_W), plan.position_W));
   }
   RequireSpeed("speed_m_s", limits, speed_m_s);
 }
@@ -420,6 +430,17 @@ void OrbitStep::Check(const MissionLimits& limits, const StepPlan& plan) const {
     Vec3 p = center + offset;
     if (above_ground_m) p.z() = -(CalcGroundHeight_m(plan.terrain, p.x(), p.y()) + *above_ground_m);
     RequireInRegion(field, limits, p);
+  }
+  if (!above_ground_m) {
+    // The way to the circle (at the start's bearing from the centre), then the circle as a
+    // polygon of 360 sides (within 4e-5 of the radius of the circle).
+    const double phase_rad = OrbitPhase(center, plan.position_W);
+    std::vector<Vec3> way_W = {plan.position_W};
+    for (int k = 0; k <= 360; ++k) {
+      const double a = phase_rad + 2.0 * kPi * k / 360.0;
+      way_W.push_back(center + radius_m * Vec3(std::cos(a), std::sin(a), 0.0));
+    }
+    RequireClearOfTerrain(field, plan.terrain, way_W);
   }
   RequireSpeed("speed_m_s", limits, speed_m_s);
 }

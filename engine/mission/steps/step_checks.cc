@@ -45,6 +45,28 @@ void RequireInRegion(std::string_view field, const MissionLimits& limits, const 
   }
 }
 
+void RequireClearOfTerrain(std::string_view field, const Heightfield* terrain,
+                           std::span<const Vec3> way_W) {
+  if (terrain == nullptr) return;
+  // A leg starting or ending on the surface (a vehicle standing on the ground) touches it at 0;
+  // rounding within a leg is far below a micrometre.
+  constexpr double kTolerance_m = 1e-6;
+  for (std::size_t i = 1; i < way_W.size(); ++i) {
+    const Heightfield::SegmentClearance lowest =
+        terrain->CalcLowestClearance(way_W[i - 1], way_W[i]);
+    if (lowest.clearance_m >= -kTolerance_m) continue;
+    const Vec3& p = lowest.point_W;
+    const double ground_m = -p.z() - lowest.clearance_m;
+    throw InvalidField(
+        std::string(field),
+        "the straight way from " + Point(way_W[i - 1]) + " to " + Point(way_W[i]) +
+            " m runs under the terrain: at [" + FormatRounded(p.x()) + ", " + FormatRounded(p.y()) +
+            "] the surface is " + FormatRounded(ground_m) + " m up and the way " +
+            FormatRounded(-p.z()) + " m (" + FormatRounded(-lowest.clearance_m) +
+            " m under it); fly higher, add a waypoint over the hill, or give above_ground_m");
+  }
+}
+
 void ValidateAboveGround(std::string_view height_key, bool has_height,
                          const std::optional<double>& above_ground_m,
                          const std::optional<bool>& follow_terrain) {
