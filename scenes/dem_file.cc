@@ -1,5 +1,6 @@
 #include "scenes/dem_file.h"
 
+#include <cpl_conv.h>
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
@@ -58,7 +59,11 @@ class Dem {
     if (fs::is_directory(path)) throw InvalidField("dem", path + " is a folder, not a DEM file");
     if (!fs::is_regular_file(path)) throw InvalidField("dem", "DEM file not found: " + path);
     GdalErrorCapture capture;
-    dataset_.reset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    {
+      // GeoTIFF reports a vertical CRS (VerticalCSTypeGeoKey) only when asked.
+      CPLConfigOptionSetter report_vertical("GTIFF_REPORT_COMPD_CS", "YES", false);
+      dataset_.reset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    }
     if (!dataset_) {
       throw InvalidField("dem", "cannot read " + path + " as a raster (GDAL: " +
                                     capture.Message("no driver recognises it") + ")");
@@ -83,9 +88,23 @@ class Dem {
     }
     crs_ = *crs;
     crs_.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    if (crs_.IsCompound()) {
+      const char* name = crs_.GetAttrValue("COMPD_CS|VERT_CS");
+      const char* code = crs_.GetAuthorityCode("COMPD_CS|VERT_CS");
+      stated_ = DemHeights::kMsl;
+      vertical_ = std::string(name ? name : "an unnamed vertical CRS") +
+                  (code ? std::string(" (EPSG:") + code + ")" : "");
+    } else if (crs_.IsGeographic() && crs_.GetAxesCount() == 3) {
+      stated_ = DemHeights::kEllipsoid;
+      vertical_ = "ellipsoidal heights (" + std::string(crs_.GetName() ? crs_.GetName() : "") +
+                  ", a 3-D geographic CRS)";
+    }
+    // Positions on the ground plan go through the horizontal part alone.
+    OGRSpatialReference horizontal = crs_;
+    if (horizontal.IsCompound()) horizontal.StripVertical();
     const OGRSpatialReference wgs84 = Wgs84Geographic();
-    to_wgs84_ = MakeTransform(crs_, wgs84);
-    from_wgs84_ = MakeTransform(wgs84, crs_);
+    to_wgs84_ = MakeTransform(horizontal, wgs84);
+    from_wgs84_ = MakeTransform(wgs84, horizontal);
     if (!to_wgs84_ || !from_wgs84_) {
       throw InvalidField("dem",
                          path + ": no transformation between its coordinate reference system (" +
@@ -143,6 +162,41 @@ class Dem {
     }
   }
 
+  /// What the file says its heights are measured from (unset: it does not say), in words.
+  const std::optional<DemHeights>& stated() const { return stated_; }
+  const std::string& vertical() const { return vertical_; }
+
+  /// The WGS84 ellipsoidal height (m) of the file's height 0 at pixel-centre coordinates (col,
+  /// row) (centres at integers), for a file that states its heights' reference: through PROJ,
+  /// from the file's CRS to WGS84 3-D (EPSG:4979), without a "ballpark" fallback (a missing geoid
+  /// grid is an error, not heights left as they are).
+  std::vector<double> CalcZeroHeights_m(const std::vector<double>& col,
+                                        const std::vector<double>& row) const {
+    OGRSpatialReference ellipsoidal;
+    ellipsoidal.importFromEPSG(4979);
+    ellipsoidal.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    GdalErrorCapture capture;
+    const Transform t = MakeTransform(crs_, ellipsoidal);
+    std::vector<double> x(col.size()), y(col.size()), z(col.size(), 0.0);
+    std::vector<int> ok(col.size(), 0);
+    for (std::size_t i = 0; i < col.size(); ++i) {
+      x[i] = geo_[0] + (col[i] + 0.5) * geo_[1] + (row[i] + 0.5) * geo_[2];
+      y[i] = geo_[3] + (col[i] + 0.5) * geo_[4] + (row[i] + 0.5) * geo_[5];
+    }
+    if (t) t->Transform(x.size(), x.data(), y.data(), z.data(), ok.data());
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      if (!t || !ok[i] || !std::isfinite(z[i])) {
+        // (GDAL's own message spells out both CRSs in full WKT: too long to help.)
+        throw InvalidField("dem", path_ + " states its heights as " + vertical_ +
+                                      ", which PROJ cannot convert to WGS84 ellipsoidal heights "
+                                      "here (its geoid grid is not installed; Debian's proj-data "
+                                      "holds the EGM96 one): convert the heights to EGM96 or to "
+                                      "the ellipsoid first");
+      }
+    }
+    return z;
+  }
+
   bool IsNoData(double h) const { return !std::isfinite(h) || (has_no_data_ && h == no_data_); }
   double no_data() const { return no_data_; }
 
@@ -157,6 +211,8 @@ class Dem {
   Transform from_wgs84_{nullptr, OGRCoordinateTransformation::DestroyCT};
   bool has_no_data_ = false;
   double no_data_ = 0.0;
+  std::optional<DemHeights> stated_;
+  std::string vertical_;
 };
 
 // The DEM's pixel centres on the ground plan (NED north, east at the origin's altitude): the
@@ -318,8 +374,17 @@ engine::Heightfield LoadDemTerrain(const DemSampling& s, const engine::LocalNedF
     lon[i] = g.longitude_rad;
     alt[i] = g.altitude_m;
   }
-  std::vector<double> geoid;
-  if (s.heights == DemHeights::kMsl) geoid = CalcGeoidHeights_m(lat, lon);
+  // The ellipsoidal height of the DEM's height 0 under each sample: by the file's own vertical
+  // reference where it states one, else the EGM96 geoid for msl, else 0 (ellipsoidal heights).
+  if (dem.stated() && s.heights && *s.heights != *dem.stated()) {
+    throw InvalidField("heights", s.path + " states its heights as " + dem.vertical() + ", not " +
+                                      (*s.heights == DemHeights::kMsl ? "msl" : "ellipsoid") +
+                                      ": leave out heights (the file's own reference is used)");
+  }
+  std::vector<double> zero_height_m;
+  if (!dem.stated() && s.heights.value_or(DemHeights::kMsl) == DemHeights::kMsl) {
+    zero_height_m = CalcGeoidHeights_m(lat, lon);
+  }
   col = std::move(lon);
   row = std::move(lat);
   std::vector<int> ok;
@@ -344,6 +409,7 @@ engine::Heightfield LoadDemTerrain(const DemSampling& s, const engine::LocalNedF
     rmin = std::min(rmin, row[i]);
     rmax = std::max(rmax, row[i]);
   }
+  if (dem.stated()) zero_height_m = dem.CalcZeroHeights_m(col, row);
   // One pixel of margin: the second pass moves a sample by centimetres.
   const int c0 = std::max(0, static_cast<int>(std::floor(cmin)) - 1);
   const int r0 = std::max(0, static_cast<int>(std::floor(rmin)) - 1);
@@ -381,7 +447,7 @@ engine::Heightfield LoadDemTerrain(const DemSampling& s, const engine::LocalNedF
       }
     }
     const double h = (1 - v) * ((1 - u) * h00 + u * h01) + v * ((1 - u) * h10 + u * h11);
-    return geoid.empty() ? h : h + geoid[i];
+    return zero_height_m.empty() ? h : h + zero_height_m[i];
   };
 
   // Up along the vertical by the DEM's height above the tangent plane's point.

@@ -25,7 +25,11 @@ std::span<const engine::EnumName<DemHeights>> EnumNames(DemHeights);
 /// rectangle the DEM's pixel centres cover; an unset resolution the DEM's own pixel size (m).
 struct DemSampling {
   std::string path;  ///< of the file (already resolved)
-  DemHeights heights = DemHeights::kMsl;
+  /// What the DEM's heights are measured from, when its file does not say (unset: msl). A DEM
+  /// whose coordinate reference system states it (a compound CRS with a vertical one: heights
+  /// over that geoid or datum, read through PROJ; a 3-D geographic CRS: ellipsoidal heights) is
+  /// read by its own; a `heights` that disagrees is refused.
+  std::optional<DemHeights> heights;
   std::optional<Eigen::Vector2d> extent_m;  ///< [north, east] size (m)
   Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
   std::optional<double> resolution_m;

@@ -301,7 +301,7 @@ class SceneAssembler {
     }
     DemSampling sampling;
     sampling.path = ResolveRelative(entry.file->path, c.dem);
-    sampling.heights = c.heights;
+    if (given("heights")) sampling.heights = c.heights;
     if (given("extent_ne_m")) sampling.extent_m = c.extent_m;
     sampling.center_m = c.center_m;
     if (given("resolution_m")) sampling.resolution_m = c.resolution_m;

@@ -48,7 +48,8 @@ struct TerrainConfig {
             "relative to this file; instead of generated hills (whose keys it excludes)");
     v.Field("heights", heights,
             "with dem: what its heights are measured from, msl (the EGM96 geoid) or ellipsoid "
-            "(WGS84, as scene.origin.altitude_m)");
+            "(WGS84, as scene.origin.altitude_m), for a file that does not say (one whose CRS "
+            "states it is read by its own; a heights that disagrees is refused)");
     v.Field(
         "extent_ne_m", extent_m,
         "size [north, east] of the terrain (m); with dem: the crop (unset: all the DEM covers)");

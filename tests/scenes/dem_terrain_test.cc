@@ -211,6 +211,47 @@ TEST(DemTerrainTest, MslHeightsAddTheEgm96Geoid) {
   }
 }
 
+// A DEM whose CRS states its heights' reference is read by it: a compound CRS with EGM96 heights
+// as `heights: msl` (NGA's EGM96 value at the first test point above, to 0.1 m), a 3-D geographic
+// CRS as ellipsoidal heights; a `heights` key that disagrees is refused, and so is a vertical CRS
+// PROJ cannot convert here (EGM2008: its grid is not in Debian's proj-data).
+TEST(DemTerrainTest, TheFilesOwnVerticalReferenceIsRead) {
+  const double lat = 38.6281550, lon = -90.2208450, n_m = -31.628;
+  const auto write = [&](const std::string& crs) {
+    DemSpec spec;
+    spec.crs = crs;
+    spec.pixel = 0.001;
+    spec.width = spec.height = 21;
+    spec.x0 = lon - 0.0105;
+    spec.y0 = lat + 0.0105;
+    const std::string path = (airis::testing::TestTempDir() / "vertical.tif").string();
+    EXPECT_TRUE(WriteDem(path, spec));
+    return "scene:\n  origin: {latitude_deg: " + std::to_string(lat) +
+           ", longitude_deg: " + std::to_string(lon) + ", altitude_m: 0}\nterrain: {dem: " + path +
+           ", extent_ne_m: [200, 200], resolution_m: 10";
+  };
+  std::string scene = write("EPSG:4326+5773");
+  EXPECT_NEAR(FieldOf(LoadSceneFromString(scene + "}\n", "mem.yaml")).CalcHeight_m(0, 0), n_m, 0.1);
+  EXPECT_NEAR(
+      FieldOf(LoadSceneFromString(scene + ", heights: msl}\n", "mem.yaml")).CalcHeight_m(0, 0), n_m,
+      0.1);
+  EXPECT_THAT(SceneErrorOf(scene + ", heights: ellipsoid}\n"),
+              HasSubstr("terrain.heights: " + airis::testing::TestTempDir().string() +
+                        "/vertical.tif states its heights as EGM96 height (EPSG:5773), not "
+                        "ellipsoid: leave out heights (the file's own reference is used)"));
+  scene = write("EPSG:4979");
+  EXPECT_NEAR(FieldOf(LoadSceneFromString(scene + "}\n", "mem.yaml")).CalcHeight_m(0, 0), 0.0,
+              1e-6);
+  EXPECT_THAT(SceneErrorOf(scene + ", heights: msl}\n"),
+              HasSubstr("states its heights as ellipsoidal heights (WGS 84, a 3-D geographic "
+                        "CRS), not msl"));
+  scene = write("EPSG:4326+3855");
+  EXPECT_THAT(SceneErrorOf(scene + "}\n"),
+              HasSubstr("terrain.dem: " + airis::testing::TestTempDir().string() +
+                        "/vertical.tif states its heights as EGM2008 height (EPSG:3855), which "
+                        "PROJ cannot convert to WGS84 ellipsoidal heights here"));
+}
+
 TEST(DemTerrainTest, ExportedGeoTiffHoldsTheSurfaceAndItsProvenance) {
   const Scene hills = LoadSceneFromString(
       "scene: {seed: 5, origin: {latitude_deg: 46.5, longitude_deg: 7.9, altitude_m: 1500}}\n"
