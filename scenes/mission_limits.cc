@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "engine/core/error.h"
 #include "engine/core/limits.h"
 #include "engine/mission/mission_check.h"
 #include "scenes/scene_stats.h"
@@ -86,10 +87,14 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
 }
 
 void CheckMissionInScene(const engine::Mission& mission, const Scene& scene,
-                         std::span<const std::size_t> vehicles) {
+                         std::span<const std::size_t> vehicles,
+                         std::span<const engine::Vec3> starts_W) {
+  AIRIS_DEMAND(starts_W.empty() || starts_W.size() == vehicles.size());
   std::vector<engine::TrackLimits> tracks;
-  for (const std::size_t v : vehicles) {
-    tracks.push_back({CalcMissionLimits(scene, v), scene.vehicles.at(v).start.p_W});
+  for (std::size_t t = 0; t < vehicles.size(); ++t) {
+    const std::size_t v = vehicles[t];
+    tracks.push_back({CalcMissionLimits(scene, v),
+                      starts_W.empty() ? scene.vehicles.at(v).start.p_W : starts_W[t]});
   }
   engine::CheckMission(mission, tracks, engine::LocalNedFrame(scene.origin));
 }

@@ -20,9 +20,12 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
 inline constexpr double kFlightMargin_m = 1000.0;
 
 /// Checks `mission` before the flight, each track flown by its vehicle of `scene` (`vehicles[i]`
-/// flies `mission.tracks[i]`): engine::CheckMission with CalcMissionLimits, from the vehicle's
-/// start. Throws ConfigError at each offending key of the mission file.
+/// flies `mission.tracks[i]`): engine::CheckMission with CalcMissionLimits, from where each vehicle
+/// is when the mission starts: `starts_W[i]` (world NED) for track i when given (a built world's
+/// vehicles, which `start.on_ground` has lowered onto the surface), else the scene's start
+/// position. Throws ConfigError at each offending key of the mission file.
 void CheckMissionInScene(const engine::Mission& mission, const Scene& scene,
-                         std::span<const std::size_t> vehicles);
+                         std::span<const std::size_t> vehicles,
+                         std::span<const engine::Vec3> starts_W = {});
 
 }  // namespace airis::scenes

@@ -65,7 +65,10 @@ std::vector<std::size_t> SimulationJob::MissionVehicles(const engine::Mission& m
 
 std::vector<std::size_t> SimulationJob::CheckMission(const engine::Mission& mission) const {
   const std::vector<std::size_t> vehicles = MissionVehicles(mission);
-  scenes::CheckMissionInScene(mission, scene_, vehicles);
+  // From where the vehicles are (on the surface, for those the scene starts on_ground).
+  std::vector<engine::Vec3> starts_W;
+  for (const std::size_t v : vehicles) starts_W.push_back(world().vehicle(v).state().p_W);
+  scenes::CheckMissionInScene(mission, scene_, vehicles, starts_W);
   return vehicles;
 }
 

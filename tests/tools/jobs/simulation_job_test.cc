@@ -65,6 +65,22 @@ TEST(SimulationJobTest, AVehicleDroppedOntoTheGroundDuringAWaitCollides) {
   EXPECT_EQ(out.collisions, 1);
 }
 
+TEST(SimulationJobTest, AMissionIsCheckedFromWhereAnOnGroundVehicleRests) {
+  // GIVEN a quad written 100 m up and lowered onto the ground (on_ground) WHEN its mission takes
+  // off 9,990 m THEN the check plans from the ground: the target is 9,990 m up, inside the flight
+  // region (10 km above the origin), not 10,090 m as from the written start.
+  SimulationJob job(Text(
+      "vehicles:\n"
+      "  - {name: d, preset: quad_x, start: {position_ned_m: [0, 0, -100], on_ground: true}}\n"));
+  const engine::Mission up =
+      scenes::ParseMission("steps: [{takeoff: {height_above_start_m: 9990}}]\n", "m.yaml");
+  EXPECT_NO_THROW(job.CheckMission(up));
+  // AND 9,999.99 m, beyond the region by 2 cm from the ground, is refused
+  const engine::Mission higher =
+      scenes::ParseMission("steps: [{takeoff: {height_above_start_m: 9999.99}}]\n", "m.yaml");
+  EXPECT_THROW(job.CheckMission(higher), engine::ConfigError);
+}
+
 TEST(SimulationJobTest, OnGroundWithNothingBelowIsAnErrorNamingTheKey) {
   try {
     SimulationJob job(Text(
