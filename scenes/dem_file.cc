@@ -162,8 +162,9 @@ class Dem {
     }
   }
 
-  /// What the file says its heights are measured from (unset: it does not say), in words.
+  /// What the file says its heights are measured from (unset: it does not say).
   const std::optional<DemHeights>& stated() const { return stated_; }
+  /// The same in words, for messages ("EGM96 height (EPSG:5773)").
   const std::string& vertical() const { return vertical_; }
 
   /// The WGS84 ellipsoidal height (m) of the file's height 0 at pixel-centre coordinates (col,
