@@ -95,8 +95,10 @@ void WriteTerrainGeoTiff(const engine::Heightfield& field, const engine::LocalNe
   std::unique_ptr<GDALDataset> out(
       driver->Create(path.c_str(), cols, rows, 1, GDT_Float32, const_cast<char**>(options)));
   if (!out) fail("the file cannot be created");
+  // WGS84 3-D (EPSG:4979): the CRS itself says the heights are ellipsoidal, so a reader needs
+  // no `heights` key.
   OGRSpatialReference wgs84;
-  wgs84.importFromEPSG(4326);
+  wgs84.importFromEPSG(4979);
   out->SetGeoTransform(geo_transform);
   out->SetSpatialRef(&wgs84);
   for (const auto& [key, value] : metadata) out->SetMetadataItem(key.c_str(), value.c_str());

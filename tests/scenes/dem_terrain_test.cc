@@ -266,7 +266,10 @@ TEST(DemTerrainTest, ExportedGeoTiffHoldsTheSurfaceAndItsProvenance) {
   ASSERT_NE(in, nullptr);
   EXPECT_STREQ(in->GetMetadataItem("generator"), "test");
   EXPECT_STREQ(in->GetMetadataItem("seed"), "5");
-  EXPECT_EQ(in->GetSpatialRef()->GetEPSGGeogCS(), 4326);
+  // WGS84 with ellipsoidal heights: a 3-D geographic CRS
+  EXPECT_EQ(in->GetSpatialRef()->GetEPSGGeogCS(), 4979);
+  EXPECT_TRUE(in->GetSpatialRef()->IsGeographic());
+  EXPECT_EQ(in->GetSpatialRef()->GetAxesCount(), 3);
   double geo[6];
   ASSERT_EQ(in->GetGeoTransform(geo), CE_None);
   const int w = in->GetRasterXSize(), h = in->GetRasterYSize();
@@ -286,12 +289,13 @@ TEST(DemTerrainTest, ExportedGeoTiffHoldsTheSurfaceAndItsProvenance) {
       ASSERT_NEAR(-p.z(), f.CalcHeight_m(p.x(), p.y()), 1e-3) << c << ", " << r;
     }
   }
-  // Read back as a scene's DEM over the same origin: the same surface, resampled twice (within
-  // 2% of the relief: bilinear smoothing of hills sampled at 10 m).
+  // Read back as a scene's DEM over the same origin, without a heights key (the file says
+  // ellipsoid): the same surface, resampled twice (within 2% of the relief: bilinear smoothing of
+  // hills sampled at 10 m).
   const Scene back = LoadSceneFromString(
       "scene: {origin: {latitude_deg: 46.5, longitude_deg: 7.9, altitude_m: 1500}}\n"
       "terrain: {dem: " +
-          path + ", heights: ellipsoid, extent_ne_m: [500, 300], resolution_m: 10}\n",
+          path + ", extent_ne_m: [500, 300], resolution_m: 10}\n",
       "mem.yaml");
   double worst = 0.0;
   const engine::Heightfield& b = FieldOf(back);
