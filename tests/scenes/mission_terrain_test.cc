@@ -105,23 +105,31 @@ std::string CheckError(const std::string& mission_text, const Scene& scene = Hil
   return "no error";
 }
 
-// GIVEN a scene with hills WHEN a goto, a path or an orbit targets a point under the surface THEN
-// the check names the step's key, the point and the surface's height there; the same targets at
-// above_ground_m pass.
-TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
-  const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
-  // The highest sample: there the surface is relief_m up.
+// The grid's highest sample: its north, east (m) and height (m, up).
+struct Sample {
+  double north_m, east_m, height_m;
+};
+Sample HighestSample(const engine::Heightfield& ground) {
   int top_r = 0, top_c = 0;
   for (int r = 0; r < ground.rows(); ++r) {
     for (int c = 0; c < ground.cols(); ++c) {
       if (ground.height_m(r, c) > ground.height_m(top_r, top_c)) top_r = r, top_c = c;
     }
   }
-  const double n = ground.origin_ne_m().x() + top_r * ground.spacing_m();
-  const double e = ground.origin_ne_m().y() + top_c * ground.spacing_m();
+  return {ground.origin_ne_m().x() + top_r * ground.spacing_m(),
+          ground.origin_ne_m().y() + top_c * ground.spacing_m(), ground.height_m(top_r, top_c)};
+}
+
+// GIVEN a scene with hills WHEN a goto, a path or an orbit targets a point under the surface THEN
+// the check names the step's key, the point and the surface's height there; the same targets at
+// above_ground_m pass.
+TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
+  const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
+  // The highest sample: there the surface is relief_m up.
+  const auto [n, e, top_m] = HighestSample(ground);
   const std::string ne = engine::FormatNumber(n) + ", " + engine::FormatNumber(e);
-  const std::string surface = engine::FormatRounded(ground.height_m(top_r, top_c));
-  ASSERT_GT(ground.height_m(top_r, top_c), 60.0);
+  const std::string surface = engine::FormatRounded(top_m);
+  ASSERT_GT(top_m, 60.0);
   EXPECT_EQ(CheckError("steps:\n  - takeoff: {above_ground_m: 10}\n  - goto: {position_ned_m: [" +
                        ne + ", -50]}\n"),
             "missions/m.yaml:3:12: steps[1].goto.position_ned_m: the point [" + ne +
@@ -148,15 +156,7 @@ TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
 // it passes.
 TEST(MissionHeightsTest, WaysThatRunUnderAHillAreRefusedNamingTheStep) {
   const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
-  int top_r = 0, top_c = 0;
-  for (int r = 0; r < ground.rows(); ++r) {
-    for (int c = 0; c < ground.cols(); ++c) {
-      if (ground.height_m(r, c) > ground.height_m(top_r, top_c)) top_r = r, top_c = c;
-    }
-  }
-  const double n = ground.origin_ne_m().x() + top_r * ground.spacing_m();
-  const double e = ground.origin_ne_m().y() + top_c * ground.spacing_m();
-  const double top_m = ground.height_m(top_r, top_c);
+  const auto [n, e, top_m] = HighestSample(ground);
   const double low_m = std::max(ground.CalcHeight_m(n - 200, e), ground.CalcHeight_m(n + 200, e));
   ASSERT_LT(low_m + 4.0, top_m);
   const auto point = [](double north, double east, double up) {
