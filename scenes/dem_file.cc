@@ -45,6 +45,25 @@ Transform MakeTransform(const OGRSpatialReference& from, const OGRSpatialReferen
                    OGRCoordinateTransformation::DestroyCT);
 }
 
+// The WGS84 ellipsoidal heights (m, into `z`) of height 0 of `from` (a CRS with heights: compound
+// or 3-D) at its points (x, y), in GIS order, through PROJ without a "ballpark" fallback. False
+// when there is no such transformation here (a geoid grid missing) or a point fails.
+bool CalcEllipsoidalHeightsOfZero(const OGRSpatialReference& from, std::vector<double> x,
+                                  std::vector<double> y, std::vector<double>* z) {
+  OGRSpatialReference ellipsoidal;
+  ellipsoidal.importFromEPSG(4979);
+  ellipsoidal.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  const Transform t = MakeTransform(from, ellipsoidal);
+  if (!t) return false;
+  z->assign(x.size(), 0.0);
+  std::vector<int> ok(x.size(), 0);
+  t->Transform(x.size(), x.data(), y.data(), z->data(), ok.data());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!ok[i] || !std::isfinite((*z)[i])) return false;
+  }
+  return true;
+}
+
 OGRSpatialReference Wgs84Geographic() {
   OGRSpatialReference wgs84;
   wgs84.importFromEPSG(4326);
@@ -122,8 +141,8 @@ class Dem {
 
   /// Geodetic (rad) of the pixel centre (col, row) (pixel indices; centres at integers).
   bool PixelToGeodetic(double col, double row, double* lat_rad, double* lon_rad) const {
-    double x = geo_[0] + (col + 0.5) * geo_[1] + (row + 0.5) * geo_[2];
-    double y = geo_[3] + (col + 0.5) * geo_[4] + (row + 0.5) * geo_[5];
+    double x, y;
+    PixelToCrs(col, row, &x, &y);
     GdalErrorCapture quiet;
     if (!to_wgs84_->Transform(1, &x, &y)) return false;
     *lon_rad = x * M_PI / 180.0;
@@ -173,27 +192,15 @@ class Dem {
   /// grid is an error, not heights left as they are).
   std::vector<double> CalcZeroHeights_m(const std::vector<double>& col,
                                         const std::vector<double>& row) const {
-    OGRSpatialReference ellipsoidal;
-    ellipsoidal.importFromEPSG(4979);
-    ellipsoidal.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    GdalErrorCapture capture;
-    const Transform t = MakeTransform(crs_, ellipsoidal);
-    std::vector<double> x(col.size()), y(col.size()), z(col.size(), 0.0);
-    std::vector<int> ok(col.size(), 0);
-    for (std::size_t i = 0; i < col.size(); ++i) {
-      x[i] = geo_[0] + (col[i] + 0.5) * geo_[1] + (row[i] + 0.5) * geo_[2];
-      y[i] = geo_[3] + (col[i] + 0.5) * geo_[4] + (row[i] + 0.5) * geo_[5];
-    }
-    if (t) t->Transform(x.size(), x.data(), y.data(), z.data(), ok.data());
-    for (std::size_t i = 0; i < z.size(); ++i) {
-      if (!t || !ok[i] || !std::isfinite(z[i])) {
-        // (GDAL's own message spells out both CRSs in full WKT: too long to help.)
-        throw InvalidField("dem", path_ + " states its heights as " + vertical_ +
-                                      ", which PROJ cannot convert to WGS84 ellipsoidal heights "
-                                      "here (its geoid grid is not installed; Debian's proj-data "
-                                      "holds the EGM96 one): convert the heights to EGM96 or to "
-                                      "the ellipsoid first");
-      }
+    std::vector<double> x(col.size()), y(col.size()), z;
+    for (std::size_t i = 0; i < col.size(); ++i) PixelToCrs(col[i], row[i], &x[i], &y[i]);
+    GdalErrorCapture quiet;  // (GDAL's message spells out both CRSs in full WKT: too long to help)
+    if (!CalcEllipsoidalHeightsOfZero(crs_, std::move(x), std::move(y), &z)) {
+      throw InvalidField("dem", path_ + " states its heights as " + vertical_ +
+                                    ", which PROJ cannot convert to WGS84 ellipsoidal heights "
+                                    "here (its geoid grid is not installed; Debian's proj-data "
+                                    "holds the EGM96 one): convert the heights to EGM96 or to "
+                                    "the ellipsoid first");
     }
     return z;
   }
@@ -202,6 +209,12 @@ class Dem {
   double no_data() const { return no_data_; }
 
  private:
+  // The DEM's CRS coordinates of pixel-centre coordinates (col, row) (centres at integers).
+  void PixelToCrs(double col, double row, double* x, double* y) const {
+    *x = geo_[0] + (col + 0.5) * geo_[1] + (row + 0.5) * geo_[2];
+    *y = geo_[3] + (col + 0.5) * geo_[4] + (row + 0.5) * geo_[5];
+  }
+
   std::string path_;
   std::unique_ptr<GDALDataset> dataset_;
   GDALRasterBand* band_ = nullptr;
@@ -292,32 +305,22 @@ std::string Ne(const Eigen::Vector2d& p) {
 // Undulations N of the EGM96 geoid above the WGS84 ellipsoid (m) at geodetic points (rad).
 std::vector<double> CalcGeoidHeights_m(const std::vector<double>& lat_rad,
                                        const std::vector<double>& lon_rad) {
-  OGRSpatialReference msl, ellipsoidal;
-  GdalErrorCapture capture;
   // WGS84 with EGM96 heights (EPSG:5773) to WGS84 3-D: PROJ applies the geoid grid.
+  OGRSpatialReference msl;
   msl.SetFromUserInput("EPSG:4326+5773");
-  ellipsoidal.importFromEPSG(4979);
   msl.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  ellipsoidal.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  const Transform t = MakeTransform(msl, ellipsoidal);
-  const auto unavailable = [&](const std::string& why) {
-    return InvalidField("heights",
-                        "msl heights need the EGM96 geoid (PROJ's grid egm96_15.gtx, Debian "
-                        "package proj-data), which is not usable here (" +
-                            why + "); install it or give heights: ellipsoid if the DEM's are");
-  };
-  if (!t) throw unavailable("GDAL: " + capture.Message("no transformation"));
-  std::vector<double> x(lon_rad.size()), y(lat_rad.size()), z(lat_rad.size(), 0.0);
+  std::vector<double> x(lon_rad.size()), y(lat_rad.size()), z;
   for (std::size_t i = 0; i < x.size(); ++i) {
     x[i] = lon_rad[i] * 180.0 / M_PI;
     y[i] = lat_rad[i] * 180.0 / M_PI;
   }
-  std::vector<int> ok(x.size(), 0);
-  t->Transform(x.size(), x.data(), y.data(), z.data(), ok.data());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!ok[i] || !std::isfinite(z[i])) {
-      throw unavailable("GDAL: " + capture.Message("the geoid transformation failed"));
-    }
+  GdalErrorCapture capture;
+  if (!CalcEllipsoidalHeightsOfZero(msl, std::move(x), std::move(y), &z)) {
+    throw InvalidField("heights",
+                       "msl heights need the EGM96 geoid (PROJ's grid egm96_15.gtx, Debian "
+                       "package proj-data), which is not usable here (GDAL: " +
+                           capture.Message("the geoid transformation failed") +
+                           "); install it or give heights: ellipsoid if the DEM's are");
   }
   return z;
 }
