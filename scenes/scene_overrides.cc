@@ -181,6 +181,7 @@ AppliedSceneOverrides::Applied ApplyOne(SceneDocument& doc, const SceneOverride&
   if (key == "scene") return SetInSettings(doc, doc.scene, key, steps, value, o);
   if (key == "ground") return SetInSettings(doc, doc.ground, key, steps, value, o);
   if (key == "physics") return SetInSettings(doc, doc.physics, key, steps, value, o);
+  if (key == "terrain") return SetInSettings(doc, doc.terrain, key, steps, value, o);
   if (key == "classes") return SetInList(doc.classes, key, steps, value, o);
   if (key == "objects") return SetInList(doc.objects, key, steps, value, o);
   if (key == "generators") return SetInList(doc.generators, key, steps, value, o);

@@ -11,6 +11,7 @@
 
 #include "engine/world/world.h"
 #include "scenes/scene.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_stats.h"
 #include "scenes/world_builder.h"
 #include "tests/fixtures/temp_dir.h"
@@ -97,6 +98,38 @@ TEST(SceneOverridesTest, ValuesReachTheBuiltWorld) {
                 .find("scene.lighting.sun_elevation_deg: give time_of_day_h or sun_elevation_deg, "
                       "not both"),
             std::string::npos);
+}
+
+// The top-level keys of a scene file, as its Visit lists them.
+struct TopLevelKeys {
+  std::vector<std::string> keys;
+  template <class T>
+  void Field(const char* key, T&, const char*) {
+    keys.emplace_back(key);
+  }
+  void Renamed(const char*, const char*) {}
+};
+
+TEST(SceneOverridesTest, EveryBlockOfTheSceneFileCanBeOverridden) {
+  // GIVEN the scene without terrain, WHEN a terrain is set key by key
+  const std::string path = SceneFile("terrain");
+  const Scene s = LoadWith(
+      path, {"terrain.extent_ne_m=[200, 300]", "terrain.resolution_m=10", "terrain.relief_m=1"});
+  // THEN the scene has it: 21 x 31 samples
+  ASSERT_NE(s.static_scene.terrain.heightfield, nullptr);
+  EXPECT_EQ(s.static_scene.terrain.heightfield->rows(), 21);
+  EXPECT_EQ(s.static_scene.terrain.heightfield->cols(), 31);
+  // AND every top-level key of the file but `include` is a block an override reaches: the error
+  // for a key inside it is about that key, never "unknown key".
+  TopLevelKeys names;
+  SceneFileConfig{}.Visit(names);
+  ASSERT_GE(names.keys.size(), 8u);
+  for (const std::string& key : names.keys) {
+    if (key == "include") continue;
+    EXPECT_EQ(ErrorOf(path, {key + ".no_such_key=1"}).find("unknown key '" + key + "'"),
+              std::string::npos)
+        << key;
+  }
 }
 
 TEST(SceneOverridesTest, ParsingNormalisesTheValueAndRefusesWhatIsNoOverride) {
