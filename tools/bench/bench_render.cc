@@ -10,6 +10,7 @@
 #include "engine/render/egl_context.h"
 #include "engine/render/gpu_scene.h"
 #include "scenes/scene.h"
+#include "scenes/scene_overrides.h"
 #include "tools/bench/synthetic_scenes.h"
 
 namespace airis::tools {
@@ -54,13 +55,13 @@ struct CaseResult {
 };
 
 CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, const Flight& flight,
-                   int width, int height, int frames) {
+                   int width, int height, int frames, double far_m) {
   engine::RenderOutputs outputs;
   outputs.rgb = true;
   outputs.depth_planar = true;
   outputs.segmentation = true;
   CameraRenderer renderer(
-      context, CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, 2000.0), outputs);
+      context, CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, far_m), outputs);
   CameraFrame frame;
   std::vector<Eigen::Isometry3d> T_WB;
   const auto render = [&](int k) {
@@ -124,21 +125,30 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
     std::string source;
   };
   std::vector<SceneCase> cases;
-  auto load = [](const std::string& path) {
-    return [path] { return scenes::LoadScene(path).static_scene; };
+  auto load = [](const std::string& path, scenes::SceneLoadOptions load_options = {}) {
+    return [path, load_options] { return scenes::LoadScene(path, load_options).static_scene; };
   };
   // City: from the central crossing north along the street at 30 m, 15 degrees down (towers both
   // sides, the street and its cars below). Forest: from the central clearing east at 30 m over the
   // crowns.
   const Flight city_flight{0.0, 0.0, 0.0, 30.0, -15.0, 300.0};
   const Flight forest_flight{0.0, 0.0, 90.0, 30.0, -20.0, 150.0};
-  if (!options.city_scene.empty()) {
+  if (!options.scene.empty()) {
+    scenes::SceneLoadOptions load_options;
+    load_options.overrides = scenes::ParseSceneOverrides(options.overrides);
+    // North from the origin, 15 degrees down; the altitude counts from the terrain below the
+    // start (added once the scene is built).
+    cases.push_back({"scene",
+                     load(options.scene, load_options),
+                     {0.0, 0.0, 0.0, options.altitude_m, -15.0, 300.0},
+                     options.scene});
+  } else if (!options.city_scene.empty()) {
     cases.push_back({"city", load(options.city_scene), city_flight, options.city_scene});
   }
-  if (!options.forest_scene.empty()) {
+  if (options.scene.empty() && !options.forest_scene.empty()) {
     cases.push_back({"forest", load(options.forest_scene), forest_flight, options.forest_scene});
   }
-  if (options.synthetic) {
+  if (options.synthetic && options.scene.empty()) {
     cases.push_back({"synthetic_city", [] { return MakeSyntheticCity(10'000, 1000.0, 1); },
                      city_flight, "synthetic: 10,000 box buildings over 1 km^2 + ground"});
     cases.push_back({"synthetic_forest", [] { return MakeSyntheticForest(5'000, 500.0, 1); },
@@ -148,12 +158,17 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   for (SceneCase& c : cases) {
     const engine::StaticScene scene = c.make();
     const GpuScene gpu(scene);
+    if (scene.terrain.heightfield != nullptr &&
+        scene.terrain.heightfield->Contains(c.flight.north_m, c.flight.east_m)) {
+      c.flight.altitude_m +=
+          scene.terrain.heightfield->CalcHeight_m(c.flight.north_m, c.flight.east_m);
+    }
     out[c.name + "_scene"] = c.source;
     out[c.name + "_objects"] = scene.objects.size();
     out[c.name + "_triangles_total"] = scene.CountDrawnTriangles();
     out[c.name + "_vehicles_in_view"] = scene.vehicle_bodies.size();
     for (const auto& [w, h] : {std::pair{640, 480}, std::pair{1280, 720}}) {
-      const CaseResult r = RunCase(context, gpu, c.flight, w, h, options.frames);
+      const CaseResult r = RunCase(context, gpu, c.flight, w, h, options.frames, options.far_m);
       const std::string key = c.name + "_" + std::to_string(w) + "x" + std::to_string(h);
       out[key + "_fps"] = r.fps;
       out[key + "_pipelined_fps"] = r.pipelined_fps;

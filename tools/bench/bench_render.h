@@ -19,6 +19,13 @@ struct RenderBenchOptions {
   /// Also run the synthetic city (10,000 boxes over 1 km^2) and forest (5,000 trees) built in code,
   /// which need no files (keys synthetic_city_*, synthetic_forest_*).
   bool synthetic = true;
+  /// A scene of the user's instead of all of the above (`airis bench render --scene`): key
+  /// `scene_*`, flown north from its origin at `altitude_m` above the ground or terrain below.
+  std::string scene;
+  std::vector<std::string> overrides;  ///< `--set KEY=VALUE` for `scene`
+  double altitude_m = 50.0;
+  /// The far plane of the benchmark camera (m).
+  double far_m = 2000.0;
 };
 
 /// The vehicles of a benchmark frame seen from T_WC: vehicle j flies 8 + 3 j m ahead of the camera
