@@ -72,6 +72,8 @@ std::span<const LimitDoc> Limits() {
        "-" + FormatNumber(kMaxTangentialDistortion) + " to " +
            FormatNumber(kMaxTangentialDistortion),
        "`camera.distortion`"},
+      {"level-of-detail tolerance of a camera",
+       "0 to " + FormatNumber(kMaxDetailTolerance_px) + " px", "`camera.detail_tolerance_px`"},
       {"undistorted view of a distorted camera", "1/4 to 4 times the image on each axis",
        "`camera.distortion`"},
       {"actuators of a vehicle (rotors and tilt servos)", Count(kMaxActuators), "`rotors`"},

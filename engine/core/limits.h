@@ -59,6 +59,9 @@ inline constexpr std::size_t kMaxImagePixels = 8192u * 4096u;
 /// lenses are well inside; larger values describe no lens the model fits).
 inline constexpr double kMaxRadialDistortion = 10.0;
 inline constexpr double kMaxTangentialDistortion = 1.0;
+/// How far (pixels) a camera lets a far object's coarser look stray: beyond this, whole streets
+/// would vanish.
+inline constexpr double kMaxDetailTolerance_px = 100.0;
 /// Lowest rate of any sensor, camera or log (Hz): one sample per 1,000 simulated seconds. The
 /// highest is the scene's physics rate (at most kMaxPhysicsRate_hz).
 inline constexpr double kMinRate_hz = 1e-3;

@@ -6,7 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/core/config.h"
 #include "engine/core/error.h"
+#include "engine/core/limits.h"
 #include "engine/render/shader_sources.h"
 
 namespace airis::engine {
@@ -92,13 +94,15 @@ bool CameraRenderer::Enabled(int target) const {
 }
 
 CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics& intrinsics,
-                               const RenderOutputs& outputs)
+                               const RenderOutputs& outputs, double detail_tolerance_px)
     : context_(context),
       intrinsics_(intrinsics),
       render_intrinsics_(intrinsics),
-      outputs_(outputs) {
+      outputs_(outputs),
+      detail_tolerance_px_(detail_tolerance_px) {
   intrinsics_.Validate();
   outputs_.Validate();
+  RequireInRange("detail_tolerance_px", detail_tolerance_px, 0.0, kMaxDetailTolerance_px);
   context_.MakeCurrent();
   const bool float_targets =
       outputs_.depth_planar || outputs_.depth_perspective || outputs_.normals;
@@ -288,7 +292,10 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   const Eigen::Vector3f to_sun_C = (R_CW * -light.sun_direction_W.normalized()).cast<float>();
   const Eigen::Vector3f up_C = (R_CW * Eigen::Vector3d(0.0, 0.0, -1.0)).cast<float>();
 
-  scene.CollectVisible(T_WC, planes_C_, bodies, visible_);
+  // A tolerance of 0 keeps every object's own parts (focal length 0 turns the levels off).
+  const DetailLimit detail{detail_tolerance_px_ > 0.0 ? std::max(k.fx_px, k.fy_px) : 0.0,
+                           std::max(detail_tolerance_px_, 1e-9)};
+  scene.CollectVisible(T_WC, planes_C_, bodies, visible_, detail);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
   const std::size_t bytes = visible_.instances.size() * sizeof(GpuInstance);
   if (bytes > instance_capacity_) {

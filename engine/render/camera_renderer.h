@@ -33,14 +33,19 @@ namespace airis::engine {
 /// from the mapped buffer. All calls need `context` current.
 class CameraRenderer {
  public:
+  /// How far (in pixels) a far object's coarser look may stray from its own surfaces by default
+  /// (DetailLimit; 0 draws every object with its own parts).
+  static constexpr double kDefaultDetailTolerancePx = 1.0;
   /// Frames that may be in flight between Submit() and Collect().
   static constexpr int kMaxInFlight = 2;
 
   /// Builds the render targets and shader variants. Throws InvalidField on bad intrinsics or
   /// outputs (also when the distortion model folds inside the image), std::runtime_error when the
   /// GL lacks float render targets (EXT_color_buffer_float) or a shader fails to build.
+  /// `detail_tolerance_px`: how far a far object's coarser look may stray (DetailLimit).
   CameraRenderer(const EglContext& context, const CameraIntrinsics& intrinsics,
-                 const RenderOutputs& outputs);
+                 const RenderOutputs& outputs,
+                 double detail_tolerance_px = kDefaultDetailTolerancePx);
   ~CameraRenderer();
   CameraRenderer(const CameraRenderer&) = delete;
   CameraRenderer& operator=(const CameraRenderer&) = delete;
@@ -107,6 +112,7 @@ class CameraRenderer {
   CameraIntrinsics intrinsics_;
   CameraIntrinsics render_intrinsics_;
   RenderOutputs outputs_;
+  double detail_tolerance_px_;
   std::optional<SceneLighting> lighting_;  // replaces the scene's when set
   bool distorted_ = false;
   GlProgram scene_program_;

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <tuple>
 #include <utility>
 
 #include "engine/core/error.h"
@@ -108,43 +109,153 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     materials_.push_back(gpu);
   }
 
-  // Group every placed part by (mesh, texture): one instanced draw each. Static batches first
-  // (large ones last among them), then the batches of the vehicle bodies.
+  // Static objects: one item each, drawn through the looks of its (model, override) shape, in
+  // batches of (mesh, texture). Large ones' batches go last among the static ones, then the
+  // batches of the vehicle bodies.
   std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t> batch_of;
+  std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t> shape_of;
+  items_.reserve(scene.objects.size());
   for (const StaticObject& object : scene.objects) {
-    AddModelParts(scene, scene.models[object.model], object.T_WO, object.class_id,
-                  object.instance_id, object.material_override, -1, batch_of);
+    AIRIS_DEMAND(object.model < scene.models.size());
+    const Model& model = scene.models[object.model];
+    Item item;
+    item.T_WO = object.T_WO.matrix().topRows<3>();
+    item.shape = ShapeOf(scene, object.model, object.material_override, batch_of, shape_of);
+    item.class_id = object.class_id;
+    item.instance_id = object.instance_id;
+    const Eigen::Matrix3d L = object.T_WO.linear();
+    item.scale = static_cast<float>(std::max({L.col(0).norm(), L.col(1).norm(), L.col(2).norm()}));
+    item.sphere_W = Eigen::Vector4d::Zero();
+    if (!model.bounds.isEmpty()) {
+      const Eigen::Vector3d centre_W = object.T_WO * model.bounds.center().cast<double>();
+      double radius = 0.0;
+      for (int c = 0; c < 8; ++c) {
+        const Eigen::Vector3d corner =
+            object.T_WO *
+            model.bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c)).cast<double>();
+        radius = std::max(radius, (corner - centre_W).norm());
+      }
+      item.sphere_W << centre_W, radius;
+    }
+    const Shape& shape = shapes_[item.shape];
+    if (item.sphere_W.w() > kLargePartRadiusM) {
+      for (std::uint32_t l = 0; l < shape.look_count; ++l) {
+        const Look& look = looks_[shape.first_look + l];
+        for (std::uint32_t p = 0; p < look.count; ++p) {
+          batches_[shape_parts_[look.first + p].batch].large = true;
+        }
+      }
+    }
+    part_count_ += looks_[shape.first_look].count;
+    items_.push_back(item);
   }
-  std::stable_sort(batches_.begin(), batches_.end(),
-                   [](const Batch& a, const Batch& b) { return !a.large && b.large; });
+  // Large batches after the others (keeping their order), shape parts renumbered.
+  std::vector<std::uint32_t> order(batches_.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_partition(order.begin(), order.end(),
+                        [&](std::uint32_t b) { return !batches_[b].large; });
+  std::vector<std::uint32_t> new_index(batches_.size());
+  std::vector<Batch> sorted(batches_.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) {
+    new_index[order[k]] = k;
+    sorted[k] = std::move(batches_[order[k]]);
+  }
+  batches_ = std::move(sorted);
+  for (ShapePart& part : shape_parts_) part.batch = new_index[part.batch];
+  BuildClusters();
+
   batch_of.clear();
   for (std::size_t k = 0; k < scene.vehicle_bodies.size(); ++k) {
     const VehicleBody& body = scene.vehicle_bodies[k];
     AIRIS_DEMAND(body.model < scene.models.size());
-    AddModelParts(scene, scene.models[body.model], body.T_BM, body.class_id, body.instance_id,
-                  body.material_override, static_cast<int>(k), batch_of);
+    AddBodyParts(scene, scene.models[body.model], body.T_BM, body.class_id, body.instance_id,
+                 body.material_override, static_cast<int>(k), batch_of);
   }
   body_count_ = scene.vehicle_bodies.size();
 }
 
-void GpuScene::AddModelParts(
+std::uint32_t GpuScene::BatchOf(
+    std::uint32_t mesh, std::uint32_t material,
+    std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of) {
+  AIRIS_DEMAND(mesh < meshes_.size() && material < materials_.size());
+  const std::int32_t textured =
+      materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
+  auto [it, inserted] =
+      batch_of.try_emplace({mesh, textured}, static_cast<std::uint32_t>(batches_.size()));
+  if (inserted) {
+    batches_.emplace_back();
+    batches_.back().mesh = mesh;
+    batches_.back().textured_material = textured;
+  }
+  return it->second;
+}
+
+std::uint32_t GpuScene::ShapeOf(
+    const StaticScene& scene, std::uint32_t model, std::int32_t material_override,
+    std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of,
+    std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& shape_of) {
+  auto [it, inserted] =
+      shape_of.try_emplace({model, material_override}, static_cast<std::uint32_t>(shapes_.size()));
+  if (!inserted) return it->second;
+  const Model& m = scene.models[model];
+  Shape shape;
+  shape.first_look = static_cast<std::uint32_t>(looks_.size());
+  const auto add_look = [&](const std::vector<ModelPart>& parts, float error_m) {
+    Look look;
+    look.error_m = error_m;
+    look.first = static_cast<std::uint32_t>(shape_parts_.size());
+    look.count = static_cast<std::uint32_t>(parts.size());
+    for (const ModelPart& part : parts) {
+      const std::uint32_t material =
+          material_override >= 0 ? static_cast<std::uint32_t>(material_override) : part.material;
+      shape_parts_.push_back({BatchOf(part.mesh, material, batch_of), material,
+                              Eigen::Affine3d(part.T_MP.cast<double>())});
+    }
+    looks_.push_back(look);
+  };
+  add_look(m.parts, 0.0f);
+  for (const ModelLevel& level : m.levels) add_look(level.parts, level.error_m);
+  shape.look_count = static_cast<std::uint32_t>(looks_.size()) - shape.first_look;
+  shapes_.push_back(shape);
+  return it->second;
+}
+
+void GpuScene::BuildClusters() {
+  // Items sorted by the horizontal cell of their centre; a cluster per occupied cell.
+  constexpr double kCellM = 64.0;
+  const auto cell_of = [](const Item& item) {
+    return std::pair{static_cast<std::int64_t>(std::floor(item.sphere_W.x() / kCellM)),
+                     static_cast<std::int64_t>(std::floor(item.sphere_W.y() / kCellM))};
+  };
+  std::stable_sort(items_.begin(), items_.end(),
+                   [&](const Item& a, const Item& b) { return cell_of(a) < cell_of(b); });
+  for (std::size_t i = 0; i < items_.size();) {
+    std::size_t j = i + 1;
+    while (j < items_.size() && cell_of(items_[j]) == cell_of(items_[i])) ++j;
+    Eigen::AlignedBox3d box;
+    for (std::size_t k = i; k < j; ++k) box.extend(items_[k].sphere_W.head<3>());
+    Cluster cluster;
+    cluster.sphere_W << box.center(), 0.0;
+    for (std::size_t k = i; k < j; ++k) {
+      const Eigen::Vector4d& s = items_[k].sphere_W;
+      cluster.sphere_W.w() =
+          std::max(cluster.sphere_W.w(), (s.head<3>() - box.center()).norm() + s.w());
+    }
+    cluster.first = static_cast<std::uint32_t>(i);
+    cluster.count = static_cast<std::uint32_t>(j - i);
+    clusters_.push_back(cluster);
+    i = j;
+  }
+}
+
+void GpuScene::AddBodyParts(
     const StaticScene& scene, const Model& model, const Eigen::Affine3d& T_FM,
     std::uint8_t class_id, std::uint32_t instance_id, std::int32_t material_override, int body,
     std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of) {
   for (const ModelPart& part : model.parts) {
     const std::uint32_t material =
         material_override >= 0 ? static_cast<std::uint32_t>(material_override) : part.material;
-    AIRIS_DEMAND(part.mesh < meshes_.size() && material < materials_.size());
-    const std::int32_t textured =
-        materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
-    auto [it, inserted] =
-        batch_of.try_emplace({part.mesh, textured}, static_cast<std::uint32_t>(batches_.size()));
-    if (inserted) {
-      batches_.emplace_back();
-      batches_.back().mesh = part.mesh;
-      batches_.back().textured_material = textured;
-    }
-    Batch& batch = batches_[it->second];
+    Batch& batch = batches_[BatchOf(part.mesh, material, batch_of)];
     const Eigen::Affine3d T_FP = T_FM * part.T_MP.cast<double>();
     const Eigen::AlignedBox3f& b = scene.meshes[part.mesh].bounds;
     Eigen::Vector4d sphere = Eigen::Vector4d::Zero();
@@ -158,12 +269,7 @@ void GpuScene::AddModelParts(
       }
       sphere << centre_F, radius;
     }
-    if (body >= 0) {
-      batch.body.push_back(static_cast<std::uint32_t>(body));
-    } else {
-      batch.large = batch.large || sphere.w() > kLargePartRadiusM;
-      ++part_count_;
-    }
+    batch.body.push_back(static_cast<std::uint32_t>(body));
     batch.T_FP.push_back(T_FP);
     batch.sphere_F.push_back(sphere);
     batch.class_id.push_back(class_id);
@@ -183,72 +289,132 @@ GpuScene::~GpuScene() {
   }
 }
 
-template <class FrameOf>
-void GpuScene::AppendVisible(std::uint32_t b, const std::vector<Eigen::Vector4d>& planes_C,
-                             const FrameOf& T_CF_of,
-                             std::vector<std::pair<double, std::uint32_t>>& order,
-                             VisibleSet& out) const {
-  const Batch& batch = batches_[b];
-  order.clear();  // (depth of the centre, part index)
-  for (std::uint32_t i = 0; i < batch.T_FP.size(); ++i) {
-    const Eigen::Isometry3d* T_CF = T_CF_of(i);
-    if (T_CF == nullptr) continue;
-    const Eigen::Vector4d& s = batch.sphere_F[i];
-    const Eigen::Vector3d centre_C = *T_CF * s.head<3>();
-    bool inside = true;
-    for (const Eigen::Vector4d& plane : planes_C) {
-      if (plane.head<3>().dot(centre_C) + plane.w() < -s.w()) {
-        inside = false;
-        break;
-      }
-    }
-    if (inside) order.emplace_back(centre_C.z(), i);
+namespace {
+
+// Where a sphere (centre in the camera frame, radius) is with respect to the view's planes.
+enum class Side { kOutside, kInside, kCrossing };
+Side Classify(const Eigen::Vector3d& centre_C, double radius,
+              const std::vector<Eigen::Vector4d>& planes_C) {
+  Side side = Side::kInside;
+  for (const Eigen::Vector4d& plane : planes_C) {
+    const double d = plane.head<3>().dot(centre_C) + plane.w();
+    if (d < -radius) return Side::kOutside;
+    if (d < radius) side = Side::kCrossing;
   }
-  if (order.empty()) return;
-  std::sort(order.begin(), order.end());
-  const auto first = static_cast<std::uint32_t>(out.instances.size());
-  for (const auto& [depth, i] : order) {
-    const Eigen::Matrix4d T_CP = (*T_CF_of(i) * batch.T_FP[i]).matrix();
-    GpuInstance instance;
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 4; ++c) instance.T_CO_rows[r * 4 + c] = static_cast<float>(T_CP(r, c));
-    }
-    instance.class_id = batch.class_id[i];
-    instance.instance_id = batch.instance_id[i];
-    std::memcpy(instance.base_color_rgba, materials_[batch.material[i]].base_color_rgba, 4);
-    out.instances.push_back(instance);
-  }
-  const auto count = static_cast<std::uint32_t>(order.size());
-  out.draws.push_back({b, first, count});
-  out.triangles += static_cast<std::size_t>(count) * meshes_[batch.mesh].index_count / 3;
+  return side;
 }
+
+// A part to draw this frame, ordered front to back by its object's centre depth (item and part
+// index break ties, so the order is total).
+struct Entry {
+  double depth;
+  std::uint32_t item;
+  std::uint32_t part;
+  bool operator<(const Entry& o) const {
+    return std::tie(depth, item, part) < std::tie(o.depth, o.item, o.part);
+  }
+};
+
+GpuInstance MakeInstance(const Eigen::Matrix4d& T_CP, std::uint32_t class_id,
+                         std::uint32_t instance_id, const std::uint8_t* base_color_rgba) {
+  GpuInstance instance;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) instance.T_CO_rows[r * 4 + c] = static_cast<float>(T_CP(r, c));
+  }
+  instance.class_id = class_id;
+  instance.instance_id = instance_id;
+  std::memcpy(instance.base_color_rgba, base_color_rgba, 4);
+  return instance;
+}
+
+}  // namespace
 
 void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
                               const std::vector<Eigen::Vector4d>& planes_C, const BodyPoses& bodies,
-                              VisibleSet& out) const {
+                              VisibleSet& out, const DetailLimit& detail) const {
   out.instances.clear();
   out.draws.clear();
   out.triangles = 0;
   const Eigen::Isometry3d T_CW = T_WC.inverse();
-  // Camera <- body of each body drawn this frame; the others stay out (null).
-  std::vector<Eigen::Isometry3d> T_CB(std::min(bodies.T_WB.size(), body_count_));
-  for (std::size_t k = 0; k < T_CB.size(); ++k) T_CB[k] = T_CW * bodies.T_WB[k];
+  // Static objects: clusters first, then the objects of a cluster that crosses the view's edge.
+  std::vector<std::vector<Entry>> entries(batches_.size());
+  const double pixels_per_m = detail.focal_px / detail.tolerance_px;  // at 1 m distance
+  for (const Cluster& cluster : clusters_) {
+    const Side cluster_side =
+        Classify(T_CW * cluster.sphere_W.head<3>(), cluster.sphere_W.w(), planes_C);
+    if (cluster_side == Side::kOutside) continue;
+    for (std::uint32_t i = cluster.first; i < cluster.first + cluster.count; ++i) {
+      const Item& item = items_[i];
+      const Eigen::Vector3d centre_C = T_CW * item.sphere_W.head<3>();
+      if (cluster_side == Side::kCrossing &&
+          Classify(centre_C, item.sphere_W.w(), planes_C) == Side::kOutside) {
+        continue;
+      }
+      // The coarsest look whose error, seen from the object's nearest point, stays under the
+      // tolerance.
+      const Shape& shape = shapes_[item.shape];
+      const Look* look = &looks_[shape.first_look];
+      if (shape.look_count > 1 && pixels_per_m > 0.0) {
+        const double distance_m = centre_C.norm() - item.sphere_W.w();
+        for (std::uint32_t l = shape.look_count - 1; l > 0; --l) {
+          const Look& coarser = looks_[shape.first_look + l];
+          if (pixels_per_m * item.scale * coarser.error_m <= distance_m) {
+            look = &coarser;
+            break;
+          }
+        }
+      }
+      for (std::uint32_t p = look->first; p < look->first + look->count; ++p) {
+        entries[shape_parts_[p].batch].push_back({centre_C.z(), i, p});
+      }
+    }
+  }
+  for (std::uint32_t b = 0; b < batches_.size(); ++b) {
+    std::vector<Entry>& list = entries[b];
+    if (list.empty()) continue;
+    std::sort(list.begin(), list.end());
+    const auto first = static_cast<std::uint32_t>(out.instances.size());
+    for (const Entry& e : list) {
+      const Item& item = items_[e.item];
+      const ShapePart& part = shape_parts_[e.part];
+      Eigen::Affine3d T_WO = Eigen::Affine3d::Identity();
+      T_WO.matrix().topRows<3>() = item.T_WO;
+      out.instances.push_back(MakeInstance((T_CW * T_WO * part.T_MP).matrix(), item.class_id,
+                                           item.instance_id,
+                                           materials_[part.material].base_color_rgba));
+    }
+    const auto count = static_cast<std::uint32_t>(list.size());
+    out.draws.push_back({b, first, count});
+    out.triangles += static_cast<std::size_t>(count) * meshes_[batches_[b].mesh].index_count / 3;
+  }
+
+  // Vehicle bodies: each part culled on its own, the camera's own body and bodies without a pose
+  // left out.
+  const std::size_t posed = std::min(bodies.T_WB.size(), body_count_);
   std::vector<std::pair<double, std::uint32_t>> order;
   for (std::uint32_t b = 0; b < batches_.size(); ++b) {
     const Batch& batch = batches_[b];
-    if (batch.body.empty()) {
-      AppendVisible(
-          b, planes_C, [&](std::uint32_t) { return &T_CW; }, order, out);
-      continue;
+    if (batch.body.empty()) continue;
+    order.clear();
+    for (std::uint32_t i = 0; i < batch.body.size(); ++i) {
+      const std::uint32_t k = batch.body[i];
+      if (k >= posed || static_cast<int>(k) == bodies.hidden) continue;
+      const Eigen::Vector3d centre_C = T_CW * (bodies.T_WB[k] * batch.sphere_F[i].head<3>());
+      if (Classify(centre_C, batch.sphere_F[i].w(), planes_C) == Side::kOutside) continue;
+      order.emplace_back(centre_C.z(), i);
     }
-    AppendVisible(
-        b, planes_C,
-        [&](std::uint32_t i) -> const Eigen::Isometry3d* {
-          const std::uint32_t k = batch.body[i];
-          const bool drawn = k < T_CB.size() && static_cast<int>(k) != bodies.hidden;
-          return drawn ? &T_CB[k] : nullptr;
-        },
-        order, out);
+    if (order.empty()) continue;
+    std::sort(order.begin(), order.end());
+    const auto first = static_cast<std::uint32_t>(out.instances.size());
+    for (const auto& [depth, i] : order) {
+      const Eigen::Isometry3d T_CB = T_CW * bodies.T_WB[batch.body[i]];
+      out.instances.push_back(MakeInstance((T_CB * batch.T_FP[i]).matrix(), batch.class_id[i],
+                                           batch.instance_id[i],
+                                           materials_[batch.material[i]].base_color_rgba));
+    }
+    const auto count = static_cast<std::uint32_t>(order.size());
+    out.draws.push_back({b, first, count});
+    out.triangles += static_cast<std::size_t>(count) * meshes_[batch.mesh].index_count / 3;
   }
 }
 

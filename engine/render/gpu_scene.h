@@ -45,14 +45,25 @@ struct VisibleSet {
   std::size_t triangles = 0;  ///< submitted this frame
 };
 
+/// How far the parts a frame draws may be from the scene's own surfaces: a model's coarser looks
+/// (Model::levels) are drawn while their error projects to at most `tolerance_px` pixels at the
+/// object's nearest distance from the camera (focal length `focal_px`). focal_px 0 draws every
+/// object's own parts.
+struct DetailLimit {
+  double focal_px = 0.0;
+  double tolerance_px = 0.5;
+};
+
 /// The static scene on the GPU: every mesh uploaded once (vertex array + index buffer), materials
 /// with their textures, and the placed parts grouped into batches of (mesh, texture) for instanced
 /// drawing: untextured materials differ only in the per-instance colour, so a city of boxes in many
-/// colours is one draw call and its parts can be drawn front to back together. The parts of the
-/// vehicle bodies form batches of their own, placed relative to their body and moved to its pose
-/// of the frame (BodyPoses). Needs the GL context current. Parts keep their pose in double
-/// precision; each frame transforms the visible ones into the camera frame on the CPU (frustum
-/// culling and camera-relative precision in one pass).
+/// colours is one draw call and its parts can be drawn front to back together. Static objects are
+/// culled whole, by their bounding sphere, in clusters of neighbours first (a big world costs what
+/// its visible part costs), and drawn at the coarsest look of their model that DetailLimit allows.
+/// The parts of the vehicle bodies form batches of their own, placed relative to their body and
+/// moved to its pose of the frame (BodyPoses). Needs the GL context current. Poses are kept in
+/// double precision; each frame transforms the visible parts into the camera frame on the CPU
+/// (camera-relative precision).
 class GpuScene {
  public:
   /// Uploads `scene`. Throws ConfigError naming the material when a texture image cannot be read,
@@ -62,8 +73,8 @@ class GpuScene {
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;
 
-  /// One (mesh, texture) pair and the parts that draw it. A part is placed in its frame F: the
-  /// world for the static scene's parts, its vehicle's body (FRD) for a body part.
+  /// One (mesh, texture) pair: one instanced draw per frame. A batch of body parts also holds its
+  /// parts, placed in their body's frame (FRD).
   struct Batch {
     std::uint32_t mesh = 0;
     std::int32_t textured_material = -1;  ///< material whose texture the batch binds, -1 for none
@@ -72,8 +83,8 @@ class GpuScene {
     /// Of a batch of body parts: the body of each part (index into StaticScene::vehicle_bodies).
     /// Empty for a batch of static parts.
     std::vector<std::uint32_t> body;
-    std::vector<Eigen::Affine3d> T_FP;      ///< part -> its frame F
-    std::vector<Eigen::Vector4d> sphere_F;  ///< bounding sphere: centre (frame F) and radius (m)
+    std::vector<Eigen::Affine3d> T_FP;      ///< part -> its body (body batches)
+    std::vector<Eigen::Vector4d> sphere_F;  ///< bounding sphere: centre (body frame), radius (m)
     std::vector<std::uint32_t> class_id;
     std::vector<std::uint32_t> instance_id;
     std::vector<std::uint32_t> material;
@@ -81,10 +92,12 @@ class GpuScene {
 
   /// Visible parts for a camera at T_WC whose view is bounded by `planes_C` (inward unit normals n
   /// and offsets d in the camera frame: a point p is inside when n.dot(p) + d >= 0), with the
-  /// vehicle bodies at `bodies`. Sorted front to back within each batch (cheap early depth
-  /// rejection); batches of large parts after the other static ones, body batches last.
+  /// vehicle bodies at `bodies`, static objects at the looks `detail` allows. Sorted front to back
+  /// within each batch (cheap early depth rejection); batches of large parts after the other static
+  /// ones, body batches last.
   void CollectVisible(const Eigen::Isometry3d& T_WC, const std::vector<Eigen::Vector4d>& planes_C,
-                      const BodyPoses& bodies, VisibleSet& out) const;
+                      const BodyPoses& bodies, VisibleSet& out,
+                      const DetailLimit& detail = {}) const;
 
   /// Binds the vertex array of batch `b`'s mesh, points the per-instance attributes at
   /// `instance_buffer` from instance `first`, binds the batch's texture and issues one
@@ -96,7 +109,8 @@ class GpuScene {
   const SceneLighting& lighting() const { return lighting_; }
   /// Replaces the sun, sky and fog (e.g. a preview from far away without the scene's fog).
   void set_lighting(const SceneLighting& lighting) { lighting_ = lighting; }
-  /// Total number of placed parts of the static scene (body parts not counted).
+  /// Total number of placed parts of the static scene (own parts of the objects' models; body
+  /// parts and coarser looks not counted).
   std::size_t part_count() const { return part_count_; }
   /// Number of vehicle bodies (StaticScene::vehicle_bodies).
   std::size_t body_count() const { return body_count_; }
@@ -112,21 +126,63 @@ class GpuScene {
     std::uint8_t base_color_rgba[4];
     GLuint texture = 0;
   };
-  // Adds the parts of `model` placed by T_FM in frame F (labels, material override) to the batches
-  // of `batch_of` ((mesh, texture) -> index in batches_), making new batches as needed.
-  void AddModelParts(const StaticScene& scene, const Model& model, const Eigen::Affine3d& T_FM,
-                     std::uint8_t class_id, std::uint32_t instance_id,
-                     std::int32_t material_override, int body,
-                     std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of);
-  // Appends batch `b`'s parts inside `planes_C` to `out`, front to back; T_CF_of(i) is the camera
-  // <- frame F transform of part i, or null when the part is not drawn. `order` is scratch.
-  template <class FrameOf>
-  void AppendVisible(std::uint32_t b, const std::vector<Eigen::Vector4d>& planes_C,
-                     const FrameOf& T_CF_of, std::vector<std::pair<double, std::uint32_t>>& order,
-                     VisibleSet& out) const;
+  // A part of a look: drawn in `batch`, placed in the model's frame, coloured by `material`.
+  struct ShapePart {
+    std::uint32_t batch = 0;
+    std::uint32_t material = 0;
+    Eigen::Affine3d T_MP = Eigen::Affine3d::Identity();
+  };
+  // A look of a model with a material override: its parts shape_parts_[first, first + count).
+  struct Look {
+    float error_m = 0.0f;
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+  };
+  // A (model, material override) pair: its looks looks_[first_look, first_look + look_count),
+  // own parts first.
+  struct Shape {
+    std::uint32_t first_look = 0;
+    std::uint32_t look_count = 0;
+  };
+  // A static object: where it is, how large its largest scale is (errors grow with it) and its
+  // shape.
+  struct Item {
+    Eigen::Matrix<double, 3, 4> T_WO;
+    Eigen::Vector4d sphere_W;  // centre (world), radius (m)
+    float scale = 1.0f;
+    std::uint32_t shape = 0;
+    std::uint32_t class_id = 0;
+    std::uint32_t instance_id = 0;
+  };
+  // Neighbouring items items_[first, first + count) and a sphere around all of them.
+  struct Cluster {
+    Eigen::Vector4d sphere_W;
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+  };
+  // Adds the parts of `model` placed by T_FM in body `body`'s frame to the body batches.
+  void AddBodyParts(const StaticScene& scene, const Model& model, const Eigen::Affine3d& T_FM,
+                    std::uint8_t class_id, std::uint32_t instance_id,
+                    std::int32_t material_override, int body,
+                    std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of);
+  // The shape of `model` with `material_override` (made on first use), its batches found or made
+  // through `batch_of`.
+  std::uint32_t ShapeOf(const StaticScene& scene, std::uint32_t model,
+                        std::int32_t material_override,
+                        std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of,
+                        std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& shape_of);
+  std::uint32_t BatchOf(std::uint32_t mesh, std::uint32_t material,
+                        std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of);
+  // Sorts the items into clusters of neighbours (cells of the horizontal plane).
+  void BuildClusters();
   std::vector<Mesh> meshes_;
   std::vector<GpuMaterial> materials_;
   std::vector<Batch> batches_;
+  std::vector<ShapePart> shape_parts_;
+  std::vector<Look> looks_;
+  std::vector<Shape> shapes_;
+  std::vector<Item> items_;
+  std::vector<Cluster> clusters_;
   SceneLighting lighting_;
   std::size_t part_count_ = 0;
   std::size_t body_count_ = 0;

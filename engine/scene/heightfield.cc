@@ -70,12 +70,19 @@ double Heightfield::CalcHeight_m(double north_m, double east_m) const {
 
 Heightfield::SegmentClearance Heightfield::CalcLowestClearance(const Vec3& a_W,
                                                                const Vec3& b_W) const {
+  return CalcClearanceRange(a_W, b_W).lowest;
+}
+
+Heightfield::ClearanceRange Heightfield::CalcClearanceRange(const Vec3& a_W,
+                                                            const Vec3& b_W) const {
   const Vec3 d = b_W - a_W;
-  SegmentClearance lowest{a_W, -a_W.z() - CalcHeight_m(a_W.x(), a_W.y())};
+  const SegmentClearance at_a{a_W, -a_W.z() - CalcHeight_m(a_W.x(), a_W.y())};
+  ClearanceRange range{at_a, at_a};
   auto consider = [&](double t) {
     const Vec3 p = t >= 1.0 ? b_W : Vec3(a_W + t * d);
     const double clearance = -p.z() - CalcHeight_m(p.x(), p.y());
-    if (clearance < lowest.clearance_m) lowest = {p, clearance};
+    if (clearance < range.lowest.clearance_m) range.lowest = {p, clearance};
+    if (clearance > range.highest.clearance_m) range.highest = {p, clearance};
   };
   consider(1.0);
   // Grid coordinates (x along north, y along east, in samples) at the ends. The crossings of
@@ -92,7 +99,7 @@ Heightfield::SegmentClearance Heightfield::CalcLowestClearance(const Vec3& a_W,
   crossings(x0, dx, rows_ - 1.0);
   crossings(y0, dy, cols_ - 1.0);
   crossings(x0 + y0, dx + dy, rows_ + cols_ - 2.0);
-  return lowest;
+  return range;
 }
 
 Vec3 Heightfield::CalcNormal_W(double north_m, double east_m) const {

@@ -58,6 +58,12 @@ class Heightfield {
   /// least height is at one of those crossings or at an end; each is evaluated (about
   /// 3 x length / spacing of them).
   SegmentClearance CalcLowestClearance(const Vec3& a_W, const Vec3& b_W) const;
+  /// The least and the greatest height above the surface along the segment from `a_W` to `b_W`,
+  /// found as CalcLowestClearance finds the least.
+  struct ClearanceRange {
+    SegmentClearance lowest, highest;
+  };
+  ClearanceRange CalcClearanceRange(const Vec3& a_W, const Vec3& b_W) const;
   /// Smooth normal at sample (r, c) for shading: the central difference of its neighbours (one
   /// sided at the edges), world NED, pointing up.
   Vec3 CalcSampleNormal_W(int r, int c) const;

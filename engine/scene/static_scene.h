@@ -79,11 +79,21 @@ struct ModelPart {
   Eigen::Affine3f T_MP = Eigen::Affine3f::Identity();  ///< part -> model (may scale)
 };
 
+/// A coarser look of a model for far views (level of detail): parts a renderer draws instead of
+/// the model's own once `error_m` (the largest distance between this look's surface and the
+/// model's, metres in the model frame) projects to under its tolerance in pixels. Collision, rays
+/// and labels use the model's own parts only.
+struct ModelLevel {
+  std::vector<ModelPart> parts;
+  float error_m = 0.0f;
+};
+
 /// A reusable thing made of parts; identical objects share one model (instancing).
 struct Model {
   std::string name;
   std::vector<ModelPart> parts;
-  Eigen::AlignedBox3f bounds;  ///< in the model frame, over all parts
+  Eigen::AlignedBox3f bounds;           ///< in the model frame, over all parts
+  std::vector<ModelLevel> levels = {};  ///< coarser looks, by increasing error (none: own parts)
 };
 
 /// One placed object of the static scene.

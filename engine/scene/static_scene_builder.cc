@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/frames.h"
+#include "engine/scene/model_levels.h"
 #include "engine/scene/primitive_meshes.h"
 
 namespace airis::engine {
@@ -20,6 +21,11 @@ std::uint32_t StaticSceneBuilder::PrimitiveMesh(Primitive primitive) {
   if (primitive_mesh_[k] < 0)
     primitive_mesh_[k] = static_cast<std::int32_t>(AddMesh(MakePrimitiveMesh(primitive)));
   return static_cast<std::uint32_t>(primitive_mesh_[k]);
+}
+
+StaticScene StaticSceneBuilder::Finish() {
+  AddCoarserLevels(scene_);
+  return std::move(scene_);
 }
 
 std::uint32_t StaticSceneBuilder::AddMesh(TriangleMesh mesh) {

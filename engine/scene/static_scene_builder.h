@@ -58,8 +58,9 @@ class StaticSceneBuilder {
 
   StaticScene& scene() { return scene_; }
   const StaticScene& scene() const { return scene_; }
-  /// Moves the finished scene out.
-  StaticScene Finish() { return std::move(scene_); }
+  /// Gives the models their coarser looks (AddCoarserLevels) and moves the finished scene
+  /// out.
+  StaticScene Finish();
 
  private:
   StaticScene scene_;

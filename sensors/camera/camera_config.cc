@@ -40,6 +40,8 @@ void CameraConfig::Validate() const {
   engine::Require(outputs.rgb || !effects.any(), "effects",
                   "apply to the colour image, and the camera renders none (outputs.rgb is false)");
   WithPrefix("mount.", [&] { mount.Validate(); });
+  engine::RequireInRange("detail_tolerance_px", detail_tolerance_px, 0.0,
+                         engine::kMaxDetailTolerance_px);
   engine::Require(!sees_own_body || attachment == CameraAttachment::kVehicle, "sees_own_body",
                   "applies to a camera on a vehicle; a world-attached camera sees every vehicle");
 }

@@ -48,6 +48,9 @@ struct CameraConfig {
   /// a gimbal looking down past the arms). Off by default; for vehicle-attached cameras only (a
   /// world-attached camera sees every vehicle).
   bool sees_own_body = false;
+  /// How far (pixels) a far object's coarser look may stray from its own surfaces in the images
+  /// (docs/rendering.md, "Level of detail"); 0 draws every object with its own parts.
+  double detail_tolerance_px = 1.0;
 
   template <class V>
   void Visit(V& v) {
@@ -75,6 +78,9 @@ struct CameraConfig {
     v.Field("sees_own_body", sees_own_body,
             "true: its images show its own vehicle's body (default: left out; a world-attached "
             "camera sees every vehicle)");
+    v.Field("detail_tolerance_px", detail_tolerance_px,
+            "how far a far object's coarser look may stray from its own surfaces, in pixels "
+            "(level of detail; 0 = every object at full detail, also far away)");
   }
   /// Throws InvalidField naming the field (e.g. `hfov_deg`, `distortion.k1`, `mount.pitch_deg`,
   /// `sees_own_body` on a world-attached camera, `effects` on a camera without RGB).

@@ -42,7 +42,8 @@ CameraSensor::CameraSensor(std::string name, const CameraConfig& config,
     : engine::ImageSensor(std::move(name), Validated(config).rate_hz),
       config_(config),
       scene_(std::move(scene)),
-      renderer_(scene_->context(), config_.CalcIntrinsics(), config_.outputs),
+      renderer_(scene_->context(), config_.CalcIntrinsics(), config_.outputs,
+                config_.detail_tolerance_px),
       effects_(config_.effects, renderer_.intrinsics(), stream.Fork("noise").NextU64()),
       stream_(MakeImageStream(this->name(), config_, renderer_.intrinsics())) {}
 

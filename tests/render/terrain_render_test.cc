@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/render/camera_renderer.h"
+#include "engine/scene/terrain_mesh.h"
 #include "tests/fixtures/terrain_scenes.h"
 #include "tests/render/render_test_util.h"
 
@@ -31,7 +32,8 @@ TEST(TerrainRenderTest, DepthAndLabelsFollowTheHeightfield) {
   outputs.rgb = false;
   outputs.segmentation = true;
   outputs.depth_perspective = true;
-  CameraRenderer renderer(context, k, outputs);
+  // Full detail (tolerance 0): the chunks' own triangles at every distance.
+  CameraRenderer renderer(context, k, outputs, 0.0);
   const Eigen::Isometry3d T_WC = LookPose(Vec3(0.0, 0.0, -80.0), 0.0, -60.0 * M_PI / 180.0);
   CameraFrame frame;
   // WHEN it renders
@@ -69,8 +71,9 @@ TEST(TerrainRenderTest, DepthAndLabelsFollowTheHeightfield) {
       // A pixel whose hit lies on a chunk's edge may show either neighbour.
       const double cell_n = (p.x() - field.origin_ne_m().x()) / field.spacing_m();
       const double cell_e = (p.y() - field.origin_ne_m().y()) / field.spacing_m();
-      const bool on_edge = std::abs(cell_n / 64.0 - std::round(cell_n / 64.0)) * 64.0 < 0.5 ||
-                           std::abs(cell_e / 64.0 - std::round(cell_e / 64.0)) * 64.0 < 0.5;
+      const double cells = kTerrainChunkSamples - 1;
+      const bool on_edge = std::abs(cell_n / cells - std::round(cell_n / cells)) * cells < 0.5 ||
+                           std::abs(cell_e / cells - std::round(cell_e / cells)) * cells < 0.5;
       if (!on_edge) {
         EXPECT_EQ(frame.instance_id.at(u, v), expected_instance) << u << "," << v;
       }

@@ -132,13 +132,20 @@ TEST(TerrainMeshTest, ChunksCoverTheGridWithItsTrianglesFacingUp) {
       },
       builder));
   const StaticScene& scene = builder.scene();
-  // THEN chunks of 64 cells: 3 x 2 of them, one object each, of the class given
-  ASSERT_EQ(scene.terrain.chunks.size(), 6u);
+  // THEN chunks of 32 cells: 5 x 3 of them, one object each, of the class given
+  ASSERT_EQ(scene.terrain.chunks.size(), 15u);
   EXPECT_EQ(scene.terrain.heightfield, field);
-  std::size_t triangles = 0;
+  std::size_t triangles = 0, level_triangles = 0;
   for (const TerrainChunk& chunk : scene.terrain.chunks) {
     const StaticObject& object = scene.objects[chunk.object];
     EXPECT_EQ(object.class_id, 7);
+    // (each chunk has its coarser looks, tested in terrain_levels_test.cc)
+    EXPECT_EQ(scene.models[object.model].levels.size(), std::size(kTerrainLevelStrides));
+    for (const ModelLevel& level : scene.models[object.model].levels) {
+      for (const ModelPart& part : level.parts) {
+        level_triangles += scene.meshes[part.mesh].triangle_count();
+      }
+    }
     for (const ModelPart& part : scene.models[object.model].parts) {
       const TriangleMesh& mesh = scene.meshes[part.mesh];
       triangles += mesh.triangle_count();
@@ -156,7 +163,7 @@ TEST(TerrainMeshTest, ChunksCoverTheGridWithItsTrianglesFacingUp) {
   }
   // Every cell's two triangles, each in one part.
   EXPECT_EQ(triangles, 2u * 149u * 69u);
-  EXPECT_EQ(static_cast<std::size_t>(steep + gentle), triangles);
+  EXPECT_EQ(static_cast<std::size_t>(steep + gentle), triangles + level_triangles);
   EXPECT_GT(steep, 0);
   EXPECT_GT(gentle, 0);
 }

@@ -101,9 +101,9 @@ TEST(TerrainTest, ChunksAreTerrainStuffWithRockOnSteepGroundAndSoilUpHigh) {
   }
   ASSERT_NE(terrain, nullptr);
   EXPECT_TRUE(terrain->stuff);
-  // 140 x 100 cells in chunks of 64: 3 x 2, and no ground plane beside them.
-  ASSERT_EQ(scene.terrain.chunks.size(), 6u);
-  EXPECT_EQ(scene.objects.size(), 6u);
+  // 140 x 100 cells in chunks of 32: 5 x 4, and no ground plane beside them.
+  ASSERT_EQ(scene.terrain.chunks.size(), 20u);
+  EXPECT_EQ(scene.objects.size(), 20u);
   EXPECT_FALSE(s.has_ground);
   int counts[3] = {0, 0, 0};  // grass, rock, soil
   for (const engine::TerrainChunk& chunk : scene.terrain.chunks) {

@@ -55,13 +55,14 @@ struct CaseResult {
 };
 
 CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, const Flight& flight,
-                   int width, int height, int frames, double far_m) {
+                   int width, int height, int frames, double far_m, double detail_tolerance_px) {
   engine::RenderOutputs outputs;
   outputs.rgb = true;
   outputs.depth_planar = true;
   outputs.segmentation = true;
-  CameraRenderer renderer(
-      context, CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, far_m), outputs);
+  CameraRenderer renderer(context,
+                          CameraIntrinsics::FromHorizontalFov(width, height, 90.0, 0.1, far_m),
+                          outputs, detail_tolerance_px);
   CameraFrame frame;
   std::vector<Eigen::Isometry3d> T_WB;
   const auto render = [&](int k) {
@@ -117,6 +118,7 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   out["egl_platform"] = context.platform();
   out["outputs"] = "rgb + depth_planar + segmentation, read back every frame";
   out["frames_per_case"] = options.frames;
+  out["detail_tolerance_px"] = options.detail_tolerance_px;
 
   struct SceneCase {
     std::string name;
@@ -168,7 +170,8 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
     out[c.name + "_triangles_total"] = scene.CountDrawnTriangles();
     out[c.name + "_vehicles_in_view"] = scene.vehicle_bodies.size();
     for (const auto& [w, h] : {std::pair{640, 480}, std::pair{1280, 720}}) {
-      const CaseResult r = RunCase(context, gpu, c.flight, w, h, options.frames, options.far_m);
+      const CaseResult r = RunCase(context, gpu, c.flight, w, h, options.frames, options.far_m,
+                                   options.detail_tolerance_px);
       const std::string key = c.name + "_" + std::to_string(w) + "x" + std::to_string(h);
       out[key + "_fps"] = r.fps;
       out[key + "_pipelined_fps"] = r.pipelined_fps;

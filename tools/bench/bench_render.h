@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/render/camera_renderer.h"
 #include "engine/render/gpu_scene.h"
 
 namespace airis::tools {
@@ -26,6 +27,8 @@ struct RenderBenchOptions {
   double altitude_m = 50.0;
   /// The far plane of the benchmark camera (m).
   double far_m = 2000.0;
+  /// The camera's level-of-detail tolerance (pixels; 0 = full detail).
+  double detail_tolerance_px = engine::CameraRenderer::kDefaultDetailTolerancePx;
 };
 
 /// The vehicles of a benchmark frame seen from T_WC: vehicle j flies 8 + 3 j m ahead of the camera

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/limits.h"
 #include "tools/bench/bench_dataset.h"
 #include "tools/bench/bench_physics.h"
 #include "tools/bench/bench_render.h"
@@ -68,7 +69,7 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
   add_entry(kEntries[1]);  // sensors
 
   struct RenderArgs {
-    std::string scene, altitude = "50", far = "2000";
+    std::string scene, altitude = "50", far = "2000", tolerance = "1";
     std::vector<std::string> overrides;
   };
   auto render_args = std::make_shared<RenderArgs>();
@@ -87,6 +88,11 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
       ->type_name("M");
   render->add_option("--far-m", render_args->far, "the camera's far plane (default 2000)")
       ->type_name("M");
+  render
+      ->add_option("--detail-tolerance-px", render_args->tolerance,
+                   "level of detail: how far a far object's coarser look may stray, in pixels "
+                   "(default 1; 0 = full detail)")
+      ->type_name("PX");
   render->add_flag("--json", *json, "one JSON object instead of a table");
   SetCommandCallback(render, exit_code, [json, render_args]() -> std::function<int()> {
     RenderBenchOptions options;
@@ -94,6 +100,11 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
     options.overrides = render_args->overrides;
     options.altitude_m = ParseFiniteNumber("altitude-m", render_args->altitude);
     options.far_m = ParseFiniteNumber("far-m", render_args->far);
+    options.detail_tolerance_px = ParseFiniteNumber("detail-tolerance-px", render_args->tolerance);
+    if (options.detail_tolerance_px < 0.0 ||
+        options.detail_tolerance_px > engine::kMaxDetailTolerance_px) {
+      throw engine::ConfigError({}, "--detail-tolerance-px", "must be between 0 and 100 pixels");
+    }
     if (options.far_m <= 1.0) {
       throw engine::ConfigError({}, "--far-m", "the far plane must be beyond 1 m");
     }
