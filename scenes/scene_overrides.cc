@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
+#include <iterator>
 #include <optional>
 #include <utility>
 
@@ -114,20 +116,42 @@ void SetNode(YAML::Node node, const std::vector<Step>& steps, std::size_t i,
   }
 }
 
-// Sets the override in `entry`, whose key path as the user addresses it is `entry_path`, and reads
-// the changed entry again (Validate included).
+// A changed block or entry, read again (Validate included) once every override is in place, so that
+// values valid only together (a larger area with a wider spacing) pass; and the overrides that
+// changed it, in order.
+struct PendingRead {
+  const void* entry = nullptr;
+  std::function<void()> read;
+  std::vector<const SceneOverride*> overrides;
+};
+using PendingReads = std::vector<PendingRead>;
+
+// Sets the override in `entry`, whose key path as the user addresses it is `entry_path`, and
+// queues the changed entry to be read again.
 template <class T>
 AppliedSceneOverrides::Applied SetIn(Sourced<T>& entry, const std::string& entry_path,
                                      const std::vector<Step>& steps, std::size_t first,
-                                     const YAML::Node& value, const SceneOverride& o) {
+                                     const YAML::Node& value, const SceneOverride& o,
+                                     PendingReads& pending) {
   if (first == steps.size()) {
     entry.node.reset(value);  // the whole block or entry
   } else {
     SetNode(entry.node, steps, first, value, entry_path);
   }
-  T config;
-  YamlReader(entry.file->path).ReadValue(entry.node, entry.mark, entry_path, config);
-  entry.config = std::move(config);
+  auto it = std::find_if(pending.begin(), pending.end(),
+                         [&](const PendingRead& p) { return p.entry == &entry; });
+  if (it == pending.end()) {
+    pending.push_back(
+        {&entry,
+         [&entry, entry_path] {
+           T config;
+           YamlReader(entry.file->path).ReadValue(entry.node, entry.mark, entry_path, config);
+           entry.config = std::move(config);
+         },
+         {}});
+    it = std::prev(pending.end());
+  }
+  it->overrides.push_back(&o);
   return {o, entry.file->path, entry.key_path + o.key_path.substr(entry_path.size())};
 }
 
@@ -136,7 +160,8 @@ AppliedSceneOverrides::Applied SetIn(Sourced<T>& entry, const std::string& entry
 template <class T>
 AppliedSceneOverrides::Applied SetInSettings(SceneDocument& doc, std::optional<Sourced<T>>& block,
                                              const std::string& key, const std::vector<Step>& steps,
-                                             const YAML::Node& value, const SceneOverride& o) {
+                                             const YAML::Node& value, const SceneOverride& o,
+                                             PendingReads& pending) {
   if (steps.size() > 1 && steps[1].is_index()) {
     Fail(key, "is a map, not a list: no entry [" + std::to_string(steps[1].index) + "]");
   }
@@ -150,14 +175,14 @@ AppliedSceneOverrides::Applied SetInSettings(SceneDocument& doc, std::optional<S
     const std::shared_ptr<const SourceFile>& file = doc.files.front();
     block = Sourced<T>{T{}, file, key, YAML::Node(YAML::NodeType::Map), file->root.Mark(), 0};
   }
-  return SetIn(*block, key, steps, 1, value, o);
+  return SetIn(*block, key, steps, 1, value, o, pending);
 }
 
 // An entry of a list (`vehicles[2]`), by its index among all the document's entries.
 template <class T>
 AppliedSceneOverrides::Applied SetInList(std::vector<Sourced<T>>& list, const std::string& key,
                                          const std::vector<Step>& steps, const YAML::Node& value,
-                                         const SceneOverride& o) {
+                                         const SceneOverride& o, PendingReads& pending) {
   if (steps.size() < 2 || !steps[1].is_index()) {
     Fail(key, "is a list: name an entry by its index, e.g. " + key + "[0]." +
                   (steps.size() > 1 ? steps[1].key : std::string("...")));
@@ -171,21 +196,22 @@ AppliedSceneOverrides::Applied SetInList(std::vector<Sourced<T>>& list, const st
   if (steps.size() == 2 && value.IsNull()) {
     Fail(entry_path, "an entry cannot be removed by an override");
   }
-  return SetIn(list[index], entry_path, steps, 2, value, o);
+  return SetIn(list[index], entry_path, steps, 2, value, o, pending);
 }
 
-AppliedSceneOverrides::Applied ApplyOne(SceneDocument& doc, const SceneOverride& o) {
+AppliedSceneOverrides::Applied ApplyOne(SceneDocument& doc, const SceneOverride& o,
+                                        PendingReads& pending) {
   const std::vector<Step> steps = *SplitKeyPath(o.key_path);  // checked by ParseSceneOverride
   const YAML::Node value = YAML::Load(o.value);
   const std::string& key = steps.front().key;
-  if (key == "scene") return SetInSettings(doc, doc.scene, key, steps, value, o);
-  if (key == "ground") return SetInSettings(doc, doc.ground, key, steps, value, o);
-  if (key == "physics") return SetInSettings(doc, doc.physics, key, steps, value, o);
-  if (key == "terrain") return SetInSettings(doc, doc.terrain, key, steps, value, o);
-  if (key == "classes") return SetInList(doc.classes, key, steps, value, o);
-  if (key == "objects") return SetInList(doc.objects, key, steps, value, o);
-  if (key == "generators") return SetInList(doc.generators, key, steps, value, o);
-  if (key == "vehicles") return SetInList(doc.vehicles, key, steps, value, o);
+  if (key == "scene") return SetInSettings(doc, doc.scene, key, steps, value, o, pending);
+  if (key == "ground") return SetInSettings(doc, doc.ground, key, steps, value, o, pending);
+  if (key == "physics") return SetInSettings(doc, doc.physics, key, steps, value, o, pending);
+  if (key == "terrain") return SetInSettings(doc, doc.terrain, key, steps, value, o, pending);
+  if (key == "classes") return SetInList(doc.classes, key, steps, value, o, pending);
+  if (key == "objects") return SetInList(doc.objects, key, steps, value, o, pending);
+  if (key == "generators") return SetInList(doc.generators, key, steps, value, o, pending);
+  if (key == "vehicles") return SetInList(doc.vehicles, key, steps, value, o, pending);
   if (key == "include") {
     Fail(key, "cannot be overridden: a scene's includes are read before its overrides apply");
   }
@@ -277,17 +303,29 @@ void AppliedSceneOverrides::Rethrow(const engine::ConfigError& error) const {
 AppliedSceneOverrides ApplySceneOverrides(SceneDocument* doc,
                                           const std::vector<SceneOverride>& overrides) {
   AppliedSceneOverrides applied;
-  // Removals first: a key replaced by another that excludes it (time_of_day_h=null with
-  // sun_elevation_deg=20) never passes through a block that holds both.
+  PendingReads pending;
+  // Removals first (a removed key is never looked up by a later override).
   for (const bool removals : {true, false}) {
     for (const SceneOverride& o : overrides) {
       if ((o.value == "null") != removals) continue;
       try {
-        applied.Add(ApplyOne(*doc, o));
+        applied.Add(ApplyOne(*doc, o, pending));
       } catch (const ConfigError& e) {
-        // The file was valid before: whatever the changed block's reader finds is the override's.
         throw ConfigError({"--set " + o.text(), 0, 0}, e.key_path(), e.problem());
       }
+    }
+  }
+  for (const PendingRead& p : pending) {
+    try {
+      p.read();
+    } catch (const ConfigError& e) {
+      // The file was valid before: whatever the changed block's reader finds is an override's,
+      // the one at or above the key in error, else the last that changed the block.
+      const SceneOverride* blamed = p.overrides.back();
+      for (const SceneOverride* o : p.overrides) {
+        if (AtOrBelow(e.key_path(), o->key_path)) blamed = o;
+      }
+      throw ConfigError({"--set " + blamed->text(), 0, 0}, e.key_path(), e.problem());
     }
   }
   return applied;

@@ -132,6 +132,27 @@ TEST(SceneOverridesTest, EveryBlockOfTheSceneFileCanBeOverridden) {
   }
 }
 
+TEST(SceneOverridesTest, ValuesValidOnlyTogetherPassTogether) {
+  // GIVEN the example forest, WHEN its area grows to 8 km with a spacing wide enough for it: the
+  // area alone would make too fine a sampling grid for the file's 3 m spacing
+  const std::vector<std::string> wider = {"generators[0].forest.area.size_ne_m=[8000, 8000]",
+                                          "generators[0].forest.min_spacing_m=12",
+                                          "generators[0].forest.density_per_ha=1"};
+  // THEN together they load (keys are applied in order, the blocks read once they all are)
+  const Scene s = LoadWith("scenes/forest.yaml", wider);
+  EXPECT_GT(s.static_scene.objects.size(), 5000u);
+  // AND the area alone is refused, naming it
+  try {
+    LoadWith("scenes/forest.yaml", {wider[0]});
+    ADD_FAILURE() << "the area alone loaded";
+  } catch (const engine::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(
+                  "--set " + wider[0] + ": generators[0].forest.min_spacing_m", 0),
+              0u)
+        << e.what();
+  }
+}
+
 TEST(SceneOverridesTest, ParsingNormalisesTheValueAndRefusesWhatIsNoOverride) {
   EXPECT_EQ(ParseSceneOverride("scene.lighting.ambient= 0.5").text(), "scene.lighting.ambient=0.5");
   EXPECT_EQ(ParseSceneOverride("a.b=[1,2 ,3]").value, "[1, 2, 3]");
