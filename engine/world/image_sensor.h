@@ -36,6 +36,8 @@ struct ImageStream {
   double offset_x_m = 0.0;
   double baseline_m = 0.0;  ///< of its stereo rig (right eye's offset); 0 for a mono camera
   double rate_hz = 0.0;     ///< frames per simulated second
+  /// Its camera's level-of-detail tolerance (pixels; 0 = full detail; docs/rendering.md).
+  double detail_tolerance_px = 1.0;
 };
 
 /// Pose of stream `stream`'s optical frame C in the world: T_WC = T_WB T_BS T_SC T_offset, with B

@@ -100,6 +100,7 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
   s.world_fixed = config.attachment == CameraAttachment::kWorld;
   s.sees_own_body = config.sees_own_body;
   s.rate_hz = config.rate_hz;
+  s.detail_tolerance_px = config.detail_tolerance_px;
   return s;
 }
 

@@ -125,7 +125,8 @@ VectorEnv::VectorEnv(const tools::SceneSource& scene, const VectorEnvConfig& con
     outputs.rgb = config_.image == ImageKind::kRgb;
     outputs.depth_planar = config_.image == ImageKind::kDepth;
     renderer_ = std::make_unique<engine::CameraRenderer>(resources_.render_scene->context(),
-                                                         camera_->intrinsics, outputs);
+                                                         camera_->intrinsics, outputs,
+                                                         camera_->detail_tolerance_px);
   }
   // The worlds of the episodes hold the learning vehicle alone, without sensors: observations are
   // its ground truth (the flight controller reads truth too) and images are rendered by
