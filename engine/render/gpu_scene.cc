@@ -50,6 +50,21 @@ GLuint UploadTexture(const Material& material) {
   return texture;
 }
 
+// A sphere around `box` placed by T (centre, radius); zero for an empty box.
+Eigen::Vector4d CalcBoundingSphere(const Eigen::AlignedBox3f& box, const Eigen::Affine3d& T) {
+  Eigen::Vector4d sphere = Eigen::Vector4d::Zero();
+  if (box.isEmpty()) return sphere;
+  const Eigen::Vector3d centre = T * box.center().cast<double>();
+  double radius = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3d corner =
+        T * box.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c)).cast<double>();
+    radius = std::max(radius, (corner - centre).norm());
+  }
+  sphere << centre, radius;
+  return sphere;
+}
+
 }  // namespace
 
 GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
@@ -125,18 +140,7 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     item.instance_id = object.instance_id;
     const Eigen::Matrix3d L = object.T_WO.linear();
     item.scale = static_cast<float>(std::max({L.col(0).norm(), L.col(1).norm(), L.col(2).norm()}));
-    item.sphere_W = Eigen::Vector4d::Zero();
-    if (!model.bounds.isEmpty()) {
-      const Eigen::Vector3d centre_W = object.T_WO * model.bounds.center().cast<double>();
-      double radius = 0.0;
-      for (int c = 0; c < 8; ++c) {
-        const Eigen::Vector3d corner =
-            object.T_WO *
-            model.bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c)).cast<double>();
-        radius = std::max(radius, (corner - centre_W).norm());
-      }
-      item.sphere_W << centre_W, radius;
-    }
+    item.sphere_W = CalcBoundingSphere(model.bounds, object.T_WO);
     const Shape& shape = shapes_[item.shape];
     if (item.sphere_W.w() > kLargePartRadiusM) {
       for (std::uint32_t l = 0; l < shape.look_count; ++l) {
@@ -257,18 +261,7 @@ void GpuScene::AddBodyParts(
         material_override >= 0 ? static_cast<std::uint32_t>(material_override) : part.material;
     Batch& batch = batches_[BatchOf(part.mesh, material, batch_of)];
     const Eigen::Affine3d T_FP = T_FM * part.T_MP.cast<double>();
-    const Eigen::AlignedBox3f& b = scene.meshes[part.mesh].bounds;
-    Eigen::Vector4d sphere = Eigen::Vector4d::Zero();
-    if (!b.isEmpty()) {
-      const Eigen::Vector3d centre_F = T_FP * b.center().cast<double>();
-      double radius = 0.0;
-      for (int c = 0; c < 8; ++c) {
-        const Eigen::Vector3d corner =
-            T_FP * b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c)).cast<double>();
-        radius = std::max(radius, (corner - centre_F).norm());
-      }
-      sphere << centre_F, radius;
-    }
+    const Eigen::Vector4d sphere = CalcBoundingSphere(scene.meshes[part.mesh].bounds, T_FP);
     batch.body.push_back(static_cast<std::uint32_t>(body));
     batch.T_FP.push_back(T_FP);
     batch.sphere_F.push_back(sphere);
