@@ -10,6 +10,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <memory>
+#include <vector>
+
 #include "tools/bench/bench_physics.h"
 
 namespace airis::tools {
@@ -38,6 +41,47 @@ void BM_PhysicsTickBoxes10k(benchmark::State& state) {
       static_cast<double>(scenario.contact_ticks()) / static_cast<double>(scenario.ticks());
 }
 BENCHMARK(BM_PhysicsTickBoxes10k)->Arg(10000);
+
+// Over terrain (the hills of MakeHillsScene): flying the route's legs 30 m above the ground below
+// each leg's start, against the empty world's flight above the plane; parked (rotors off) at the
+// route's points just above the hills, against parked on the ground plane.
+std::vector<engine::RigidBodyState> RouteAbove(const engine::StaticScene* hills, double height_m) {
+  std::vector<engine::RigidBodyState> route = MakeRoute(64, 0.9 * kExtent_m, kSeed);
+  for (auto& leg : route) {
+    const double ground_m =
+        hills != nullptr ? HillsHeight_m(*hills, leg.p_W.x(), leg.p_W.y()) : 0.0;
+    leg.p_W.z() = -(ground_m + height_m);
+    if (height_m < 1.0) leg.v_W.setZero();  // parked
+  }
+  return route;
+}
+
+void RunParked(benchmark::State& state, PhysicsTickScenario& scenario) {
+  RunTicks(state, scenario);
+  state.counters["contact_tick_fraction"] =
+      static_cast<double>(scenario.contact_ticks()) / static_cast<double>(scenario.ticks());
+}
+
+void BM_PhysicsTickOverTerrain(benchmark::State& state) {
+  auto hills = std::make_shared<const engine::StaticScene>(MakeHillsScene(kExtent_m));
+  PhysicsTickScenario scenario(hills, RouteAbove(hills.get(), 30.0), true);
+  RunTicks(state, scenario);
+}
+BENCHMARK(BM_PhysicsTickOverTerrain);
+
+void BM_PhysicsTickParkedOnTerrain(benchmark::State& state) {
+  auto hills = std::make_shared<const engine::StaticScene>(MakeHillsScene(kExtent_m));
+  PhysicsTickScenario scenario(hills, RouteAbove(hills.get(), 0.2), false);
+  RunParked(state, scenario);
+}
+BENCHMARK(BM_PhysicsTickParkedOnTerrain);
+
+void BM_PhysicsTickParkedOnGround(benchmark::State& state) {
+  auto ground = std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(0, kExtent_m, kSeed));
+  PhysicsTickScenario scenario(ground, RouteAbove(nullptr, 0.2), false);
+  RunParked(state, scenario);
+}
+BENCHMARK(BM_PhysicsTickParkedOnGround);
 
 void BM_BulletTickBoxes10k(benchmark::State& state) {
   BulletTickScenario scenario(static_cast<int>(state.range(0)), kExtent_m, kSeed, false);

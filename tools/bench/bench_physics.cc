@@ -6,10 +6,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/core/error.h"
 #include "engine/core/random.h"
 #include "engine/environment/environment.h"
 #include "engine/physics/collision_world.h"
 #include "engine/physics/drag.h"
+#include "engine/scene/static_scene_builder.h"
+#include "engine/scene/terrain_mesh.h"
 #include "engine/world/simulation.h"
 #include "scenes/vehicle_kinds.h"
 #include "vehicles/multirotor/multirotor.h"
@@ -103,6 +106,33 @@ engine::StaticScene MakeBoxFieldScene(int box_count, double extent_m, std::uint6
   return scene;
 }
 
+engine::StaticScene MakeHillsScene(double extent_m) {
+  constexpr double kSpacing = 10.0;
+  const int n = static_cast<int>(std::lround(extent_m / kSpacing)) + 1;
+  const Eigen::Vector2d origin(-0.5 * extent_m, -0.5 * extent_m);
+  std::vector<double> heights;
+  heights.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) {
+      const double north = origin.x() + r * kSpacing, east = origin.y() + c * kSpacing;
+      heights.push_back(30.0 + 30.0 * std::sin(north / 180.0) * std::cos(east / 230.0));
+    }
+  }
+  engine::StaticSceneBuilder builder;
+  engine::Material ground;
+  ground.friction = 0.8f;
+  const std::uint32_t material = builder.Material(ground);
+  AIRIS_DEMAND(engine::AddTerrainChunks(
+      std::make_shared<const engine::Heightfield>(origin, kSpacing, n, n, std::move(heights)), 15,
+      std::span<const std::uint32_t>(&material, 1), [](const Vec3&, double) { return 0; },
+      builder));
+  return builder.Finish();
+}
+
+double HillsHeight_m(const engine::StaticScene& hills, double north_m, double east_m) {
+  return hills.terrain.heightfield->CalcHeight_m(north_m, east_m);
+}
+
 std::vector<engine::RigidBodyState> MakeRoute(int legs, double extent_m, std::uint64_t seed) {
   engine::RandomStream random(seed + 1000);
   std::vector<engine::RigidBodyState> route(static_cast<std::size_t>(legs));
@@ -135,10 +165,22 @@ struct PhysicsTickScenario::State {
 };
 
 PhysicsTickScenario::PhysicsTickScenario(int box_count, double extent_m, std::uint64_t seed)
+    : PhysicsTickScenario(
+          std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(box_count, extent_m, seed)),
+          [&] {
+            std::vector<engine::RigidBodyState> route =
+                MakeRoute(64, box_count > 0 ? extent_m : 100.0, seed);
+            if (box_count == 0) {
+              for (auto& leg : route) leg.p_W.z() = -10.0;  // empty world: clear of the ground
+            }
+            return route;
+          }(),
+          true) {}
+
+PhysicsTickScenario::PhysicsTickScenario(std::shared_ptr<const engine::StaticScene> scene,
+                                         std::vector<engine::RigidBodyState> route, bool rotors_on)
     : s_(std::make_unique<State>()) {
-  auto scene =
-      std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(box_count, extent_m, seed));
-  auto world = std::make_unique<engine::World>(scene, BenchEnvironment());
+  auto world = std::make_unique<engine::World>(std::move(scene), BenchEnvironment());
   auto quad =
       std::make_unique<vehicles::Multirotor>("quad", scenes::LoadMultirotorPreset("quad_x"));
   s_->quad = quad.get();
@@ -146,11 +188,8 @@ PhysicsTickScenario::PhysicsTickScenario(int box_count, double extent_m, std::ui
   const Vec3 p(0.0, 0.0, -3.0);
   const double u = s_->quad->CalcHoverCommand(world->environment().CalcAir(p).density_kg_m3,
                                               world->environment().CalcGravity_m_s2(p));
-  s_->hover.assign(4, u);
-  s_->route = MakeRoute(64, box_count > 0 ? extent_m : 100.0, seed);
-  if (box_count == 0) {
-    for (auto& leg : s_->route) leg.p_W.z() = -10.0;  // empty world: clear of the ground
-  }
+  s_->hover.assign(4, rotors_on ? u : 0.0);
+  s_->route = std::move(route);
   s_->sim = std::make_unique<engine::Simulation>(std::move(world));
   s_->StartLeg();
 }

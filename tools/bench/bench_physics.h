@@ -26,6 +26,14 @@ engine::StaticScene MakeBoxFieldScene(int box_count, double extent_m, std::uint6
 /// level in a random direction, level attitude, so it passes near boxes and sometimes hits them.
 std::vector<engine::RigidBodyState> MakeRoute(int legs, double extent_m, std::uint64_t seed);
 
+/// Rolling hills (up to 60 m of relief, slopes under 20 degrees) sampled every 10 m over
+/// `extent_m` x `extent_m` about the origin, as a scene's terrain (chunks, class 15, friction 0.8),
+/// with nothing else.
+engine::StaticScene MakeHillsScene(double extent_m);
+
+/// Height of MakeHillsScene's surface at (north, east) (m, up).
+double HillsHeight_m(const engine::StaticScene& hills, double north_m, double east_m);
+
 /// Ticks the reference quad-x in our World (rotors with lag at hover, drag, gravity and atmosphere
 /// at its altitude, RK4, collision query and contact response) through a box field. Every
 /// kTicksPerLeg ticks it restarts from the next leg of the route.
@@ -34,6 +42,10 @@ class PhysicsTickScenario {
   static constexpr int kTicksPerLeg = 500;
   /// `box_count` = 0: the empty world (ground plane only).
   PhysicsTickScenario(int box_count, double extent_m, std::uint64_t seed);
+  /// The quad in `scene`, restarted every kTicksPerLeg ticks from the next state of `route`, its
+  /// rotors at hover (`rotors_on`) or stopped (a parked quad: start it just above the surface).
+  PhysicsTickScenario(std::shared_ptr<const engine::StaticScene> scene,
+                      std::vector<engine::RigidBodyState> route, bool rotors_on);
   ~PhysicsTickScenario();
   /// One simulation tick.
   void Tick();
