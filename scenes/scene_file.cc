@@ -152,6 +152,26 @@ class DocumentReader {
 
 }  // namespace
 
+namespace {
+
+// The keys a struct's Visit lists.
+struct KeyNames {
+  std::vector<std::string> names;
+  template <class T>
+  void Field(const char* key, T&, const char*) {
+    names.emplace_back(key);
+  }
+  void Renamed(const char*, const char*) {}
+};
+
+}  // namespace
+
+std::vector<std::string> SceneFileKeys() {
+  KeyNames keys;
+  SceneFileConfig{}.Visit(keys);
+  return keys.names;
+}
+
 std::string ResolveRelative(const std::string& base_file, const std::string& relative) {
   const fs::path rel(relative);
   if (rel.is_absolute()) return rel.lexically_normal().string();

@@ -143,6 +143,9 @@ SceneDocument ReadSceneDocument(const std::string& path);
 /// Reads scene text (tests); `path` names it in messages and anchors relative paths.
 SceneDocument ReadSceneDocumentFromString(const std::string& text, const std::string& path);
 
+/// The top-level keys of a scene file (SceneFileConfig's), in the order its Visit lists them.
+std::vector<std::string> SceneFileKeys();
+
 /// `relative` resolved against the directory of `base_file` (absolute paths unchanged), lexically
 /// normal.
 std::string ResolveRelative(const std::string& base_file, const std::string& relative);

@@ -62,16 +62,6 @@ std::string PathOf(const std::string& prefix, const Step& step) {
                          : (prefix.empty() ? step.key : prefix + "." + step.key);
 }
 
-// The keys a struct's Visit lists (the top-level keys of a scene file).
-struct KeyNames {
-  std::vector<std::string> names;
-  template <class T>
-  void Field(const char* key, T&, const char*) {
-    names.emplace_back(key);
-  }
-  void Renamed(const char*, const char*) {}
-};
-
 [[noreturn]] void Fail(const std::string& key_path, const std::string& problem) {
   throw ConfigError({}, key_path, problem);
 }
@@ -215,10 +205,9 @@ AppliedSceneOverrides::Applied ApplyOne(SceneDocument& doc, const SceneOverride&
   if (key == "include") {
     Fail(key, "cannot be overridden: a scene's includes are read before its overrides apply");
   }
-  KeyNames top;
-  SceneFileConfig{}.Visit(top);
+  const std::vector<std::string> top = SceneFileKeys();
   std::string problem = "unknown key '" + key + "'";
-  if (const auto close = engine::ClosestMatch(key, top.names)) {
+  if (const auto close = engine::ClosestMatch(key, top)) {
     problem += " (did you mean '" + *close + "'?)";
   }
   Fail(key, problem);

@@ -100,16 +100,6 @@ TEST(SceneOverridesTest, ValuesReachTheBuiltWorld) {
             std::string::npos);
 }
 
-// The top-level keys of a scene file, as its Visit lists them.
-struct TopLevelKeys {
-  std::vector<std::string> keys;
-  template <class T>
-  void Field(const char* key, T&, const char*) {
-    keys.emplace_back(key);
-  }
-  void Renamed(const char*, const char*) {}
-};
-
 TEST(SceneOverridesTest, EveryBlockOfTheSceneFileCanBeOverridden) {
   // GIVEN the scene without terrain, WHEN a terrain is set key by key
   const std::string path = SceneFile("terrain");
@@ -121,10 +111,9 @@ TEST(SceneOverridesTest, EveryBlockOfTheSceneFileCanBeOverridden) {
   EXPECT_EQ(s.static_scene.terrain.heightfield->cols(), 31);
   // AND every top-level key of the file but `include` is a block an override reaches: the error
   // for a key inside it is about that key, never "unknown key".
-  TopLevelKeys names;
-  SceneFileConfig{}.Visit(names);
-  ASSERT_GE(names.keys.size(), 8u);
-  for (const std::string& key : names.keys) {
+  const std::vector<std::string> keys = SceneFileKeys();
+  ASSERT_GE(keys.size(), 8u);
+  for (const std::string& key : keys) {
     if (key == "include") continue;
     EXPECT_EQ(ErrorOf(path, {key + ".no_such_key=1"}).find("unknown key '" + key + "'"),
               std::string::npos)
