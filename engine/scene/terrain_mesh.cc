@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "engine/core/error.h"
 
@@ -117,18 +118,26 @@ std::vector<int> CoarseLines(int n, int stride) {
 double CalcLargestDeviation_m(const Heightfield& field, const ChunkVertices& v, int row0, int col0,
                               const std::vector<Triangle>& triangles) {
   double largest = 0.0;
+  // Each edge once (neighbouring triangles share theirs).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * triangles.size());
+  for (const Triangle& t : triangles) {
+    for (int e = 0; e < 3; ++e) edges.push_back(std::minmax(t[e], t[(e + 1) % 3]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (const auto& [i, j] : edges) {
+    const Eigen::Vector3d& p = v.grid(i);
+    const Eigen::Vector3d& q = v.grid(j);
+    const Eigen::Vector2d p_ne = v.NorthEast(p.x(), p.y()), q_ne = v.NorthEast(q.x(), q.y());
+    const Heightfield::ClearanceRange range = field.CalcClearanceRange(
+        Vec3(p_ne.x(), p_ne.y(), -p.z()), Vec3(q_ne.x(), q_ne.y(), -q.z()));
+    largest = std::max({largest, -range.lowest.clearance_m, range.highest.clearance_m});
+  }
   for (const Triangle& t : triangles) {
     const Eigen::Vector3d& a = v.grid(t[0]);
     const Eigen::Vector3d& b = v.grid(t[1]);
     const Eigen::Vector3d& c = v.grid(t[2]);
-    for (int e = 0; e < 3; ++e) {
-      const Eigen::Vector3d& p = v.grid(t[e]);
-      const Eigen::Vector3d& q = v.grid(t[(e + 1) % 3]);
-      const Eigen::Vector2d p_ne = v.NorthEast(p.x(), p.y()), q_ne = v.NorthEast(q.x(), q.y());
-      const Heightfield::ClearanceRange range = field.CalcClearanceRange(
-          Vec3(p_ne.x(), p_ne.y(), -p.z()), Vec3(q_ne.x(), q_ne.y(), -q.z()));
-      largest = std::max({largest, -range.lowest.clearance_m, range.highest.clearance_m});
-    }
     // Samples inside: barycentric coordinates in the plan.
     const double det = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
     if (det == 0.0) continue;
