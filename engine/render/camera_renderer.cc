@@ -292,10 +292,8 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   const Eigen::Vector3f to_sun_C = (R_CW * -light.sun_direction_W.normalized()).cast<float>();
   const Eigen::Vector3f up_C = (R_CW * Eigen::Vector3d(0.0, 0.0, -1.0)).cast<float>();
 
-  // A tolerance of 0 keeps every object's own parts (focal length 0 turns the levels off).
-  const DetailLimit detail{detail_tolerance_px_ > 0.0 ? std::max(k.fx_px, k.fy_px) : 0.0,
-                           std::max(detail_tolerance_px_, 1e-9)};
-  scene.CollectVisible(T_WC, planes_C_, bodies, visible_, detail);
+  scene.CollectVisible(T_WC, planes_C_, bodies, visible_,
+                       DetailLimit{std::max(k.fx_px, k.fy_px), detail_tolerance_px_});
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
   const std::size_t bytes = visible_.instances.size() * sizeof(GpuInstance);
   if (bytes > instance_capacity_) {

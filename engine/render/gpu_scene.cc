@@ -331,7 +331,9 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
   const Eigen::Isometry3d T_CW = T_WC.inverse();
   // Static objects: clusters first, then the objects of a cluster that crosses the view's edge.
   std::vector<std::vector<Entry>> entries(batches_.size());
-  const double pixels_per_m = detail.focal_px / detail.tolerance_px;  // at 1 m distance
+  // Pixels per metre of error at 1 m distance, per pixel of tolerance (0: levels off).
+  const double pixels_per_m =
+      detail.tolerance_px > 0.0 ? detail.focal_px / detail.tolerance_px : 0.0;
   for (const Cluster& cluster : clusters_) {
     const Side cluster_side =
         Classify(T_CW * cluster.sphere_W.head<3>(), cluster.sphere_W.w(), planes_C);

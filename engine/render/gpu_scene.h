@@ -47,8 +47,8 @@ struct VisibleSet {
 
 /// How far the parts a frame draws may be from the scene's own surfaces: a model's coarser looks
 /// (Model::levels) are drawn while their error projects to at most `tolerance_px` pixels at the
-/// object's nearest distance from the camera (focal length `focal_px`). focal_px 0 draws every
-/// object's own parts.
+/// object's nearest distance from the camera (focal length `focal_px`). focal_px or tolerance_px
+/// 0 draws every object's own parts.
 struct DetailLimit {
   double focal_px = 0.0;
   double tolerance_px = 0.5;
