@@ -14,6 +14,7 @@
 
 #include "engine/core/error.h"
 #include "engine/physics/static_collider_grid.h"
+#include "engine/physics/terrain_contacts.h"
 #include "engine/scene/heightfield.h"
 
 namespace airis::engine {
@@ -116,29 +117,6 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
   btVector3 direction;
 };
 
-// Terrain points are measured against the triangle under the body's deepest point: where a box
-// crosses the edge two triangles share, Bullet's convex-triangle test reports the distance to the
-// edge along the edge's normal, which tilts toward the edge, and a body sliding over a smooth slope
-// stops or hops there (the internal-edge problem of triangle meshes). Each point of contacts
-// [first, end) keeps the body's point Bullet found (point + normal * distance) and gets the normal
-// and depth of the surface under it; points that end up farther than `margin_m` from the surface
-// are dropped.
-void ToTerrainSurface(const Heightfield& field, double margin_m, std::size_t first,
-                      std::vector<Contact>& contacts) {
-  std::size_t kept = first;
-  for (std::size_t i = first; i < contacts.size(); ++i) {
-    Contact c = contacts[i];
-    const Vec3 p_body_W = c.point_W - c.depth_m * c.normal_W;
-    c.normal_W = field.CalcNormal_W(p_body_W.x(), p_body_W.y());
-    // Vertical penetration times the normal's vertical part: the distance to the triangle's plane.
-    c.depth_m = (p_body_W.z() + field.CalcHeight_m(p_body_W.x(), p_body_W.y())) * -c.normal_W.z();
-    if (c.depth_m < -margin_m) continue;
-    c.point_W = p_body_W + c.depth_m * c.normal_W;
-    contacts[kept++] = c;
-  }
-  contacts.resize(kept);
-}
-
 // Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
 // per world). Our dispatcher (below) never draws from them, so they are made as small as Bullet
 // allows: a process can hold thousands of worlds (the Python module's vectorized environments).
@@ -186,13 +164,6 @@ class HeapDispatcher final : public btCollisionDispatcher {
 struct CollisionWorld::Bullet {
   btDefaultCollisionConfiguration configuration{SmallPools()};
   HeapDispatcher dispatcher{&configuration};
-  // Terrain's own: Bullet's multipoint convex-convex contacts (each of the body's triangle pairs
-  // perturbs the body's attitude a little to find up to three more points on the face), so that a
-  // box resting on a heightfield gets its face's contacts in one query, as box-box gives them on
-  // the ground plane. With one point per triangle a box on terrain rocks from corner to corner and
-  // walks downhill. Its algorithms come from the heap too, and are freed like the others.
-  btDefaultCollisionConfiguration terrain_configuration{SmallPools()};
-  HeapDispatcher terrain_dispatcher{&terrain_configuration};
   btDispatcherInfo dispatch_info;  // Bullet's defaults
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays;
@@ -207,6 +178,19 @@ struct CollisionWorld::Bullet {
   std::vector<std::unique_ptr<btCollisionObject>> statics;
   std::vector<std::vector<float>> heightfield_data;  // per terrain chunk, Bullet's layout
   std::shared_ptr<const Heightfield> terrain;        // the scene's, or null
+  // The terrain's chunks, indexed by their colliders' user index 2 (-1 on other colliders). Their
+  // Bullet heightfields serve sweeps; contacts come from FindTerrainContacts.
+  std::vector<TerrainChunk> terrain_chunks;
+  // The highest point (least z) of the colliders other than the terrain's; +infinity without any.
+  double top_z_without_terrain = std::numeric_limits<double>::infinity();
+
+  // Open air: the box from `lo_W` to `hi_W` (world NED) is above every collider (the cheap test
+  // first), or above every collider but the terrain and above the terrain's samples under it.
+  bool InOpenAir(const Vec3& lo_W, const Vec3& hi_W) const {
+    if (hi_W.z() < grid.top_z()) return true;
+    return terrain != nullptr && hi_W.z() < top_z_without_terrain &&
+           -hi_W.z() > terrain->CalcHighestSampleUnder_m(lo_W.head<2>(), hi_W.head<2>());
+  }
   // Oriented bounds of every static collider, indexed like colliders_, and the grid over them.
   std::vector<ColliderBounds> bounds;
   StaticColliderGrid grid;
@@ -290,12 +274,35 @@ struct CollisionWorld::Bullet {
     return Own(shape);
   }
 
-  void AddStatic(btCollisionShape* shape, const btTransform& T_WC, int collider_index) {
+  // The collider of the terrain chunk under `p_W` among the colliders `near` (the first terrain
+  // chunk among them where none holds it: a point beyond the grid's edge).
+  std::uint32_t TerrainColliderAt(const Vec3& p_W, const std::vector<std::uint32_t>& near) const {
+    const double s = terrain->spacing_m();
+    const double x = (p_W.x() - terrain->origin_ne_m().x()) / s;
+    const double y = (p_W.y() - terrain->origin_ne_m().y()) / s;
+    std::uint32_t found = std::numeric_limits<std::uint32_t>::max();
+    for (const std::uint32_t collider : near) {
+      const int k = statics[collider]->getUserIndex2();
+      if (k < 0) continue;
+      const TerrainChunk& chunk = terrain_chunks[static_cast<std::size_t>(k)];
+      if (found == std::numeric_limits<std::uint32_t>::max()) found = collider;
+      if (x >= chunk.row0 && x <= chunk.row0 + chunk.rows - 1 && y >= chunk.col0 &&
+          y <= chunk.col0 + chunk.cols - 1) {
+        return collider;
+      }
+    }
+    return found;
+  }
+
+  void AddStatic(btCollisionShape* shape, const btTransform& T_WC, int collider_index,
+                 const TerrainChunk* chunk = nullptr) {
     auto object = std::make_unique<btCollisionObject>();
     object->setCollisionShape(shape);
     object->setWorldTransform(T_WC);
     object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
     object->setUserIndex(collider_index);
+    object->setUserIndex2(chunk != nullptr ? static_cast<int>(terrain_chunks.size()) : -1);
+    if (chunk != nullptr) terrain_chunks.push_back(*chunk);
     btVector3 lo, hi;
     shape->getAabb(btTransform::getIdentity(), lo, hi);
     const btMatrix3x3& basis = T_WC.getBasis();
@@ -305,15 +312,19 @@ struct CollisionWorld::Bullet {
     }
     const Vec3 local_centre = 0.5 * (FromBt(lo) + FromBt(hi));
     bounds.resize(static_cast<std::size_t>(collider_index) + 1);
-    bounds[static_cast<std::size_t>(collider_index)] = ColliderBounds{
-        FromBt(T_WC.getOrigin()) + R * local_centre, R, 0.5 * (FromBt(hi) - FromBt(lo))};
+    const ColliderBounds& placed = bounds[static_cast<std::size_t>(collider_index)] =
+        ColliderBounds{FromBt(T_WC.getOrigin()) + R * local_centre, R,
+                       0.5 * (FromBt(hi) - FromBt(lo))};
+    if (chunk == nullptr) {
+      top_z_without_terrain =
+          std::min(top_z_without_terrain, placed.centre_W.z() - (R.cwiseAbs() * placed.half_m).z());
+    }
     statics.push_back(std::move(object));
   }
 };
 
 CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_unique<Bullet>()) {
   Bullet& b = *bullet_;
-  b.terrain_configuration.setConvexConvexMultipointIterations();
   b.terrain = scene.terrain.heightfield;
   b.mesh_shapes.assign(scene.meshes.size(), nullptr);
   std::vector<const TerrainChunk*> chunk_of(scene.objects.size(), nullptr);
@@ -355,7 +366,7 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       btCollisionShape* shape =
           b.HeightfieldShape(*scene.terrain.heightfield, *chunk_of[oi], &T_WC);
       const std::uint32_t mat = model.parts.empty() ? 0 : model.parts.front().material;
-      b.AddStatic(shape, T_WC, make_collider(mat));
+      b.AddStatic(shape, T_WC, make_collider(mat), chunk_of[oi]);
       continue;
     }
     if (object.collision == CollisionShape::kBox) {
@@ -469,10 +480,12 @@ void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q
   contacts.clear();
   const auto index = static_cast<std::size_t>(body_index);
   const double radius_m = b.body_radius_m[index];
-  // Open air (the common case: flying above the ground and every roof): the body's bounding sphere
-  // is above every collider's bounds, so nothing is near; no rotation, bounds or grid needed.
-  // (It keeps its algorithms, a handful at most, until its next query near colliders.)
-  if (p_W.z() + radius_m + margin_m < b.grid.top_z()) return;
+  // Open air (the common case: flying above the ground, every roof and the hills): the body's
+  // bounding sphere is above every collider's bounds, so nothing is near; no rotation, bounds or
+  // grid needed. (It keeps its algorithms, a handful at most, until its next query near
+  // colliders.)
+  const Vec3 sphere_reach = Vec3::Constant(radius_m + margin_m);
+  if (b.InOpenAir(p_W - sphere_reach, p_W + sphere_reach)) return;
   Bullet::Body& body = b.bodies[index];
   // Broadphase: the body's world AABB (|R| half-extents) in the grid, then the exact
   // bounding-sphere test against each collider's oriented bounds.
@@ -490,8 +503,13 @@ void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q
   const btCollisionObjectWrapper body_wrap(nullptr, body_object.getCollisionShape(), &body_object,
                                            T_WB, -1, -1);
   body.algorithms_next.clear();
+  bool terrain_near = false;
   for (const std::uint32_t collider : body.near) {
     const btCollisionObject* other = b.statics[collider].get();
+    if (other->getUserIndex2() >= 0) {
+      terrain_near = true;  // the terrain's contacts come below, once for all its chunks
+      continue;
+    }
     const btCollisionObjectWrapper other_wrap(nullptr, other->getCollisionShape(), other,
                                               other->getWorldTransform(), -1, -1);
     btCollisionAlgorithm* algorithm = nullptr;
@@ -503,21 +521,19 @@ void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q
       }
     }
     if (algorithm == nullptr) {
-      HeapDispatcher& dispatcher =
-          other->getCollisionShape()->getShapeType() == TERRAIN_SHAPE_PROXYTYPE
-              ? b.terrain_dispatcher
-              : b.dispatcher;
       algorithm =
-          dispatcher.findAlgorithm(&body_wrap, &other_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+          b.dispatcher.findAlgorithm(&body_wrap, &other_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
       if (algorithm == nullptr) continue;
     }
     body.algorithms_next.push_back({collider, algorithm});
     ContactCollector collector(&body_wrap, &other_wrap, margin_m, collider, contacts);
-    const std::size_t first = contacts.size();
     algorithm->processCollision(&body_wrap, &other_wrap, b.dispatch_info, &collector);
-    if (b.terrain != nullptr &&
-        other->getCollisionShape()->getShapeType() == TERRAIN_SHAPE_PROXYTYPE) {
-      ToTerrainSurface(*b.terrain, margin_m, first, contacts);
+  }
+  if (terrain_near) {
+    const std::size_t first = contacts.size();
+    FindTerrainContacts(*b.terrain, PlacedBox{p_W, R_WB, body.half_m}, margin_m, contacts);
+    for (std::size_t i = first; i < contacts.size(); ++i) {
+      contacts[i].collider = b.TerrainColliderAt(contacts[i].point_W, body.near);
     }
   }
   // Colliders no longer near give their algorithms back.
@@ -551,7 +567,10 @@ double CollisionWorld::Sweep(int body_index, const Quat& q_WB, const Vec3& from_
   const auto index = static_cast<std::size_t>(body_index);
   const double radius_m = b.body_radius_m[index];
   // Open air along the whole path (see FindContacts).
-  if (std::max(from_W.z(), to_W.z()) + radius_m < b.grid.top_z()) return 1.0;
+  if (b.InOpenAir(from_W.cwiseMin(to_W) - Vec3::Constant(radius_m),
+                  from_W.cwiseMax(to_W) + Vec3::Constant(radius_m))) {
+    return 1.0;
+  }
   Bullet::Body& body = b.bodies[index];
   const Mat3 R = q_WB.toRotationMatrix();
   // The colliders near the swept segment (a superset of those the box can touch on its way: the
@@ -569,9 +588,13 @@ double CollisionWorld::Sweep(int body_index, const Quat& q_WB, const Vec3& from_
   // objects its broadphase finds, with its default of no allowed penetration), keeping the closest
   // hit.
   SweepCallback callback(from.getOrigin(), to.getOrigin());
+  // The terrain under the swept box, when the box stays above its highest sample there: not hit.
+  const bool above_terrain = b.terrain != nullptr && -hi.z() > b.terrain->CalcHighestSampleUnder_m(
+                                                                   lo.head<2>(), hi.head<2>());
   for (const std::uint32_t collider : body.near) {
     if (callback.m_closestHitFraction == btScalar(0)) break;
     btCollisionObject* other = b.statics[collider].get();
+    if (above_terrain && other->getUserIndex2() >= 0) continue;
     btCollisionWorld::objectQuerySingle(shape, from, to, other, other->getCollisionShape(),
                                         other->getWorldTransform(), callback, btScalar(0));
   }

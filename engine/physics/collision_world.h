@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/core/frames.h"
+#include "engine/physics/contact.h"
 #include "engine/scene/static_scene.h"
 
 namespace airis::engine {
@@ -20,16 +21,6 @@ struct Collider {
   std::uint32_t instance_id = kNoInstance;
   double restitution = 0.3;  ///< of the part's material (or the object's override)
   double friction = 0.6;
-};
-
-/// A contact point between a moving body and a static collider.
-struct Contact {
-  Vec3 point_W = Vec3::Zero();    ///< on the collider's surface, world NED (m)
-  Vec3 normal_W = Vec3::UnitZ();  ///< unit, from the collider toward the body
-  double depth_m = 0.0;           ///< penetration depth (m), > 0 when overlapping
-  /// Index into CollisionWorld::colliders() (the other body's handle for
-  /// CollisionWorld::FindBodyContacts).
-  std::uint32_t collider = 0;
 };
 
 /// The collision world: Bullet's shapes and contact algorithms (Bullet's broadphase and dynamics
@@ -49,9 +40,11 @@ struct Contact {
 /// thick slab under its surface (on its local +z side, i.e. below it in NED) so nothing passes
 /// through it; other meshes become a convex hull or a BVH triangle mesh as CollisionShape says
 /// (kAuto: hull up to 128 triangles); kBox is the object's oriented bounding box; kNone objects are
-/// skipped. Terrain chunks (StaticScene::terrain) collide as Bullet's heightfield over their
-/// samples (each one collider, with the material of its model's first part); each chunk is a
-/// collider of the grid with its own bounds, so a body above the local terrain finds nothing near.
+/// skipped. Terrain chunks (StaticScene::terrain) are colliders of the grid with their own bounds
+/// and the material of their model's first part; a body's contacts with the terrain come from
+/// FindTerrainContacts on the scene's heightfield (one pass for all the chunks near it, each point
+/// named by the chunk under it), its sweeps from Bullet's heightfield over each chunk's samples. A
+/// body above every other collider and above the terrain's samples under it is in open air.
 /// Bullet computes in single precision: contact points are good to ~1e-4 m at 1 km from the origin.
 class CollisionWorld {
  public:

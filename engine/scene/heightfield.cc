@@ -68,6 +68,22 @@ double Heightfield::CalcHeight_m(double north_m, double east_m) const {
   return h11 + (1.0 - u) * (h01 - h11) + (1.0 - v) * (h10 - h11);
 }
 
+double Heightfield::CalcHighestSampleUnder_m(const Eigen::Vector2d& lo_ne_m,
+                                             const Eigen::Vector2d& hi_ne_m) const {
+  const Eigen::Vector2d lo = (lo_ne_m - origin_ne_m_) / spacing_m_;
+  const Eigen::Vector2d hi = (hi_ne_m - origin_ne_m_) / spacing_m_;
+  auto index = [](double x, int count) {
+    return static_cast<int>(std::clamp(x, 0.0, count - 1.0));
+  };
+  const int r0 = index(std::floor(lo.x()), rows_), r1 = index(std::ceil(hi.x()), rows_);
+  const int c0 = index(std::floor(lo.y()), cols_), c1 = index(std::ceil(hi.y()), cols_);
+  double highest = height_m(r0, c0);
+  for (int r = r0; r <= r1; ++r) {
+    for (int c = c0; c <= c1; ++c) highest = std::max(highest, height_m(r, c));
+  }
+  return highest;
+}
+
 Heightfield::SegmentClearance Heightfield::CalcLowestClearance(const Vec3& a_W,
                                                                const Vec3& b_W) const {
   return CalcClearanceRange(a_W, b_W).lowest;
@@ -85,20 +101,7 @@ Heightfield::ClearanceRange Heightfield::CalcClearanceRange(const Vec3& a_W,
     if (clearance > range.highest.clearance_m) range.highest = {p, clearance};
   };
   consider(1.0);
-  // Grid coordinates (x along north, y along east, in samples) at the ends. The crossings of
-  // x = k, y = k and x + y = k (the diagonals) for whole k within the grid's range.
-  const double x0 = (a_W.x() - origin_ne_m_.x()) / spacing_m_;
-  const double y0 = (a_W.y() - origin_ne_m_.y()) / spacing_m_;
-  const double dx = d.x() / spacing_m_, dy = d.y() / spacing_m_;
-  auto crossings = [&](double start, double delta, double max_k) {
-    if (delta == 0.0) return;
-    const double lo = std::max(0.0, std::ceil(std::min(start, start + delta)));
-    const double hi = std::min(max_k, std::floor(std::max(start, start + delta)));
-    for (double k = lo; k <= hi; k += 1.0) consider(std::clamp((k - start) / delta, 0.0, 1.0));
-  };
-  crossings(x0, dx, rows_ - 1.0);
-  crossings(y0, dy, cols_ - 1.0);
-  crossings(x0 + y0, dx + dy, rows_ + cols_ - 2.0);
+  VisitCrossings(a_W, b_W, consider);
   return range;
 }
 

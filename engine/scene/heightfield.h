@@ -1,6 +1,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "engine/core/frames.h"
@@ -43,6 +45,11 @@ class Heightfield {
   /// Height of the surface at (north, east) (m, up); a point off the grid takes the height of the
   /// nearest point of its edge.
   double CalcHeight_m(double north_m, double east_m) const;
+  /// The highest sample of the cells under the ground-plan rectangle from `lo_ne_m` to `hi_ne_m`
+  /// (north, east; off the grid, of the edge cells that extend there): no point of the surface
+  /// over the rectangle is higher (m, up).
+  double CalcHighestSampleUnder_m(const Eigen::Vector2d& lo_ne_m,
+                                  const Eigen::Vector2d& hi_ne_m) const;
   /// Unit normal of the surface's triangle under (north, east), world NED, pointing up (z < 0);
   /// off the grid as CalcHeight_m.
   Vec3 CalcNormal_W(double north_m, double east_m) const;
@@ -64,11 +71,32 @@ class Heightfield {
     SegmentClearance lowest, highest;
   };
   ClearanceRange CalcClearanceRange(const Vec3& a_W, const Vec3& b_W) const;
+  /// Calls `visit(t)` for each crossing of the segment from `a_W` to `b_W` (the point
+  /// a_W + t (b_W - a_W), 0 <= t <= 1) with the grid's lines and the cells' diagonals: where the
+  /// surface under a straight segment may bend. Lines by family (north, east, diagonal), each
+  /// family in order along the segment; a crossing at a grid corner is visited once per family.
+  template <class Visit>
+  void VisitCrossings(const Vec3& a_W, const Vec3& b_W, Visit&& visit) const {
+    const double x0 = (a_W.x() - origin_ne_m_.x()) / spacing_m_;
+    const double y0 = (a_W.y() - origin_ne_m_.y()) / spacing_m_;
+    const double dx = (b_W.x() - a_W.x()) / spacing_m_, dy = (b_W.y() - a_W.y()) / spacing_m_;
+    VisitLineCrossings(x0, dx, rows_ - 1.0, visit);
+    VisitLineCrossings(y0, dy, cols_ - 1.0, visit);
+    VisitLineCrossings(x0 + y0, dx + dy, rows_ + cols_ - 2.0, visit);
+  }
   /// Smooth normal at sample (r, c) for shading: the central difference of its neighbours (one
   /// sided at the edges), world NED, pointing up.
   Vec3 CalcSampleNormal_W(int r, int c) const;
 
  private:
+  // The crossings of start + t delta (0 <= t <= 1) with the whole numbers 0..max_k.
+  template <class Visit>
+  static void VisitLineCrossings(double start, double delta, double max_k, Visit& visit) {
+    if (delta == 0.0) return;
+    const double lo = std::max(0.0, std::ceil(std::min(start, start + delta)));
+    const double hi = std::min(max_k, std::floor(std::max(start, start + delta)));
+    for (double k = lo; k <= hi; k += 1.0) visit(std::clamp((k - start) / delta, 0.0, 1.0));
+  }
   // The cell under (north, east) and the position in it (u north, v east, each in [0, 1]).
   void Locate(double north_m, double east_m, int* r, int* c, double* u, double* v) const;
 

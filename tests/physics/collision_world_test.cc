@@ -307,17 +307,24 @@ TEST(CollisionWorldTest, TerrainCollidesOnTheHeightfieldsOwnTriangles) {
   EXPECT_EQ(world.colliders().size(), scene->terrain.chunks.size());
   const int body = world.AddBody(Vec3::Constant(0.004));
   std::vector<Contact> contacts;
-  // THEN a 4 mm box sunk 1 mm into the surface at 0.8 m touches the terrain (Bullet's heightfield
-  // cuts its cells as Heightfield does)
+  // THEN a 4 mm box sunk 1 mm into the surface at 0.8 m touches the terrain's triangle of that cut
+  // (rising 1 m per metre north and east), not the other cut's (falling to the north)
+  const Vec3 triangle_normal_W = Vec3(-1.0, -1.0, -1.0).normalized();
   world.FindContacts(body, Vec3(n, e, -0.8 - 0.002 + 0.001), Quat::Identity(), 0.0, contacts);
   ASSERT_FALSE(contacts.empty());
   for (const Contact& c : contacts) {
     EXPECT_EQ(world.colliders()[c.collider].class_id, airis::testing::kTerrainClass);
-    EXPECT_LT(c.normal_W.z(), 0.0);  // from the terrain up toward the body
+    EXPECT_LT((c.normal_W - triangle_normal_W).norm(), 1e-9);
+    EXPECT_LE(c.depth_m, 0.005);
   }
-  // and at 0.2 m, where the other cut's surface would be, it is inside the hill, touching nothing.
+  // and at 0.2 m, where the other cut's surface would be, it is 0.6 m inside the hill (the ground
+  // is solid under the surface): its bottom corners at 0.199 m, the surface over them 0.8 m
+  // +- 4 mm, each contact's depth the distance to the triangle's plane.
   world.FindContacts(body, Vec3(n, e, -0.2 - 0.002 + 0.001), Quat::Identity(), 0.0, contacts);
-  EXPECT_TRUE(contacts.empty());
+  ASSERT_FALSE(contacts.empty());
+  double deepest_m = 0.0;
+  for (const Contact& c : contacts) deepest_m = std::max(deepest_m, c.depth_m / -c.normal_W.z());
+  EXPECT_NEAR(deepest_m, 0.601 + 0.004, 1e-9);
 }
 
 }  // namespace
