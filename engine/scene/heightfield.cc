@@ -72,11 +72,18 @@ double Heightfield::CalcHighestSampleUnder_m(const Eigen::Vector2d& lo_ne_m,
                                              const Eigen::Vector2d& hi_ne_m) const {
   const Eigen::Vector2d lo = (lo_ne_m - origin_ne_m_) / spacing_m_;
   const Eigen::Vector2d hi = (hi_ne_m - origin_ne_m_) / spacing_m_;
-  auto index = [](double x, int count) {
+  // Clamped to the grid first, so that truncation is floor (no libm call: this runs every tick of
+  // a vehicle near terrain).
+  auto below = [](double x, int count) {
     return static_cast<int>(std::clamp(x, 0.0, count - 1.0));
   };
-  const int r0 = index(std::floor(lo.x()), rows_), r1 = index(std::ceil(hi.x()), rows_);
-  const int c0 = index(std::floor(lo.y()), cols_), c1 = index(std::ceil(hi.y()), cols_);
+  auto above = [](double x, int count) {
+    const double clamped = std::clamp(x, 0.0, count - 1.0);
+    const int i = static_cast<int>(clamped);
+    return i < clamped ? i + 1 : i;
+  };
+  const int r0 = below(lo.x(), rows_), r1 = above(hi.x(), rows_);
+  const int c0 = below(lo.y(), cols_), c1 = above(hi.y(), cols_);
   double highest = height_m(r0, c0);
   for (int r = r0; r <= r1; ++r) {
     for (int c = c0; c <= c1; ++c) highest = std::max(highest, height_m(r, c));

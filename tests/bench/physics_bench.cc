@@ -44,15 +44,21 @@ BENCHMARK(BM_PhysicsTickBoxes10k)->Arg(10000);
 
 // Over terrain (the hills of MakeHillsScene): flying the route's legs 30 m above the ground below
 // each leg's start, against the empty world's flight above the plane; parked (rotors off) at the
-// route's points just above the hills, against parked on the ground plane.
+// route's points, lying on the hills (tilted with the surface under it), against parked on the
+// ground plane.
 std::vector<engine::RigidBodyState> RouteAbove(const engine::StaticScene* hills, double height_m) {
   std::vector<engine::RigidBodyState> route = MakeRoute(64, 0.9 * kExtent_m, kSeed);
   for (auto& leg : route) {
     const double ground_m =
         hills != nullptr ? HillsHeight_m(*hills, leg.p_W.x(), leg.p_W.y()) : 0.0;
     leg.p_W.z() = -(ground_m + height_m);
-    if (height_m < 1.0) leg.v_W.setZero();  // parked
   }
+  return route;
+}
+
+std::vector<engine::RigidBodyState> Parked(const engine::StaticScene* hills) {
+  std::vector<engine::RigidBodyState> route = RouteAbove(hills, 0.0);
+  for (auto& leg : route) ParkOnSurface(hills, leg);
   return route;
 }
 
@@ -71,14 +77,14 @@ BENCHMARK(BM_PhysicsTickOverTerrain);
 
 void BM_PhysicsTickParkedOnTerrain(benchmark::State& state) {
   auto hills = std::make_shared<const engine::StaticScene>(MakeHillsScene(kExtent_m));
-  PhysicsTickScenario scenario(hills, RouteAbove(hills.get(), 0.2), false);
+  PhysicsTickScenario scenario(hills, Parked(hills.get()), false);
   RunParked(state, scenario);
 }
 BENCHMARK(BM_PhysicsTickParkedOnTerrain);
 
 void BM_PhysicsTickParkedOnGround(benchmark::State& state) {
   auto ground = std::make_shared<const engine::StaticScene>(MakeBoxFieldScene(0, kExtent_m, kSeed));
-  PhysicsTickScenario scenario(ground, RouteAbove(nullptr, 0.2), false);
+  PhysicsTickScenario scenario(ground, Parked(nullptr), false);
   RunParked(state, scenario);
 }
 BENCHMARK(BM_PhysicsTickParkedOnGround);

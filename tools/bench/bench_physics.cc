@@ -133,6 +133,23 @@ double HillsHeight_m(const engine::StaticScene& hills, double north_m, double ea
   return hills.terrain.heightfield->CalcHeight_m(north_m, east_m);
 }
 
+void ParkOnSurface(const engine::StaticScene* hills, engine::RigidBodyState& state) {
+  const double half_height_m = 0.5 * scenes::LoadMultirotorPreset("quad_x").box_size_m.z();
+  const double north = state.p_W.x(), east = state.p_W.y();
+  const double yaw = engine::EulerFromQuat(state.q_WB).yaw_rad;
+  Vec3 up_W(0.0, 0.0, -1.0);
+  double ground_m = 0.0;
+  if (hills != nullptr) {
+    up_W = hills->terrain.heightfield->CalcNormal_W(north, east);
+    ground_m = HillsHeight_m(*hills, north, east);
+  }
+  state.q_WB =
+      Quat::FromTwoVectors(Vec3(0.0, 0.0, -1.0), up_W) * engine::QuatFromEuler({0.0, 0.0, yaw});
+  state.p_W = Vec3(north, east, -ground_m) + half_height_m * up_W;
+  state.v_W.setZero();
+  state.w_B.setZero();
+}
+
 std::vector<engine::RigidBodyState> MakeRoute(int legs, double extent_m, std::uint64_t seed) {
   engine::RandomStream random(seed + 1000);
   std::vector<engine::RigidBodyState> route(static_cast<std::size_t>(legs));

@@ -34,6 +34,11 @@ engine::StaticScene MakeHillsScene(double extent_m);
 /// Height of MakeHillsScene's surface at (north, east) (m, up).
 double HillsHeight_m(const engine::StaticScene& hills, double north_m, double east_m);
 
+/// Puts the reference quad-x at rest on the ground under `state`'s position, keeping its heading:
+/// lying on MakeHillsScene's surface `hills` (tilted with the triangle under it), or on the ground
+/// plane where `hills` is null.
+void ParkOnSurface(const engine::StaticScene* hills, engine::RigidBodyState& state);
+
 /// Ticks the reference quad-x in our World (rotors with lag at hover, drag, gravity and atmosphere
 /// at its altitude, RK4, collision query and contact response) through a box field. Every
 /// kTicksPerLeg ticks it restarts from the next leg of the route.
@@ -43,7 +48,7 @@ class PhysicsTickScenario {
   /// `box_count` = 0: the empty world (ground plane only).
   PhysicsTickScenario(int box_count, double extent_m, std::uint64_t seed);
   /// The quad in `scene`, restarted every kTicksPerLeg ticks from the next state of `route`, its
-  /// rotors at hover (`rotors_on`) or stopped (a parked quad: start it just above the surface).
+  /// rotors at hover (`rotors_on`) or stopped (a parked quad: see ParkOnSurface).
   PhysicsTickScenario(std::shared_ptr<const engine::StaticScene> scene,
                       std::vector<engine::RigidBodyState> route, bool rotors_on);
   ~PhysicsTickScenario();
