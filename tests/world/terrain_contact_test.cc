@@ -1,7 +1,7 @@
-// Contact with terrain (a heightfield collided through Bullet's btHeightfieldTerrainShape): a body
-// rests on a slope that friction can hold without creeping, slides at the analytic acceleration
-// where it cannot, does not pass through at 40 m/s, and on a plateau sees the air and gravity of
-// its true altitude.
+// Contact with terrain (contacts found on the heightfield by FindTerrainContacts, sweeps through
+// Bullet's heightfield): a body rests on a slope that friction can hold without creeping, slides at
+// the analytic acceleration where it cannot, does not pass through at 40 m/s, and on a plateau sees
+// the air and gravity of its true altitude.
 
 #include <gtest/gtest.h>
 
