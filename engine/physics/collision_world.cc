@@ -112,9 +112,12 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
     // The normal points from the collider toward the swept body; a hit counts when the motion goes
     // into it.
     if (n.dot(direction) > btScalar(-0.05)) return m_closestHitFraction;
+    // The hit object is a stand-in, set to another collider for the next test: its index now.
+    hit_collider = r.m_hitCollisionObject->getUserIndex();
     return ClosestConvexResultCallback::addSingleResult(r, normal_in_world);
   }
   btVector3 direction;
+  int hit_collider = -1;
 };
 
 // Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
@@ -175,11 +178,19 @@ struct CollisionWorld::Bullet {
   // that places the same mesh at the same scale: a city's cars and lamp posts are hundreds of
   // thousands of copies of a few hulls.
   std::map<std::tuple<std::uint32_t, double, double, double>, btCollisionShape*> hull_shapes;
-  std::vector<std::unique_ptr<btCollisionObject>> statics;
+  // A static collider as Bullet's algorithms see it. Not a btCollisionObject each (376 bytes and an
+  // allocation: 300 MB for a 10 km city's 800,000 colliders): a query hands each to Bullet through
+  // its body's stand-in object (Body::other), set to the collider's shape and place.
+  struct Static {
+    btTransform T_WC;
+    btCollisionShape* shape;  // owned by `shapes`
+    int terrain_chunk;        // index into terrain_chunks, -1 for other colliders
+  };
+  std::vector<Static> statics;
   std::vector<std::vector<float>> heightfield_data;  // per terrain chunk, Bullet's layout
   std::shared_ptr<const Heightfield> terrain;        // the scene's, or null
-  // The terrain's chunks, indexed by their colliders' user index 2 (-1 on other colliders). Their
-  // Bullet heightfields serve sweeps; contacts come from FindTerrainContacts.
+  // The terrain's chunks, indexed by Static::terrain_chunk. Their Bullet heightfields serve
+  // sweeps; contacts come from FindTerrainContacts.
   std::vector<TerrainChunk> terrain_chunks;
   // The highest point (least z) of the colliders other than the terrain's; +infinity without any.
   double top_z_without_terrain = std::numeric_limits<double>::infinity();
@@ -201,6 +212,9 @@ struct CollisionWorld::Bullet {
   // nothing shared, so bodies may be queried on different threads at once.
   struct Body {
     std::unique_ptr<btCollisionObject> object;
+    // Stands for the static collider the body is being tested against (its shape, place and index
+    // set before each test); the body's own, so bodies on different threads share nothing.
+    std::unique_ptr<btCollisionObject> other;
     Vec3 half_m = Vec3::Zero();
     std::vector<std::uint32_t> near;  // colliders of the current query
     struct Algorithm {
@@ -282,7 +296,7 @@ struct CollisionWorld::Bullet {
     const double y = (p_W.y() - terrain->origin_ne_m().y()) / s;
     std::uint32_t found = std::numeric_limits<std::uint32_t>::max();
     for (const std::uint32_t collider : near) {
-      const int k = statics[collider]->getUserIndex2();
+      const int k = statics[collider].terrain_chunk;
       if (k < 0) continue;
       const TerrainChunk& chunk = terrain_chunks[static_cast<std::size_t>(k)];
       if (found == std::numeric_limits<std::uint32_t>::max()) found = collider;
@@ -296,12 +310,8 @@ struct CollisionWorld::Bullet {
 
   void AddStatic(btCollisionShape* shape, const btTransform& T_WC, int collider_index,
                  const TerrainChunk* chunk = nullptr) {
-    auto object = std::make_unique<btCollisionObject>();
-    object->setCollisionShape(shape);
-    object->setWorldTransform(T_WC);
-    object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
-    object->setUserIndex(collider_index);
-    object->setUserIndex2(chunk != nullptr ? static_cast<int>(terrain_chunks.size()) : -1);
+    statics.push_back(
+        Static{T_WC, shape, chunk != nullptr ? static_cast<int>(terrain_chunks.size()) : -1});
     if (chunk != nullptr) terrain_chunks.push_back(*chunk);
     btVector3 lo, hi;
     shape->getAabb(btTransform::getIdentity(), lo, hi);
@@ -319,7 +329,16 @@ struct CollisionWorld::Bullet {
       top_z_without_terrain =
           std::min(top_z_without_terrain, placed.centre_W.z() - (R.cwiseAbs() * placed.half_m).z());
     }
-    statics.push_back(std::move(object));
+  }
+
+  // The body's stand-in for static collider `collider`.
+  btCollisionObject& StandIn(Body& body, std::uint32_t collider) const {
+    const Static& s = statics[collider];
+    btCollisionObject& other = *body.other;
+    other.setCollisionShape(s.shape);
+    other.setWorldTransform(s.T_WC);
+    other.setUserIndex(static_cast<int>(collider));
+    return other;
   }
 };
 
@@ -469,6 +488,8 @@ int CollisionWorld::AddBody(const Vec3& box_size_m) {
   body.object = std::make_unique<btCollisionObject>();
   body.object->setCollisionShape(shape);
   body.object->setUserIndex(-1);
+  body.other = std::make_unique<btCollisionObject>();
+  body.other->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
   body.half_m = 0.5 * box_size_m;
   b.body_radius_m.push_back(0.5 * box_size_m.norm());
   return static_cast<int>(b.bodies.size() - 1);
@@ -505,13 +526,13 @@ void CollisionWorld::FindContacts(int body_index, const Vec3& p_W, const Quat& q
   body.algorithms_next.clear();
   bool terrain_near = false;
   for (const std::uint32_t collider : body.near) {
-    const btCollisionObject* other = b.statics[collider].get();
-    if (other->getUserIndex2() >= 0) {
+    if (b.statics[collider].terrain_chunk >= 0) {
       terrain_near = true;  // the terrain's contacts come below, once for all its chunks
       continue;
     }
-    const btCollisionObjectWrapper other_wrap(nullptr, other->getCollisionShape(), other,
-                                              other->getWorldTransform(), -1, -1);
+    const btCollisionObject& other = b.StandIn(body, collider);
+    const btCollisionObjectWrapper other_wrap(nullptr, other.getCollisionShape(), &other,
+                                              other.getWorldTransform(), -1, -1);
     btCollisionAlgorithm* algorithm = nullptr;
     for (Bullet::Body::Algorithm& kept : body.algorithms) {
       if (kept.collider == collider) {
@@ -593,8 +614,8 @@ double CollisionWorld::Sweep(int body_index, const Quat& q_WB, const Vec3& from_
                                                                    lo.head<2>(), hi.head<2>());
   for (const std::uint32_t collider : body.near) {
     if (callback.m_closestHitFraction == btScalar(0)) break;
-    btCollisionObject* other = b.statics[collider].get();
-    if (above_terrain && other->getUserIndex2() >= 0) continue;
+    if (above_terrain && b.statics[collider].terrain_chunk >= 0) continue;
+    btCollisionObject* other = &b.StandIn(body, collider);
     btCollisionWorld::objectQuerySingle(shape, from, to, other, other->getCollisionShape(),
                                         other->getWorldTransform(), callback, btScalar(0));
   }
@@ -603,7 +624,7 @@ double CollisionWorld::Sweep(int body_index, const Quat& q_WB, const Vec3& from_
     hit->point_W = FromBt(callback.m_hitPointWorld);
     hit->normal_W = FromBt(callback.m_hitNormalWorld).normalized();
     hit->depth_m = 0.0;
-    hit->collider = static_cast<std::uint32_t>(callback.m_hitCollisionObject->getUserIndex());
+    hit->collider = static_cast<std::uint32_t>(callback.hit_collider);
   }
   return callback.m_closestHitFraction;
 }
