@@ -120,9 +120,10 @@ std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, 
   std::vector<Vector2d> points;
   points.reserve(static_cast<std::size_t>(size.x() * size.y() / (radius_m * radius_m)));
   std::vector<std::int32_t> active;
+  const double per_cell = 1.0 / cell;
   auto cell_of = [&](const Vector2d& p, int* cx, int* cy) {
-    *cx = std::min(gx - 1, static_cast<int>((p.x() - lo.x()) / cell));
-    *cy = std::min(gy - 1, static_cast<int>((p.y() - lo.y()) / cell));
+    *cx = std::min(gx - 1, static_cast<int>((p.x() - lo.x()) * per_cell));
+    *cy = std::min(gy - 1, static_cast<int>((p.y() - lo.y()) * per_cell));
   };
   auto add = [&](const Vector2d& p) {
     int cx, cy;
