@@ -2,6 +2,7 @@
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+#include <BulletCollision/CollisionShapes/btConvexPointCloudShape.h>
 #include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
 #include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
 #include <btBulletCollisionCommon.h>
@@ -9,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <tuple>
 
 #include "engine/core/error.h"
@@ -120,6 +120,26 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
   int hit_collider = -1;
 };
 
+// The convex hull of `points` (a mesh's vertices, kept by the caller) scaled by `scaling`, with
+// margin `margin`: Bullet's point cloud, its bounds set from the points' (Bullet would find them
+// through six support queries over every point).
+class ScaledPointCloud final : public btConvexPointCloudShape {
+ public:
+  ScaledPointCloud(std::vector<btVector3>& points, const btVector3& scaling, btScalar margin)
+      : btConvexPointCloudShape(points.data(), static_cast<int>(points.size()), scaling, false) {
+    setMargin(margin);
+    btVector3 lo = points.front(), hi = points.front();
+    for (const btVector3& p : points) {
+      lo.setMin(p);
+      hi.setMax(p);
+    }
+    // As btPolyhedralConvexAabbCachingShape::recalcLocalAabb: the scaled points' bounds and the
+    // margin (scales are positive: rotation and scale are separated before).
+    const btVector3 m(margin, margin, margin);
+    setCachedLocalAabb(lo * scaling - m, hi * scaling + m);
+  }
+};
+
 // Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
 // per world). Our dispatcher (below) never draws from them, so they are made as small as Bullet
 // allows: a process can hold thousands of worlds (the Python module's vectorized environments).
@@ -174,10 +194,22 @@ struct CollisionWorld::Bullet {
   std::vector<std::vector<btScalar>> mesh_vertices;
   std::vector<btBvhTriangleMeshShape*>
       mesh_shapes;  // per scene mesh, built on first use (owned above)
-  // Convex hulls by (mesh, scale), built on first use (owned above) and shared by every object
-  // that places the same mesh at the same scale: a city's cars and lamp posts are hundreds of
-  // thousands of copies of a few hulls.
-  std::map<std::tuple<std::uint32_t, double, double, double>, btCollisionShape*> hull_shapes;
+  // Convex hulls: each mesh's vertices once (unscaled, built on first use), and per placed part a
+  // shape over them that scales them as it goes (Bullet's point cloud, 136 bytes: a hull of its own
+  // copied every vertex, 9 GB for a million trees whose crowns are each scaled their own way).
+  // Sharing shapes between parts of equal scale (a city's cars) saved 12 MB on a 10 km city and
+  // cost a second in a 10 km forest's hash lookups: not done.
+  std::vector<std::vector<btVector3>> hull_points;
+
+  btCollisionShape* HullShape(const StaticScene& scene, std::uint32_t mesh_index,
+                              const Vec3& scale) {
+    std::vector<btVector3>& points = hull_points[mesh_index];
+    if (points.empty()) {
+      for (const auto& p : scene.meshes[mesh_index].positions)
+        points.push_back(ToBt(p.cast<double>()));
+    }
+    return Own(new ScaledPointCloud(points, ToBt(scale), btScalar(kHullMargin_m)));
+  }
   // A static collider as Bullet's algorithms see it. Not a btCollisionObject each (376 bytes and an
   // allocation: 300 MB for a 10 km city's 800,000 colliders): a query hands each to Bullet through
   // its body's stand-in object (Body::other), set to the collider's shape and place.
@@ -346,6 +378,7 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
   Bullet& b = *bullet_;
   b.terrain = scene.terrain.heightfield;
   b.mesh_shapes.assign(scene.meshes.size(), nullptr);
+  b.hull_points.assign(scene.meshes.size(), {});
   std::vector<const TerrainChunk*> chunk_of(scene.objects.size(), nullptr);
   for (const TerrainChunk& chunk : scene.terrain.chunks) {
     Require(chunk.object < scene.objects.size() && scene.terrain.heightfield != nullptr,
@@ -453,17 +486,8 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
         }
       }
       if (shape == nullptr && kind == CollisionShape::kConvexHull) {
-        btCollisionShape*& hull_shape = b.hull_shapes[{part.mesh, scale.x(), scale.y(), scale.z()}];
-        if (hull_shape == nullptr) {
-          auto* hull = new btConvexHullShape();
-          for (const auto& p : mesh.positions) {
-            hull->addPoint(ToBt(scale.cwiseProduct(p.cast<double>())), false);
-          }
-          hull->setMargin(btScalar(kHullMargin_m));
-          hull->recalcLocalAabb();
-          hull_shape = b.Own(hull);
-        }
-        b.AddStatic(hull_shape, ToBt(R, centre), make_collider(part.material));
+        b.AddStatic(b.HullShape(scene, part.mesh, scale), ToBt(R, centre),
+                    make_collider(part.material));
         continue;
       } else if (shape == nullptr) {
         btBvhTriangleMeshShape* unscaled = b.MeshShape(scene, part.mesh);
