@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 
 #include "engine/core/error.h"
 #include "engine/physics/static_collider_grid.h"
@@ -128,7 +127,8 @@ class ScaledPointCloud final : public btConvexPointCloudShape {
   ScaledPointCloud(std::vector<btVector3>& points, const btVector3& scaling, btScalar margin)
       : btConvexPointCloudShape(points.data(), static_cast<int>(points.size()), scaling, false) {
     setMargin(margin);
-    btVector3 lo = points.front(), hi = points.front();
+    btVector3 lo(0, 0, 0), hi(0, 0, 0);  // an empty mesh: a point with the margin
+    if (!points.empty()) lo = hi = points.front();
     for (const btVector3& p : points) {
       lo.setMin(p);
       hi.setMax(p);

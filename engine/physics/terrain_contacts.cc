@@ -1,7 +1,9 @@
 #include "engine/physics/terrain_contacts.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace airis::engine {
 namespace {
