@@ -12,18 +12,12 @@
 #include <random>
 #include <vector>
 
+#include "tests/fixtures/terrain_scenes.h"
+
 namespace airis::engine {
 namespace {
 
-template <class F>
-Heightfield Sampled(const Eigen::Vector2d& origin, double spacing, int rows, int cols, F h) {
-  std::vector<double> heights;
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c)
-      heights.push_back(h(origin.x() + r * spacing, origin.y() + c * spacing));
-  }
-  return Heightfield(origin, spacing, rows, cols, std::move(heights));
-}
+using airis::testing::SampleHeightfield;
 
 // How far below the surface the box's point of contact `c` is, measured vertically (m).
 double VerticalDepth(const Contact& c) { return c.depth_m / -c.normal_W.z(); }
@@ -33,7 +27,7 @@ TEST(TerrainContactsTest, ABoxLyingOnATiltedPlaneTouchesItAtItsFourLowerCorners)
   // GIVEN a plane rising 0.3 per metre north and falling 0.2 per metre east, sampled every 0.7 m,
   // and a 0.9 x 0.5 x 0.2 m box yawed 30 degrees, tilted with the plane, sunk 2 mm into it
   const auto plane = [](double n, double e) { return 3.0 + 0.3 * n - 0.2 * e; };
-  const Heightfield field = Sampled(Eigen::Vector2d(-5.0, -5.0), 0.7, 16, 16, plane);
+  const Heightfield field = SampleHeightfield(Eigen::Vector2d(-5.0, -5.0), 0.7, 16, 16, plane);
   const Vec3 up_W = Vec3(-0.3, 0.2, -1.0).normalized();
   const Mat3 R = (Quat::FromTwoVectors(Vec3(0.0, 0.0, -1.0), up_W) *
                   Quat(Eigen::AngleAxisd(0.5236, Vec3::UnitZ())))
@@ -70,8 +64,9 @@ TEST(TerrainContactsTest, ARidgeUnderABoxTouchesItWhereTheBoxsEdgesCrossIt) {
   // level 1.6 x 1.2 x 0.4 m box centred over it with its lower face at 0.99 m: the ridge pokes 1 cm
   // into the face along north = 0, its corners (at north +-0.8, where the surface is 0.6 m) are in
   // the air
-  const Heightfield field = Sampled(Eigen::Vector2d(-4.0, -4.0), 1.0, 9, 9,
-                                    [](double n, double) { return 1.0 - 0.5 * std::abs(n); });
+  const Heightfield field =
+      SampleHeightfield(Eigen::Vector2d(-4.0, -4.0), 1.0, 9, 9,
+                        [](double n, double) { return 1.0 - 0.5 * std::abs(n); });
   const Vec3 half(0.8, 0.6, 0.2);
   const PlacedBox box{Vec3(0.0, 0.3, -0.99 - half.z()), Mat3::Identity(), half};
   std::vector<Contact> contacts;
@@ -95,9 +90,9 @@ TEST(TerrainContactsTest, ARidgeUnderABoxTouchesItWhereTheBoxsEdgesCrossIt) {
 TEST(TerrainContactsTest, APeakUnderABoxTouchesItsFace) {
   // GIVEN flat ground at 0 m with one sample raised to 0.5 m, and a level box whose lower face is
   // at 0.48 m right over it, its corners far above the flat ground
-  const Heightfield field = Sampled(Eigen::Vector2d(-3.0, -3.0), 1.0, 7, 7, [](double n, double e) {
-    return n == 0.0 && e == 0.0 ? 0.5 : 0.0;
-  });
+  const Heightfield field =
+      SampleHeightfield(Eigen::Vector2d(-3.0, -3.0), 1.0, 7, 7,
+                        [](double n, double e) { return n == 0.0 && e == 0.0 ? 0.5 : 0.0; });
   const Vec3 half(0.3, 0.4, 0.1);
   const PlacedBox box{Vec3(0.1, -0.15, -0.48 - half.z()), Mat3::Identity(), half};
   std::vector<Contact> contacts;

@@ -8,25 +8,17 @@
 #include <vector>
 
 #include "engine/scene/terrain_mesh.h"
+#include "tests/fixtures/terrain_scenes.h"
 
 namespace airis::engine {
 namespace {
 
-// Heights of h(n, e) at the samples of a rows x cols grid from `origin` with `spacing`.
-template <class F>
-Heightfield Sampled(const Eigen::Vector2d& origin, double spacing, int rows, int cols, F h) {
-  std::vector<double> heights;
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c)
-      heights.push_back(h(origin.x() + r * spacing, origin.y() + c * spacing));
-  }
-  return Heightfield(origin, spacing, rows, cols, std::move(heights));
-}
+using airis::testing::SampleHeightfield;
 
 TEST(HeightfieldTest, APlaneIsReproducedEverywhereWithItsNormal) {
   // GIVEN a plane rising 0.3 m per metre north and falling 0.1 m per metre east
   const auto plane = [](double n, double e) { return 5.0 + 0.3 * n - 0.1 * e; };
-  const Heightfield field = Sampled(Eigen::Vector2d(-40.0, 10.0), 2.5, 17, 9, plane);
+  const Heightfield field = SampleHeightfield(Eigen::Vector2d(-40.0, 10.0), 2.5, 17, 9, plane);
   EXPECT_DOUBLE_EQ(field.min_height_m(), plane(-40.0, 30.0));
   EXPECT_DOUBLE_EQ(field.max_height_m(), plane(0.0, 10.0));
   // THEN any point on the grid has the plane's height (linear within each triangle: exact up to
@@ -60,9 +52,9 @@ TEST(HeightfieldTest, CellsAreCutAlongTheDiagonalFromNorthWestToSouthEast) {
 TEST(HeightfieldTest, LowestClearanceOverARidgeIsAtItsCrest) {
   // GIVEN a ridge along east at north = 10 m, 20 m high, falling 2 m per metre on either side
   // (samples every 1 m: the crest is a grid line)
-  const Heightfield ridge = Sampled(Eigen::Vector2d::Zero(), 1.0, 21, 11, [](double n, double) {
-    return std::max(0.0, 20.0 - 2.0 * std::abs(n - 10.0));
-  });
+  const Heightfield ridge = SampleHeightfield(
+      Eigen::Vector2d::Zero(), 1.0, 21, 11,
+      [](double n, double) { return std::max(0.0, 20.0 - 2.0 * std::abs(n - 10.0)); });
   // WHEN a segment climbs from 5 m up at the south edge to 35 m up at the north edge
   const auto lowest = ridge.CalcLowestClearance(Vec3(0.0, 3.3, -5.0), Vec3(20.0, 7.1, -35.0));
   // THEN its lowest point against the surface is over the crest, 20 m up, where the segment is
@@ -114,9 +106,9 @@ TEST(HeightfieldTest, RefusesBadGrids) {
 
 TEST(TerrainMeshTest, ChunksCoverTheGridWithItsTrianglesFacingUp) {
   // GIVEN a 150 x 70 sample bumpy field cut into chunks, triangles split by slope into two parts
-  auto field = std::make_shared<const Heightfield>(
-      Sampled(Eigen::Vector2d(100.0, -50.0), 2.0, 150, 70,
-              [](double n, double e) { return 10.0 * std::sin(0.05 * n) * std::cos(0.07 * e); }));
+  auto field = std::make_shared<const Heightfield>(SampleHeightfield(
+      Eigen::Vector2d(100.0, -50.0), 2.0, 150, 70,
+      [](double n, double e) { return 10.0 * std::sin(0.05 * n) * std::cos(0.07 * e); }));
   StaticSceneBuilder builder;
   Material steep_material;
   steep_material.base_color_rgb = Eigen::Vector3f(0.5f, 0.4f, 0.3f);
