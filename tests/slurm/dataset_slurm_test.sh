@@ -84,13 +84,22 @@ shard_states() { status_json "$1" | json_get - '" ".join(s["state"] for s in j["
 # merge_state DIR: done, waiting, running, failed, ...
 merge_state() { status_json "$1" | json_get - 'j["merge"]["state"]'; }
 
-# wait_merge_ended DIR: until the merge is done or failed; prints it.
+# merged DIR: DIR's manifest says complete, which is what `airis dataset status` calls a merge done
+# (a merge in progress writes complete: false first and the final manifest last).
+merged() { grep -qs '"complete": true' "$1/manifest.json"; }
+
+# wait_merge_ended DIR: until the merge is done or failed; prints it. The manifest is looked at every
+# 0.05 s and Slurm's view (`airis dataset status`, which asks squeue) once a second: the wait is timed,
+# and a status poll costs about a tenth of a CPU-second, which on two cores is taken from the shards.
 wait_merge_ended() {
-  local n s
-  for ((n = 0; n < WAIT_S * 5; n++)); do
-    s="$(merge_state "$1")"
-    case "$s" in done | failed) echo "$s"; return 0 ;; esac
-    sleep 0.2
+  local n s=""
+  for ((n = 1; n <= WAIT_S * 20; n++)); do
+    if merged "$1"; then echo done; return 0; fi
+    if ((n % 20 == 0)); then
+      s="$(merge_state "$1")"
+      case "$s" in done | failed) echo "$s"; return 0 ;; esac
+    fi
+    sleep 0.05
   done
   echo "timed out after ${WAIT_S}s (merge: $s)"
   return 1
