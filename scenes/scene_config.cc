@@ -67,6 +67,11 @@ void OriginConfig::Validate() const {
   RequireInRange("altitude_m", altitude_m, -500.0, 100000.0);
 }
 
+void ShadowConfig::Validate() const {
+  RequireInRange("distance_m", distance_m, 1.0, 100000.0);
+  RequireInRange("map_size_px", map_size_px, 64, engine::kMaxImageSide_px);
+}
+
 void LightingConfig::Validate() const {
   if (time_of_day_h) {
     Require(*time_of_day_h >= 0.0 && *time_of_day_h < 24.0, "time_of_day_h",
@@ -86,6 +91,7 @@ void LightingConfig::Validate() const {
   RequireColor("sky_horizon_color", sky_horizon_color);
   RequireInRange("ambient", ambient, 0.0, 1.0);
   RequireNonNegative("fog_distance_m", fog_distance_m);
+  ValidateNested(shadows, "shadows");
 }
 
 void SceneSettingsConfig::Validate() const {

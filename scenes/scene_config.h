@@ -40,6 +40,26 @@ struct OriginConfig {
   void Validate() const;
 };
 
+/// The sun's shadows in RGB images (depth and labels never change with them).
+struct ShadowConfig {
+  bool enabled = false;
+  double distance_m = 200.0;  ///< shadows out to this distance from the camera (m)
+  int map_size_px = 2048;     ///< the shadow map's side (texels)
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("enabled", enabled,
+            "the sun casts shadows (RGB only; off by default: they cost about half of "
+            "llvmpipe's frame rate)");
+    v.Field("distance_m", distance_m,
+            "shadows are drawn out to this distance from the camera (m); farther surfaces are lit");
+    v.Field("map_size_px", map_size_px,
+            "side of the shadow map (texels, 64 to 8192): its texel is 2.4 x distance_m / "
+            "map_size_px wide for a 90 degree camera");
+  }
+  void Validate() const;
+};
+
 /// Sun and sky for rendering. The sun comes from `time_of_day_h` (local solar time, with the
 /// origin's latitude and the environment's date: SolarAngles) when given, else from azimuth and
 /// elevation; giving both ways is an error.
@@ -55,6 +75,7 @@ struct LightingConfig {
   Eigen::Vector3d sky_horizon_color = Eigen::Vector3d(0.75, 0.85, 0.95);
   double ambient = 0.35;        ///< sky light fraction [0, 1]
   double fog_distance_m = 0.0;  ///< distance at which fog reaches 63% (m), 0 = no fog
+  ShadowConfig shadows;
 
   template <class V>
   void Visit(V& v) {
@@ -71,6 +92,7 @@ struct LightingConfig {
     v.Field("sky_horizon_color", sky_horizon_color, "sky colour at the horizon, linear RGB 0..1");
     v.Field("ambient", ambient, "sky (ambient) light fraction, 0..1");
     v.Field("fog_distance_m", fog_distance_m, "distance at which fog reaches 63% (m); 0 = no fog");
+    v.Field("shadows", shadows, "the sun's shadows (docs/rendering.md, \"Shadows\")");
   }
   /// Throws InvalidField on a value out of range, or on time_of_day_h given with a sun angle (the
   /// message names both keys).

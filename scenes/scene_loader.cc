@@ -146,6 +146,9 @@ class SceneAssembler {
     out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
     out.ambient = static_cast<float>(c.ambient);
     out.fog_distance_m = static_cast<float>(c.fog_distance_m);
+    out.shadows.enabled = c.shadows.enabled;
+    out.shadows.distance_m = static_cast<float>(c.shadows.distance_m);
+    out.shadows.map_size_px = c.shadows.map_size_px;
     return out;
   }
 

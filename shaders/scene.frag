@@ -1,6 +1,6 @@
 // One geometry pass writing every requested output into its own render target (OUT_* defines select them).
-// RGB: Lambertian sun + hemispheric sky light with a cheap contact-darkening term, optional texture and
-// distance fog; written linear into an sRGB8 target, which encodes to sRGB.
+// RGB: Lambertian sun shaded by the sun's shadow map, hemispheric sky light with a cheap contact-darkening
+// term, optional texture and distance fog; written linear into an sRGB8 target, which encodes to sRGB.
 // Depths: written from the interpolated camera-frame position, not the non-linear depth buffer.
 precision highp float;
 precision highp int;
@@ -40,6 +40,29 @@ uniform vec3 u_sky_zenith_rgb;
 uniform vec3 u_sky_horizon_rgb;
 uniform float u_ambient;         // fraction of the light that comes from the sky
 uniform float u_fog_distance_m;  // 0 = no fog
+uniform bool u_has_shadow;       // the shadow map below holds this frame's casters
+uniform highp sampler2DShadow u_shadow_map;
+uniform mat4 u_shadow_from_C;    // camera frame -> the map's clip space
+uniform float u_shadow_texel;    // one texel in the map's [0, 1] coordinates
+uniform float u_shadow_offset_m; // receivers are looked up this far out along their normal
+uniform float u_shadow_distance_m;
+
+// Fraction of the sun that reaches p_C (normal n): 4 taps of the map's 2 x 2 filtered comparison,
+// half a texel apart, so edges are soft over about two texels; lit beyond the map and faded to
+// lit over the last tenth of the shadow distance.
+float SunVisibility(vec3 p_C, vec3 n) {
+  if (!u_has_shadow) return 1.0;
+  vec4 s = u_shadow_from_C * vec4(p_C + n * u_shadow_offset_m, 1.0);
+  vec3 q = s.xyz * 0.5 + 0.5;
+  if (q.x <= 0.0 || q.x >= 1.0 || q.y <= 0.0 || q.y >= 1.0 || q.z >= 1.0) return 1.0;
+  float d = 0.5 * u_shadow_texel;
+  float lit = texture(u_shadow_map, vec3(q.x - d, q.y - d, q.z)) +
+              texture(u_shadow_map, vec3(q.x + d, q.y - d, q.z)) +
+              texture(u_shadow_map, vec3(q.x - d, q.y + d, q.z)) +
+              texture(u_shadow_map, vec3(q.x + d, q.y + d, q.z));
+  float fade = smoothstep(0.9 * u_shadow_distance_m, u_shadow_distance_m, length(p_C));
+  return mix(0.25 * lit, 1.0, fade);
+}
 
 void main() {
   vec3 n = normalize(v_n_C);
@@ -56,6 +79,7 @@ void main() {
   float height_m = dot(v_p_C, u_up_C) + u_camera_height_m;
   float occlusion = mix(1.0, mix(0.55, 1.0, clamp(height_m / 4.0, 0.0, 1.0)), 1.0 - abs(up));
   float sun = max(dot(n, u_to_sun_C), 0.0);
+  if (sun > 0.0) sun *= SunVisibility(v_p_C, n);
   vec3 light = (1.0 - u_ambient) * 1.6 * u_sun_rgb * sun + u_ambient * 1.4 * sky_light * occlusion;
   vec3 rgb = albedo * light;
   if (u_fog_distance_m > 0.0) {

@@ -13,6 +13,9 @@ layout(location = 6) in uvec2 a_ids;      // (class id, instance id)
 layout(location = 7) in vec3 a_base_color; // linear albedo of the part's material
 
 uniform mat4 u_projection;  // camera frame -> clip space (pinhole intrinsics, image rows top-down)
+#ifdef SHADOW_CASTER
+uniform mat4 u_shadow_from_C;  // camera frame -> the sun's shadow map (the caster pass draws into it)
+#endif
 
 out vec3 v_p_C;
 out vec3 v_n_C;
@@ -33,5 +36,9 @@ void main() {
   v_uv = a_uv;
   v_ids = a_ids;
   v_base_color = a_base_color;
+#ifdef SHADOW_CASTER
+  gl_Position = u_shadow_from_C * vec4(v_p_C, 1.0);
+#else
   gl_Position = u_projection * vec4(v_p_C, 1.0);
+#endif
 }

@@ -159,6 +159,7 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
   if (outputs_.rgb) sky_program_ = GlProgram("sky", shaders::k_sky_vert, shaders::k_sky_frag, "");
   glUseProgram(scene_program_.id());
   glUniform1i(scene_program_.Uniform("u_texture"), 0);
+  if (outputs_.rgb) glUniform1i(scene_program_.Uniform("u_shadow_map"), 1);
 
   geometry_target_ =
       CreateTarget(render_intrinsics_.width_px, render_intrinsics_.height_px, distorted_, true);
@@ -284,6 +285,39 @@ void CameraRenderer::DestroyTarget(RenderTarget& target) const {
   target = RenderTarget{};
 }
 
+void CameraRenderer::DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
+                                const BodyPoses& bodies, const SceneLighting& light,
+                                const DetailLimit& detail) {
+  shadow_.reset();
+  last_shadow_triangles_ = 0;
+  if (!outputs_.rgb || !light.shadows.enabled) return;
+  shadow_ = FitShadowFrame(T_WC, render_intrinsics_, light.sun_direction_W,
+                           light.shadows.distance_m, light.shadows.map_size_px);
+  if (!shadow_) return;
+  if (!sun_shadow_ || sun_shadow_->map_size_px() != light.shadows.map_size_px) {
+    sun_shadow_ = std::make_unique<SunShadow>(light.shadows.map_size_px);
+  }
+  sun_shadow_->Render(scene, T_WC, *shadow_, bodies, detail);
+  last_shadow_triangles_ = sun_shadow_->last_triangles();
+}
+
+void CameraRenderer::SetShadowUniforms(const std::optional<ShadowFrame>& shadow,
+                                       const SceneLighting& light) {
+  glUniform1i(scene_program_.Uniform("u_has_shadow"), shadow ? 1 : 0);
+  if (!shadow) return;
+  const Eigen::Matrix4f M = shadow->shadow_from_C.cast<float>();
+  glUniformMatrix4fv(scene_program_.Uniform("u_shadow_from_C"), 1, GL_FALSE, M.data());
+  glUniform1f(scene_program_.Uniform("u_shadow_texel"),
+              1.0f / static_cast<float>(sun_shadow_->map_size_px()));
+  // One and a half texels out along the normal: past the map's depth steps on sloped receivers.
+  glUniform1f(scene_program_.Uniform("u_shadow_offset_m"),
+              static_cast<float>(1.5 * shadow->texel_m));
+  glUniform1f(scene_program_.Uniform("u_shadow_distance_m"), light.shadows.distance_m);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, sun_shadow_->texture());
+  glActiveTexture(GL_TEXTURE0);
+}
+
 void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
                                const BodyPoses& bodies) {
   const CameraIntrinsics& k = render_intrinsics_;
@@ -292,8 +326,9 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   const Eigen::Vector3f to_sun_C = (R_CW * -light.sun_direction_W.normalized()).cast<float>();
   const Eigen::Vector3f up_C = (R_CW * Eigen::Vector3d(0.0, 0.0, -1.0)).cast<float>();
 
-  scene.CollectVisible(T_WC, planes_C_, bodies, visible_,
-                       DetailLimit{std::max(k.fx_px, k.fy_px), detail_tolerance_px_});
+  const DetailLimit detail{std::max(k.fx_px, k.fy_px), detail_tolerance_px_};
+  DrawShadow(scene, T_WC, bodies, light, detail);
+  scene.CollectVisible(T_WC, planes_C_, bodies, visible_, detail);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
   const std::size_t bytes = visible_.instances.size() * sizeof(GpuInstance);
   if (bytes > instance_capacity_) {
@@ -348,6 +383,7 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   glUniform3fv(scene_program_.Uniform("u_sky_horizon_rgb"), 1, light.sky_horizon_rgb.data());
   glUniform1f(scene_program_.Uniform("u_ambient"), light.ambient);
   glUniform1f(scene_program_.Uniform("u_fog_distance_m"), light.fog_distance_m);
+  SetShadowUniforms(shadow_, light);
   const GLint has_texture = scene_program_.Uniform("u_has_texture");
   for (const VisibleSet::Draw& d : visible_.draws) {
     scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count, has_texture);
@@ -355,6 +391,11 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   last_draw_calls_ = visible_.draws.size();
   last_triangles_ = visible_.triangles;
   glDisable(GL_CULL_FACE);
+  if (shadow_) {  // the map is drawn into again next frame: not bound while it is
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+  }
 
   // Sky behind the geometry: only where the depth buffer still holds the far plane.
   if (outputs_.rgb) {

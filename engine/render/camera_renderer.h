@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "engine/render/egl_context.h"
 #include "engine/render/gl_program.h"
 #include "engine/render/gpu_scene.h"
+#include "engine/render/sun_shadow.h"
 
 namespace airis::engine {
 
@@ -76,6 +78,8 @@ class CameraRenderer {
   /// Draw calls and triangles submitted by the last frame (after culling).
   std::size_t last_draw_calls() const { return last_draw_calls_; }
   std::size_t last_triangles() const { return last_triangles_; }
+  /// Triangles the last frame drew into the sun's shadow map (0 without shadows).
+  std::size_t last_shadow_triangles() const { return last_shadow_triangles_; }
 
  private:
   static constexpr int kTargets = 6;  // attachment index = fragment output location in the shaders
@@ -104,6 +108,11 @@ class CameraRenderer {
   RenderTarget CreateTarget(int width, int height, bool sampled, bool with_depth) const;
   void DestroyTarget(RenderTarget& target) const;
   void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies);
+  // Draws the sun's shadow map for this frame when the lighting asks for shadows and the sun is up;
+  // sets the scene program's shadow uniforms either way (needs the program in use).
+  void DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies,
+                  const SceneLighting& light, const DetailLimit& detail);
+  void SetShadowUniforms(const std::optional<ShadowFrame>& shadow, const SceneLighting& light);
   void PrepareFrame(CameraFrame& out, TimeNs time_ns, const Eigen::Isometry3d& T_WC) const;
   void DeliverFromBytes(int target, const void* bytes, CameraFrame& out) const;
   void* FrameBuffer(int target, CameraFrame& out) const;
@@ -133,6 +142,9 @@ class CameraRenderer {
   std::vector<unsigned char> scratch_;
   std::size_t last_draw_calls_ = 0;
   std::size_t last_triangles_ = 0;
+  std::size_t last_shadow_triangles_ = 0;
+  std::unique_ptr<SunShadow> sun_shadow_;  // made at the first frame with shadows
+  std::optional<ShadowFrame> shadow_;      // this frame's, when drawn
 };
 
 }  // namespace airis::engine

@@ -108,6 +108,7 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     }
     glBindVertexArray(0);
     CheckGl("mesh upload");
+    gpu.casts_shadow = m.primitive != Primitive::kPlane;
     meshes_.push_back(gpu);
   }
 
@@ -324,7 +325,8 @@ GpuInstance MakeInstance(const Eigen::Matrix4d& T_CP, std::uint32_t class_id,
 
 void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
                               const std::vector<Eigen::Vector4d>& planes_C, const BodyPoses& bodies,
-                              VisibleSet& out, const DetailLimit& detail) const {
+                              VisibleSet& out, const DetailLimit& detail,
+                              bool shadow_casters) const {
   out.instances.clear();
   out.draws.clear();
   out.triangles = 0;
@@ -360,7 +362,9 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
         }
       }
       for (std::uint32_t p = look->first; p < look->first + look->count; ++p) {
-        entries[shape_parts_[p].batch].push_back({centre_C.z(), i, p});
+        const std::uint32_t b = shape_parts_[p].batch;
+        if (shadow_casters && !meshes_[batches_[b].mesh].casts_shadow) continue;
+        entries[b].push_back({centre_C.z(), i, p});
       }
     }
   }

@@ -94,10 +94,11 @@ class GpuScene {
   /// and offsets d in the camera frame: a point p is inside when n.dot(p) + d >= 0), with the
   /// vehicle bodies at `bodies`, static objects at the looks `detail` allows. Sorted front to back
   /// within each batch (cheap early depth rejection); batches of large parts after the other static
-  /// ones, body batches last.
+  /// ones, body batches last. `shadow_casters`: only what can shade something else (flat planes,
+  /// such as the ground, are left out).
   void CollectVisible(const Eigen::Isometry3d& T_WC, const std::vector<Eigen::Vector4d>& planes_C,
-                      const BodyPoses& bodies, VisibleSet& out,
-                      const DetailLimit& detail = {}) const;
+                      const BodyPoses& bodies, VisibleSet& out, const DetailLimit& detail = {},
+                      bool shadow_casters = false) const;
 
   /// Binds the vertex array of batch `b`'s mesh, points the per-instance attributes at
   /// `instance_buffer` from instance `first`, binds the batch's texture and issues one
@@ -121,6 +122,7 @@ class GpuScene {
     GLuint vertex_buffer = 0;
     GLuint index_buffer = 0;
     GLsizei index_count = 0;
+    bool casts_shadow = true;  // false for flat planes (the ground): nothing lies beneath them
   };
   struct GpuMaterial {
     std::uint8_t base_color_rgba[4];

@@ -12,6 +12,8 @@ namespace airis::engine::shaders {
 extern const std::string_view k_scene_vert;
 /// shaders/scene.frag: shading, depths, labels and normals into multiple render targets.
 extern const std::string_view k_scene_frag;
+/// shaders/shadow.frag: depth only, for the sun's shadow map (scene.vert with SHADOW_CASTER).
+extern const std::string_view k_shadow_frag;
 /// shaders/sky.vert: a full-screen triangle at the far plane.
 extern const std::string_view k_sky_vert;
 /// shaders/sky.frag: the sky gradient and sun glow behind the geometry.

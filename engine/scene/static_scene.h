@@ -120,6 +120,14 @@ struct VehicleBody {
   std::string name;                         ///< the vehicle's name
 };
 
+/// The sun's shadows (ShadowConfig in scene files): off by default, they about halve llvmpipe's
+/// frame rate (docs/performance.md).
+struct ShadowSettings {
+  bool enabled = false;
+  float distance_m = 200.0f;  ///< shadows out to this distance from the camera
+  int map_size_px = 2048;     ///< the shadow map's side
+};
+
 /// Lighting and sky of a scene, for the renderer.
 struct SceneLighting {
   Vec3 sun_direction_W =
@@ -130,6 +138,7 @@ struct SceneLighting {
   Eigen::Vector3f sky_horizon_rgb = Eigen::Vector3f(0.75f, 0.85f, 0.95f);
   float ambient = 0.35f;        ///< sky light fraction
   float fog_distance_m = 0.0f;  ///< distance at which fog reaches 63%, 0 = no fog
+  ShadowSettings shadows;
 };
 
 /// A block of the terrain's samples that is one object of the scene: drawn and hit by rays through
