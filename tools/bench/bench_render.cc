@@ -51,6 +51,7 @@ struct CaseResult {
   double fps = 0.0;
   double pipelined_fps = 0.0;
   double triangles = 0.0;
+  double shadow_triangles = 0.0;  ///< drawn into the sun's shadow map
   double draw_calls = 0.0;
 };
 
@@ -77,11 +78,13 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
   for (int k = 0; k < frames; ++k) {
     render(k);
     r.triangles += static_cast<double>(renderer.last_triangles());
+    r.shadow_triangles += static_cast<double>(renderer.last_shadow_triangles());
     r.draw_calls += static_cast<double>(renderer.last_draw_calls());
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.fps = frames / seconds;
   r.triangles /= frames;
+  r.shadow_triangles /= frames;
   r.draw_calls /= frames;
   // Pipelined: frame k+1 renders while frame k's readback completes.
   const auto start_pipelined = Clock::now();
@@ -176,6 +179,7 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
       out[key + "_fps"] = r.fps;
       out[key + "_pipelined_fps"] = r.pipelined_fps;
       out[key + "_triangles_per_frame"] = r.triangles;
+      out[key + "_shadow_triangles_per_frame"] = r.shadow_triangles;
       out[key + "_draw_calls_per_frame"] = r.draw_calls;
     }
   }
