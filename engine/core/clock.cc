@@ -69,26 +69,6 @@ TimeNs RateSchedule::DueTime(std::int64_t k) const {
   return start_ns_ + static_cast<TimeNs>(q);
 }
 
-void RateSchedule::Advance() {
-  ++next_index_;
-  next_quotient_ += period_quotient_;
-  next_remainder_ += period_remainder_;  // < 2 rate_uhz_ <= 2e15: no overflow
-  if (next_remainder_ >= rate_uhz_) {
-    next_remainder_ -= rate_uhz_;
-    ++next_quotient_;
-  }
-  next_due_ns_ = start_ns_ + next_quotient_ + (next_remainder_ > 0 ? 1 : 0);
-}
-
-int RateSchedule::ConsumeDueEvents(TimeNs now_ns) {
-  int n = 0;
-  while (now_ns >= next_due_ns_) {
-    ++n;
-    Advance();
-  }
-  return n;
-}
-
 double RateSchedule::rate_hz() const {
   return static_cast<double>(rate_uhz_) / static_cast<double>(kMicroHzPerHz);
 }

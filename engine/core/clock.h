@@ -80,10 +80,26 @@ class RateSchedule {
 
  private:
   // ConsumeDue when at least one event is due.
-  int ConsumeDueEvents(TimeNs now_ns);
+  int ConsumeDueEvents(TimeNs now_ns) {
+    int n = 0;
+    while (now_ns >= next_due_ns_) {
+      ++n;
+      Advance();
+    }
+    return n;
+  }
   // Moves to the next event: DueTime(next_index_ + 1) from the running quotient and remainder,
   // without a 128-bit division.
-  void Advance();
+  void Advance() {
+    ++next_index_;
+    next_quotient_ += period_quotient_;
+    next_remainder_ += period_remainder_;  // < 2 rate_uhz_ <= 2e15: no overflow
+    if (next_remainder_ >= rate_uhz_) {
+      next_remainder_ -= rate_uhz_;
+      ++next_quotient_;
+    }
+    next_due_ns_ = start_ns_ + next_quotient_ + (next_remainder_ > 0 ? 1 : 0);
+  }
 
   std::int64_t
       rate_uhz_;  // rate in micro-hertz: the exact rational rate_uhz / 1e6 events per second

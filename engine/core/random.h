@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <string_view>
@@ -16,19 +17,28 @@ class RandomStream {
  public:
   explicit RandomStream(std::uint64_t seed);
 
-  /// Next 64 uniformly distributed bits: xoshiro256++ (Blackman & Vigna, 2019). Inline: the
-  /// sensors draw a dozen per tick.
-  std::uint64_t NextU64() {
-    const std::uint64_t result = std::rotl(s_[0] + s_[3], 23) + s_[0];
-    const std::uint64_t t = s_[1] << 17;
-    s_[2] ^= s_[0];
-    s_[3] ^= s_[1];
-    s_[1] ^= s_[2];
-    s_[0] ^= s_[3];
-    s_[2] ^= t;
-    s_[3] = std::rotl(s_[3], 45);
+  /// The generator's state (xoshiro256++'s four words).
+  using State = std::array<std::uint64_t, 4>;
+
+  /// One step of xoshiro256++ (Blackman & Vigna, 2019) on `s`: the next 64 uniformly distributed
+  /// bits. For a loop that keeps a copy of the state in registers (StandardNormals) and puts it
+  /// back with set_state.
+  static std::uint64_t Next(State& s) {
+    const std::uint64_t result = std::rotl(s[0] + s[3], 23) + s[0];
+    const std::uint64_t t = s[1] << 17;
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = std::rotl(s[3], 45);
     return result;
   }
+  /// Next 64 uniformly distributed bits (Next on this stream's state). Inline: the sensors draw a
+  /// dozen per tick.
+  std::uint64_t NextU64() { return Next(s_); }
+  const State& state() const { return s_; }
+  void set_state(const State& state) { s_ = state; }
   /// Uniform on [0, 1), 53 bits of resolution.
   double Uniform01();
   /// Uniform on [lo, hi).
@@ -44,7 +54,7 @@ class RandomStream {
   RandomStream Fork(std::string_view name) const;
 
  private:
-  std::uint64_t s_[4];
+  State s_;
   double spare_ = 0.0;
   bool has_spare_ = false;
 };

@@ -12,6 +12,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <vector>
+
+#include "engine/core/worker_pool.h"
 #include "tools/bench/bench_vehicles.h"
 
 namespace airis::tools {
@@ -61,6 +64,24 @@ BENCHMARK(BM_OneFlyingAmongResting)
     ->Args({999, 2})
     ->UseRealTime()
     ->Unit(benchmark::kMicrosecond);
+
+// What a tick pays to hand its vehicles to the threads and wait for them: one ParallelFor over
+// 100 indices whose bodies do almost nothing (a tick of a swarm makes two). Each index writes its
+// own cache line, as each vehicle does its own state.
+void BM_ForkJoin(benchmark::State& state) {
+  const auto threads = static_cast<int>(state.range(0));
+  engine::WorkerPool pool(threads);
+  struct alignas(64) Line {
+    double value = 0.0;
+  };
+  std::vector<Line> out(100);
+  for (auto _ : state) {
+    engine::ParallelFor(&pool, out.size(), [&](std::size_t i) { out[i].value += 1.0; });
+  }
+  benchmark::DoNotOptimize(out.data());
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ForkJoin)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
 
 }  // namespace
 }  // namespace airis::tools
