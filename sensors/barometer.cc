@@ -59,9 +59,13 @@ void Barometer::CopyLatestRow(std::span<double> out) const {
 
 void Barometer::Sample(const engine::SensorContext& context) {
   AIRIS_DEMAND(context.state != nullptr && context.environment != nullptr);
-  const engine::RigidBodyState& s = *context.state;
-  const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
-  const engine::AtmosphereSample air = context.environment->CalcAir(p_WS);
+  if (context.motion_serial == 0 || context.motion_serial != air_motion_serial_) {
+    const engine::RigidBodyState& s = *context.state;
+    const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
+    air_ = context.environment->CalcAir(p_WS);
+    air_motion_serial_ = context.motion_serial;
+  }
+  const engine::AtmosphereSample& air = air_;
 
   drift_ = drift_step_.Next(drift_, engine::StandardNormal(stream_));
   const double white_pa = config_.pressure_noise_pa * engine::StandardNormal(stream_);

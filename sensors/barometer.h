@@ -83,6 +83,10 @@ class Barometer final : public engine::Sensor {
   engine::RandomStream temperature_stream_;
   double temperature_offset_k_ = 0.0;
   engine::BarometricSample latest_;
+  // The air at the port, and the motion serial it was worked out for (0: none): a body asleep
+  // keeps it (SensorContext::motion_serial).
+  engine::AtmosphereSample air_;
+  std::uint64_t air_motion_serial_ = 0;
 };
 
 }  // namespace airis::sensors

@@ -38,7 +38,12 @@ struct GaussMarkovStep {
     const double nx = engine::StandardNormal(stream);
     const double ny = engine::StandardNormal(stream);
     const double nz = engine::StandardNormal(stream);
-    return engine::Vec3(a * x.x() + b * nx, a * x.y() + b * ny, a * x.z() + b * nz);
+    return Next(x, engine::Vec3(nx, ny, nz));
+  }
+  /// Three independent axes advanced with the standard normal draws `unit_normals` (x, y, z).
+  engine::Vec3 Next(const engine::Vec3& x, const engine::Vec3& unit_normals) const {
+    return engine::Vec3(a * x.x() + b * unit_normals.x(), a * x.y() + b * unit_normals.y(),
+                        a * x.z() + b * unit_normals.z());
   }
 };
 

@@ -1,9 +1,11 @@
 #include "sensors/imu.h"
 
+#include <array>
 #include <cmath>
 
 #include "engine/core/config.h"
 #include "engine/core/geodetic.h"
+#include "engine/core/standard_normal.h"
 #include "sensors/sensor_checks.h"
 
 namespace airis::sensors {
@@ -101,7 +103,29 @@ void Imu::Sample(const engine::SensorContext& context) {
                context.environment != nullptr);
   const engine::RigidBodyState& s = *context.state;
   const engine::RigidBodyAccelerations& a = *context.accelerations;
+  // The truth is worked out again unless the state is the one of the last sample (a body
+  // asleep: SensorContext::motion_serial).
+  if (context.motion_serial == 0 || context.motion_serial != truth_motion_serial_) {
+    UpdateTruth(s, a, *context.environment);
+    truth_motion_serial_ = context.motion_serial;
+  }
 
+  // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
+  // reproducible.
+  std::array<double, 12> n;
+  engine::StandardNormals(stream_, n);
+  gyro_bias_ = gyro_bias_step_.Next(gyro_bias_, Vec3(n[0], n[1], n[2]));
+  accel_bias_ = accel_bias_step_.Next(accel_bias_, Vec3(n[3], n[4], n[5]));
+  const Vec3 gyro_white = gyro_white_sigma_rad_s_ * Vec3(n[6], n[7], n[8]);
+  const Vec3 accel_white = accel_white_sigma_m_s2_ * Vec3(n[9], n[10], n[11]);
+
+  latest_.time_ns = context.now_ns;
+  latest_.angular_velocity_S_rad_s = gyro_truth_S_ + gyro_bias_ + gyro_white;
+  latest_.specific_force_S_m_s2 = accel_truth_S_ + accel_bias_ + accel_white;
+}
+
+void Imu::UpdateTruth(const engine::RigidBodyState& s, const engine::RigidBodyAccelerations& a,
+                      const engine::Environment& environment) {
   // Truth at the mounting point (rigid body kinematics), in sensor axes. The lever-arm terms and
   // the mount rotation are skipped where they are exactly zero and the identity (an IMU at the
   // centre of mass, not rotated: the usual mount), which leaves every number as it was.
@@ -114,25 +138,15 @@ void Imu::Sample(const engine::SensorContext& context) {
   // lever-arm terms above keep w_B (the Earth's rate changes them by < 1e-8 m/s^2).
   Vec3 w_IB_B = w_B;
   if (config_.gyro_earth_rotation) {
-    const Vec3 earth_W = engine::wgs84::kAngularVelocity_rad_s *
-                         context.environment->frame().R_EW().row(2).transpose();
+    const Vec3 earth_W =
+        engine::wgs84::kAngularVelocity_rad_s * environment.frame().R_EW().row(2).transpose();
     w_IB_B += s.q_WB.conjugate() * earth_W;
   }
   const Vec3 w_S = rotated_ ? Vec3(R_SB_ * w_IB_B) : w_IB_B;
   const Vec3 f_S = rotated_ ? Vec3(R_SB_ * f_B) : f_B;
 
-  // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
-  // reproducible.
-  gyro_bias_ = gyro_bias_step_.Next(gyro_bias_, stream_);
-  accel_bias_ = accel_bias_step_.Next(accel_bias_, stream_);
-  const Vec3 gyro_white = GaussianVec3(stream_, gyro_white_sigma_rad_s_);
-  const Vec3 accel_white = GaussianVec3(stream_, accel_white_sigma_m_s2_);
-
-  latest_.time_ns = context.now_ns;
-  latest_.angular_velocity_S_rad_s =
-      gyro_scale_.cwiseProduct(w_S) + gyro_turn_on_bias_ + gyro_bias_ + gyro_white;
-  latest_.specific_force_S_m_s2 =
-      accel_scale_.cwiseProduct(f_S) + accel_turn_on_bias_ + accel_bias_ + accel_white;
+  gyro_truth_S_ = gyro_scale_.cwiseProduct(w_S) + gyro_turn_on_bias_;
+  accel_truth_S_ = accel_scale_.cwiseProduct(f_S) + accel_turn_on_bias_;
 }
 
 }  // namespace airis::sensors

@@ -106,6 +106,11 @@ class Imu final : public engine::Sensor {
   void Sample(const engine::SensorContext& context) override;
 
  private:
+  // The truth in sensor axes with the scale errors and turn-on biases applied, (1 + s) truth +
+  // b_on, into gyro_truth_S_ and accel_truth_S_.
+  void UpdateTruth(const engine::RigidBodyState& s, const engine::RigidBodyAccelerations& a,
+                   const engine::Environment& environment);
+
   ImuConfig config_;
   engine::RandomStream stream_;
   engine::Mat3 R_SB_;
@@ -123,6 +128,10 @@ class Imu final : public engine::Sensor {
   engine::Vec3 gyro_scale_;  // 1 + s per axis
   engine::Vec3 accel_scale_;
   engine::InertialSample latest_;
+  // UpdateTruth's result, and the motion serial it was worked out for (0: none).
+  engine::Vec3 gyro_truth_S_ = engine::Vec3::Zero();
+  engine::Vec3 accel_truth_S_ = engine::Vec3::Zero();
+  std::uint64_t truth_motion_serial_ = 0;
 };
 
 }  // namespace airis::sensors

@@ -65,15 +65,19 @@ void Magnetometer::CopyLatestRow(std::span<double> out) const {
 
 void Magnetometer::Sample(const engine::SensorContext& context) {
   AIRIS_DEMAND(context.state != nullptr && context.environment != nullptr);
-  const engine::RigidBodyState& s = *context.state;
-  const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
-  const double d = config_.field_update_distance_m;
-  if (!has_field_ || (p_WS - field_p_W_).squaredNorm() > d * d || d == 0.0) {
-    field_W_nT_ = context.environment->CalcMagneticField_nT(p_WS);
-    field_p_W_ = p_WS;
-    has_field_ = true;
+  if (context.motion_serial == 0 || context.motion_serial != field_motion_serial_) {
+    const engine::RigidBodyState& s = *context.state;
+    const engine::Vec3 p_WS = s.p_W + s.q_WB * config_.mount.position_m;
+    const double d = config_.field_update_distance_m;
+    if (!has_field_ || (p_WS - field_p_W_).squaredNorm() > d * d || d == 0.0) {
+      field_W_nT_ = context.environment->CalcMagneticField_nT(p_WS);
+      field_p_W_ = p_WS;
+      has_field_ = true;
+    }
+    field_S_nT_ = R_SB_ * (s.q_WB.conjugate() * field_W_nT_);
+    field_motion_serial_ = context.motion_serial;
   }
-  const engine::Vec3 field_S_nT = R_SB_ * (s.q_WB.conjugate() * field_W_nT_);
+  const engine::Vec3& field_S_nT = field_S_nT_;
 
   latest_.time_ns = context.now_ns;
   latest_.field_S_gauss =

@@ -81,6 +81,10 @@ class Magnetometer final : public engine::Sensor {
   engine::Vec3 field_p_W_ = engine::Vec3::Zero();   // where the field was last evaluated
   engine::Vec3 field_W_nT_ = engine::Vec3::Zero();  // the field there
   engine::MagneticSample latest_;
+  // The field in sensor axes, and the motion serial it was worked out for (0: none): a body
+  // asleep keeps it (SensorContext::motion_serial).
+  engine::Vec3 field_S_nT_ = engine::Vec3::Zero();
+  std::uint64_t field_motion_serial_ = 0;
 };
 
 }  // namespace airis::sensors

@@ -61,6 +61,7 @@ Wind::Wind(const WindConfig& config, RandomStream stream) : config_(config), str
     AdvanceDryden(inf, kDefaultAirspeed_m_s);
   }
   cached_dt_s_ = -1.0;
+  UpdateVelocity();
 }
 
 void Wind::Advance(TimeNs now_ns, double airspeed_m_s) {
@@ -72,7 +73,10 @@ void Wind::Advance(TimeNs now_ns, double airspeed_m_s) {
     AdvanceGaussMarkov(dt_s);
   } else if (config_.gust == GustModel::kDryden) {
     AdvanceDryden(dt_s, airspeed_m_s);
+  } else {
+    return;  // steady: the velocity stays the mean wind
   }
+  UpdateVelocity();
 }
 
 void Wind::AdvanceGaussMarkov(double dt_s) {
@@ -136,7 +140,7 @@ void Wind::AdvanceDryden(double dt_s, double airspeed_m_s) {
   StepSecondOrder(dryden_step_, dryden_vertical_);
 }
 
-Vec3 Wind::gust_W() const {
+Vec3 Wind::CalcGust_W() const {
   switch (config_.gust) {
     case GustModel::kNone:
       return Vec3::Zero();
@@ -164,6 +168,9 @@ Vec3 Wind::gust_W() const {
   return Vec3::Zero();
 }
 
-Vec3 Wind::CalcVelocity_W(const Vec3& /*p_W*/) const { return config_.mean_ned_m_s + gust_W(); }
+void Wind::UpdateVelocity() {
+  gust_now_W_ = CalcGust_W();
+  velocity_W_ = config_.mean_ned_m_s + gust_now_W_;
+}
 
 }  // namespace airis::engine

@@ -65,12 +65,19 @@ class Wind {
   /// `airspeed_m_s` sets the Dryden filters' time scale (L / V); ignored by the other models.
   /// A time before the last Advance is a programming error (AIRIS_DEMAND).
   void Advance(TimeNs now_ns, double airspeed_m_s = kDefaultAirspeed_m_s);
-  /// Wind velocity (m/s, world NED) at `p_W` at the time of the last Advance.
-  Vec3 CalcVelocity_W(const Vec3& p_W) const;
+  /// Wind velocity (m/s, world NED) at `p_W` at the time of the last Advance: the same everywhere
+  /// (the models have no spatial structure), worked out once per Advance, not per vehicle.
+  Vec3 CalcVelocity_W(const Vec3& p_W) const {
+    (void)p_W;
+    return velocity_W_;
+  }
   /// Gust part of the wind (m/s, world NED) at the time of the last Advance.
-  Vec3 gust_W() const;
+  const Vec3& gust_W() const { return gust_now_W_; }
   /// Replaces the mean wind (mission step `set_wind`); the gust state is kept.
-  void set_mean_ned_m_s(const Vec3& mean) { config_.mean_ned_m_s = mean; }
+  void set_mean_ned_m_s(const Vec3& mean) {
+    config_.mean_ned_m_s = mean;
+    UpdateVelocity();
+  }
   /// The description, with the current mean wind.
   const WindConfig& config() const { return config_; }
 
@@ -86,6 +93,9 @@ class Wind {
   void AdvanceGaussMarkov(double dt_s);
   void AdvanceDryden(double dt_s, double airspeed_m_s);
   void StepSecondOrder(const DrydenStep& step, Eigen::Vector2d& z);
+  // The gust and the wind velocity from the models' state and the mean wind.
+  Vec3 CalcGust_W() const;
+  void UpdateVelocity();
 
   WindConfig config_;
   RandomStream stream_;
@@ -103,6 +113,8 @@ class Wind {
   double gm_decay_ = 0.0, gm_noise_ = 0.0;
   double dryden_u_decay_ = 0.0, dryden_u_noise_ = 0.0;
   DrydenStep dryden_step_;
+  Vec3 gust_now_W_ = Vec3::Zero();  // CalcGust_W() of the current state
+  Vec3 velocity_W_ = Vec3::Zero();  // mean + gust
 };
 
 }  // namespace airis::engine

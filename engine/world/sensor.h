@@ -30,6 +30,11 @@ struct SensorContext {
   /// where a sensor samples without one (unit tests).
   const World* world = nullptr;
   std::size_t vehicle = 0;  ///< index of the sensor's own vehicle in `world`
+  /// Changes whenever the vehicle's state or accelerations may have changed since the previous
+  /// tick (World::motion_serial); two contexts with the same non-zero value describe the same
+  /// state and accelerations bit for bit (a vehicle asleep), so a sensor may keep what it worked
+  /// out from them. 0: not known (a context made outside a World): nothing may be kept.
+  std::uint64_t motion_serial = 0;
 };
 
 /// A sensor mounted on a vehicle (DESIGN.md: sensors/ implements this; the engine knows no concrete

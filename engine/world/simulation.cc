@@ -13,25 +13,38 @@ SensorContext MakeSensorContext(World& world, std::size_t i, TimeNs now_ns) {
                        &world.environment(),
                        world.ray_caster(),
                        &world,
-                       i};
+                       i,
+                       world.motion_serial(i)};
 }
 
-// Vehicle i's sensors other than cameras sample when due (on whichever thread steps it).
-void SampleSensors(World& world, std::size_t i, TimeNs now_ns) {
-  const auto sensors = world.sensors(i);
-  if (sensors.empty()) return;
+// Vehicle i's sensors other than cameras sample when due (on whichever thread steps it). Returns
+// whether one of them sampled and has listeners to tell.
+bool SampleSensors(World& world, std::size_t i, TimeNs now_ns) {
+  const auto sensors = world.row_sensors(i);
+  if (sensors.empty()) return false;
   const SensorContext context = MakeSensorContext(world, i, now_ns);
-  for (const auto& sensor : sensors) {
-    if (sensor->image() == nullptr) sensor->SampleIfDue(context);
+  bool heard = false;
+  for (Sensor* sensor : sensors) {
+    if (sensor->SampleIfDue(context) && sensor->has_listeners()) heard = true;
   }
+  return heard;
+}
+
+// Sets vehicle i's flag of NotifySensorListeners. The threads write the flags of neighbouring
+// vehicles, which share cache lines: written only when it changes (rarely: a sensor with listeners
+// at the physics rate samples every tick), a flag keeps its line in both cores' caches instead of
+// moving it from core to core a few times a tick.
+void SetHeard(std::vector<char>& heard, std::size_t i, bool value) {
+  if (heard[i] != static_cast<char>(value)) heard[i] = static_cast<char>(value);
 }
 
 // On the calling thread, in the order of vehicles and sensors: images render (the GL context is
-// this thread's), and every listener hears of its sensor's sample of this tick.
-void NotifySensorListeners(World& world, TimeNs now_ns) {
+// this thread's), and every listener hears of its sensor's sample of this tick. Vehicles without
+// cameras whose samples nobody listens to this tick (`heard` false) are passed over.
+void NotifySensorListeners(World& world, TimeNs now_ns, const std::vector<char>& heard) {
   for (std::size_t i = 0; i < world.vehicle_count(); ++i) {
+    if (!heard[i] && !world.has_image_sensors(i)) continue;
     const auto sensors = world.sensors(i);
-    if (sensors.empty()) continue;
     const SensorContext context = MakeSensorContext(world, i, now_ns);
     for (const auto& sensor : sensors) {
       if (sensor->image() != nullptr) {
@@ -75,6 +88,7 @@ void Simulation::Step() {
     return context;
   };
   const std::size_t n = world_->vehicle_count();
+  if (heard_.size() != n) heard_.resize(n);
   if (autopilots_.empty()) {
     // Without an autopilot to read the samples first, a vehicle's controller needs only its own
     // vehicle's state and sensors, and what runs on this thread after the sensors (cameras
@@ -82,10 +96,11 @@ void Simulation::Step() {
     // sets: each vehicle samples and controls in one pass, one fork and join a tick fewer, with
     // the same results.
     ParallelFor(pool_.get(), n, [&](std::size_t i) {
-      SampleSensors(*world_, i, now_ns);
-      world_->vehicle(i).UpdateControl(control_context(i));
+      SetHeard(heard_, i, SampleSensors(*world_, i, now_ns));
+      Vehicle& vehicle = world_->vehicle(i);
+      if (vehicle.has_active_controller()) vehicle.UpdateControl(control_context(i));
     });
-    if (world_->sensor_count() > 0) NotifySensorListeners(*world_, now_ns);
+    if (world_->sensor_count() > 0) NotifySensorListeners(*world_, now_ns, heard_);
     return;
   }
   if (world_->sensor_count() > 0) UpdateSensors(now_ns);
@@ -95,14 +110,16 @@ void Simulation::Step() {
   for (std::size_t i = 0; i < autopilots_.size(); ++i) {
     if (autopilots_[i]) autopilots_[i]->Collect(world_->vehicle(i));
   }
-  ParallelFor(pool_.get(), n,
-              [&](std::size_t i) { world_->vehicle(i).UpdateControl(control_context(i)); });
+  ParallelFor(pool_.get(), n, [&](std::size_t i) {
+    Vehicle& vehicle = world_->vehicle(i);
+    if (vehicle.has_active_controller()) vehicle.UpdateControl(control_context(i));
+  });
 }
 
 void Simulation::UpdateSensors(TimeNs now_ns) {
   ParallelFor(pool_.get(), world_->vehicle_count(),
-              [&](std::size_t i) { SampleSensors(*world_, i, now_ns); });
-  NotifySensorListeners(*world_, now_ns);
+              [&](std::size_t i) { SetHeard(heard_, i, SampleSensors(*world_, i, now_ns)); });
+  NotifySensorListeners(*world_, now_ns, heard_);
 }
 
 void Simulation::SetAutopilot(std::size_t vehicle, std::unique_ptr<Autopilot> autopilot) {

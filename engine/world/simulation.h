@@ -76,6 +76,7 @@ class Simulation {
   SimClock clock_;
   std::unique_ptr<WorkerPool> pool_;                    // null with one thread
   std::vector<std::unique_ptr<Autopilot>> autopilots_;  // by vehicle; null for most
+  std::vector<char> heard_;  // by vehicle: a sensor sampled this tick and has listeners
 };
 
 }  // namespace airis::engine

@@ -84,6 +84,12 @@ class Vehicle {
   /// context.now_ns and returns the wrench to hold over that step. Called once per tick by the
   /// Simulation; allocation-free.
   virtual Wrench UpdateActuators(const ActuatorContext& context) = 0;
+  /// True when UpdateActuators, called again with the step and air density of its last call,
+  /// would return the same wrench and change nothing: the actuators had reached their commands at
+  /// the start of the last call and no command changed since. A sleeping body
+  /// (PhysicsConfig::sleep), which keeps its place and so its air, then skips the call. This
+  /// default (false) always calls it.
+  virtual bool AreActuatorsSettled() const { return false; }
 
   /// Tells the vehicle what to do (missions, bridges, learning code) and keeps the command for
   /// command(). Throws std::invalid_argument for a mode the vehicle cannot follow.
@@ -112,9 +118,13 @@ class Vehicle {
   virtual bool landed() const { return false; }
 
   /// Controller hook, called at the end of every tick after the sensors sampled (a flight
-  /// controller reads its sensors here and sets the commands for the next tick). The default does
-  /// nothing (open loop).
+  /// controller reads its sensors here and sets the commands for the next tick), unless
+  /// has_active_controller() is false. The default does nothing (open loop).
   virtual void UpdateControl(const ControlContext& context) { (void)context; }
+  /// Whether UpdateControl has anything to do now; the Simulation does not call it while this is
+  /// false. A multirotor's is false until its flight controller gets a command, and on motor
+  /// commands. The default is true: UpdateControl is called on every tick.
+  virtual bool has_active_controller() const { return true; }
 
  private:
   std::string name_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -129,6 +130,11 @@ Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {
             "duplicate sensor name '" + sensor->name() + "' on vehicle '" +
                 slots_[vehicle].vehicle->name() + "'");
   }
+  if (sensor->image() == nullptr) {
+    slots_[vehicle].row_sensors.push_back(sensor.get());
+  } else {
+    slots_[vehicle].has_image_sensors = true;
+  }
   sensors.push_back(std::move(sensor));
   ++sensor_count_;
   return *sensors.back();
@@ -158,12 +164,16 @@ int World::FindVehicle(std::string_view name) const {
 void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
   if (dt_s != sleep_dt_s_) SetSleepDelay(dt_s);
   if (slots_.size() == 1) {
-    if (!slots_[0].held) StepVehicle(slots_[0], 0, now_ns, dt_s);
+    StepSlot(slots_[0], 0, now_ns, dt_s);
   } else {
+    swept_bounds_.resize(slots_.size());
     ParallelFor(pool, slots_.size(), [&](std::size_t i) {
       Slot& slot = slots_[i];
       slot.p_start_W = slot.vehicle->state().p_W;
-      if (!slot.held) StepVehicle(slot, i, now_ns, dt_s);
+      StepSlot(slot, i, now_ns, dt_s);
+      // Here, on the thread that stepped the vehicle, not in the serial pass after: there each
+      // vehicle would be read from the other core's cache.
+      swept_bounds_[i] = CalcSweptBounds(slot);
     });
   }
   if (!collision_listeners_.empty()) ReportEvents();
@@ -224,8 +234,10 @@ void World::SetHeld(std::size_t i, bool held) {
 void World::WakeUp(std::size_t i) { Wake(slots_[i]); }
 
 void World::Wake(Slot& slot) const {
+  ++slot.motion_serial;
   slot.asleep = false;
   slot.rest_ticks = 0;
+  slot.has_rest_wrench = false;
 }
 
 void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const {
@@ -236,6 +248,13 @@ void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) cons
       << " (p_W = [" << s.p_W.transpose() << "] m, v_W = [" << s.v_W.transpose() << "] m/s, w_B = ["
       << s.w_B.transpose() << "] rad/s)";
   throw SimulationError(out.str());
+}
+
+void World::StepSlot(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s) {
+  if (slot.asleep && StaysAsleep(slot)) return;
+  // A held vehicle's state may be set by hand between steps; any other may move now.
+  ++slot.motion_serial;
+  if (!slot.held) StepVehicle(slot, index, now_ns, dt_s);
 }
 
 void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s) {
@@ -269,10 +288,12 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   forcing.torque_B = wrench.torque_B;
   if (slot.asleep) [[unlikely]] {
     // Asleep it stays where it fell asleep, unless the forces on it grew or its state was changed
-    // from outside (compared to the bit: a sleeping body's state is never touched here).
-    const RigidBodyState& rest = slot.rest_state;
-    if (state.p_W == rest.p_W && state.v_W == rest.v_W && state.w_B == rest.w_B &&
-        state.q_WB.coeffs() == rest.q_WB.coeffs() && IsQuiet(slot, wrench, forcing)) {
+    // from outside. What it rests with is kept for the ticks to come (StaysAsleep).
+    if (IsRestState(slot) && IsQuiet(slot, wrench, forcing)) {
+      slot.rest_wrench = wrench;
+      slot.rest_forcing = forcing;
+      slot.quiet_wind2_m2_s2 = CalcQuietWind2(slot, wrench, forcing);
+      slot.has_rest_wrench = true;
       return;
     }
     Wake(slot);
@@ -311,6 +332,43 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
   slot.accelerations.alpha_B = (state.w_B - w0) / dt_s;
   ReportNewContacts(slot, index, now_ns + SecondsToNs(dt_s), resolution);
   if (physics_.sleep.enabled) CountRest(slot, wrench, forcing);
+}
+
+bool World::IsRestState(const Slot& slot) const {
+  const RigidBodyState& state = slot.vehicle->state();
+  const RigidBodyState& rest = slot.rest_state;
+  for (int k = 0; k < 3; ++k) {
+    if (state.p_W[k] != rest.p_W[k] || state.v_W[k] != rest.v_W[k] || state.w_B[k] != rest.w_B[k])
+      return false;
+  }
+  return state.q_WB.coeffs() == rest.q_WB.coeffs();
+}
+
+bool World::StaysAsleep(const Slot& slot) const {
+  if (!slot.has_rest_wrench || !slot.vehicle->AreActuatorsSettled() || !IsRestState(slot)) {
+    return false;
+  }
+  const Vec3 wind_W = environment_.wind().CalcVelocity_W(slot.vehicle->state().p_W);
+  if (wind_W.squaredNorm() <= slot.quiet_wind2_m2_s2) return true;
+  StepForcing forcing = slot.rest_forcing;
+  forcing.wind_W = wind_W;
+  return IsQuiet(slot, slot.rest_wrench, forcing);
+}
+
+double World::CalcQuietWind2(const Slot& slot, const Wrench& wrench,
+                             const StepForcing& forcing) const {
+  // IsQuiet's force is F + D with D_i = rho k_i a_i |a_i| for the air a relative to the body at
+  // rest (the wind in body axes), so |D| <= rho max(k) |a|^2 = rho max(k) |wind|^2: a wind with
+  // |F| + rho max(k) |wind|^2 within the bound is quiet. A thousandth is kept for rounding.
+  const RigidBodyModel& body = slot.vehicle->body();
+  const double limit_N = physics_.sleep.force_fraction * body.mass_kg() * forcing.gravity_m_s2;
+  const double limit_Nm = limit_N * body.bounding_radius_m();
+  const double force_N = wrench.force_B.norm();
+  if (wrench.torque_B.squaredNorm() > limit_Nm * limit_Nm || !(force_N < limit_N)) return -1.0;
+  const double drag_per_speed2 =
+      forcing.air_density_kg_m3 * body.linear_drag_factor_m2().maxCoeff();
+  if (!(drag_per_speed2 > 0.0)) return std::numeric_limits<double>::infinity();
+  return 0.999 * (limit_N - force_N) / drag_per_speed2;
 }
 
 bool World::IsQuiet(const Slot& slot, const Wrench& wrench, const StepForcing& forcing) const {

@@ -13,8 +13,8 @@
 #include "engine/core/clock.h"
 #include "engine/core/worker_pool.h"
 #include "engine/environment/environment.h"
-#include "engine/physics/body_broadphase.h"
 #include "engine/physics/body_contact_solver.h"
+#include "engine/physics/body_neighbour_list.h"
 #include "engine/physics/collision_world.h"
 #include "engine/physics/contact_solver.h"
 #include "engine/physics/rigid_body_integrator.h"
@@ -126,6 +126,10 @@ class World {
   /// cached local model the physics step uses (no atmosphere evaluation unless the vehicle has not
   /// been stepped yet).
   void CalcLocalConditions(std::size_t i, double* air_density_kg_m3, double* gravity_m_s2) const;
+  /// A number that changes (grows) whenever vehicle `i`'s state or accelerations may have changed
+  /// since the previous step: every step of a vehicle that is awake or held, a wake-up. It stays
+  /// the same while the vehicle sleeps undisturbed (SensorContext::motion_serial). Never 0.
+  std::uint64_t motion_serial(std::size_t i) const { return slots_[i].motion_serial; }
   /// Accelerations of vehicle `i` over the last step (contacts included).
   const RigidBodyAccelerations& accelerations(std::size_t i) const {
     return slots_[i].accelerations;
@@ -139,6 +143,11 @@ class World {
   std::span<const std::unique_ptr<Sensor>> sensors(std::size_t i) const {
     return slots_[i].sensors;
   }
+  /// The sensors of vehicle `i` that produce rows, not images (Sensor::image() is null), in the
+  /// order they were mounted: what the Simulation samples on its threads.
+  std::span<Sensor* const> row_sensors(std::size_t i) const { return slots_[i].row_sensors; }
+  /// Whether vehicle `i` carries an image sensor (a camera).
+  bool has_image_sensors(std::size_t i) const { return slots_[i].has_image_sensors; }
   /// Sensors on all vehicles together.
   std::size_t sensor_count() const { return sensor_count_; }
 
@@ -182,10 +191,13 @@ class World {
   };
   struct Slot {
     std::unique_ptr<Vehicle> vehicle;
-    bool held = false;  // SetHeld: kinematic, skipped by StepPhysics
+    bool held = false;                // SetHeld: kinematic, skipped by StepPhysics
+    std::uint64_t motion_serial = 1;  // see motion_serial()
     LocalEnvironment local;
     int body = -1;  // handle in collision_
     std::vector<std::unique_ptr<Sensor>> sensors;
+    std::vector<Sensor*> row_sensors;  // those of sensors that make no images
+    bool has_image_sensors = false;
     RigidBodyAccelerations accelerations;
     std::vector<Contact> contacts;
     std::vector<std::uint32_t> touching;       // colliders in contact in the last tick
@@ -197,12 +209,21 @@ class World {
     int rest_ticks = 0;
     bool asleep = false;
     RigidBodyState rest_state;
+    // Asleep, from its first tick asleep on: the actuators' wrench and the forcing there (the
+    // body's air and gravity do not change while it keeps its place), and the wind speed squared
+    // below which the wind cannot wake it (CalcQuietWind2).
+    bool has_rest_wrench = false;
+    Wrench rest_wrench;
+    StepForcing rest_forcing;
+    double quiet_wind2_m2_s2 = 0.0;
   };
   // The vehicle-vehicle contacts of one pair of vehicles in vehicle_contacts_.
   struct VehiclePair {
     std::size_t a, b;          // vehicle indices, a < b
     std::size_t first, count;  // range in vehicle_contacts_
   };
+  // Steps one vehicle, unless it is held or surely stays asleep (StaysAsleep).
+  void StepSlot(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
   void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
   void SetSleepDelay(double dt_s);
   void ReportEvents();  // the vehicles' new static contacts, to the listeners
@@ -211,6 +232,16 @@ class World {
   bool IsQuiet(const Slot& slot, const Wrench& wrench, const StepForcing& forcing) const;
   // Counts a tick at rest (or resets the count) and puts the body to sleep after the delay.
   void CountRest(Slot& slot, const Wrench& wrench, const StepForcing& forcing);
+  // Whether the state of a sleeping body is the one it fell asleep in, to the bit (a sleeping
+  // body's state is never changed by the physics: anything else changed it from outside).
+  bool IsRestState(const Slot& slot) const;
+  // Whether a sleeping body surely stays asleep this tick without its actuators being advanced:
+  // its state is its rest state, its actuators have settled (so they would give rest_wrench
+  // again), and the wind cannot lift it (quiet_wind2_m2_s2, else IsQuiet with the wind of now).
+  bool StaysAsleep(const Slot& slot) const;
+  // The largest wind speed squared (m^2/s^2) whose drag on the body at rest, with `wrench`, surely
+  // keeps it within the sleep bound; negative when the wrench alone may not.
+  double CalcQuietWind2(const Slot& slot, const Wrench& wrench, const StepForcing& forcing) const;
   void Wake(Slot& slot) const;
   void RefreshLocalEnvironment(Slot& slot, TimeNs now_ns, const Vec3& p_W) const;
   [[noreturn]] void Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) const;
@@ -219,6 +250,8 @@ class World {
   // Finds the contacts between vehicles i < j (sweeping when they close fast) into
   // vehicle_contacts_; returns their number.
   std::size_t FindVehiclePairContacts(std::size_t i, std::size_t j);
+  // The box vehicle `slot` swept over this tick (its start and end), grown by its bounding radius.
+  static BodyBounds CalcSweptBounds(const Slot& slot);
   void ResolveVehicleContacts(TimeNs now_ns, double dt_s);
   void ReportNewVehicleContacts(TimeNs end_ns);
 
@@ -234,8 +267,8 @@ class World {
   std::unique_ptr<RayCaster> ray_caster_;
   std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
   // Vehicle-vehicle contact state (used only with several vehicles).
-  BodyBroadphase broadphase_;
-  std::vector<BodyBounds> swept_bounds_;  // per vehicle, over this tick
+  BodyNeighbourList neighbours_;          // the broadphase between vehicles, kept from tick to tick
+  std::vector<BodyBounds> swept_bounds_;  // per vehicle, over this tick (CalcSweptBounds)
   std::vector<BodyPair> near_pairs_;      // the broadphase's pairs
   std::vector<BodyContact> vehicle_contacts_;
   std::vector<VehiclePair> pairs_;                                   // touching pairs of this tick

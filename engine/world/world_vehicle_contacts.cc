@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/core/error.h"
 #include "engine/physics/box_sweep.h"
 #include "engine/world/world.h"
 
@@ -62,24 +63,25 @@ std::size_t World::FindVehiclePairContacts(std::size_t i, std::size_t j) {
   return pair_scratch_.size();
 }
 
+BodyBounds World::CalcSweptBounds(const Slot& slot) {
+  // Each vehicle's bounding sphere over its path of the tick, as a box. A pair whose spheres come
+  // within reach along their relative path has overlapping boxes (each centre stays on its own
+  // path, even when a sweep below takes it back), so the pairs tested are the all-pairs loop's,
+  // less pairs that cannot touch, in the same order. Held and sleeping vehicles do not move: two
+  // of them cannot come into contact.
+  const Vec3& p_W = slot.vehicle->state().p_W;
+  const Vec3 reach = Vec3::Constant(slot.vehicle->body().bounding_radius_m());
+  return BodyBounds{p_W.cwiseMin(slot.p_start_W) - reach, p_W.cwiseMax(slot.p_start_W) + reach,
+                    slot.held || slot.asleep};
+}
+
 void World::ResolveVehicleContacts(TimeNs now_ns, double dt_s) {
   vehicle_contacts_.clear();
   pairs_.clear();
   const std::size_t n = slots_.size();
-  // Broadphase: each vehicle's bounding sphere over its path of the tick, as a box. A pair whose
-  // spheres come within reach along their relative path has overlapping boxes (each centre stays
-  // on its own path, even when a sweep below takes it back), so the pairs tested are the all-pairs
-  // loop's, less pairs that cannot touch, in the same order.
-  swept_bounds_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const Slot& slot = slots_[k];
-    const Vec3& p_W = slot.vehicle->state().p_W;
-    const Vec3 reach = Vec3::Constant(slot.vehicle->body().bounding_radius_m());
-    // Held and sleeping vehicles do not move: two of them cannot come into contact.
-    swept_bounds_[k] = BodyBounds{p_W.cwiseMin(slot.p_start_W) - reach,
-                                  p_W.cwiseMax(slot.p_start_W) + reach, slot.held || slot.asleep};
-  }
-  broadphase_.FindPairs(swept_bounds_, near_pairs_);
+  AIRIS_DEMAND(swept_bounds_.size() == n);
+  // Broadphase over the swept bounds of the vehicles (CalcSweptBounds, from StepPhysics).
+  neighbours_.FindPairs(swept_bounds_, near_pairs_);
   for (const auto& [i, j] : near_pairs_) {
     const std::size_t first = vehicle_contacts_.size();
     const std::size_t count = FindVehiclePairContacts(i, j);

@@ -10,6 +10,12 @@ namespace airis::vehicles {
 
 using engine::Vec3;
 
+namespace {
+// How close (in normalized command, a fraction of full thrust) a lagged motor must come to its
+// command to be at it (UpdateActuators).
+constexpr double kSettledCommand = 1e-9;
+}  // namespace
+
 Multirotor::Multirotor(std::string name, const MultirotorConfig& config)
     : engine::Vehicle(std::move(name), config.CalcRigidBodyConfig()), config_(config) {
   rotors_.reserve(config_.rotors.size());
@@ -149,18 +155,27 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
   Vec3 force_B = Vec3::Zero(), torque_B = Vec3::Zero();
   const double* commands = commands_.data();
   const std::size_t count = rotors_.size();
+  tilt_moved_ = false;
   for (std::size_t i = 0; i < count; ++i) {
     Rotor& r = rotors_[i];
     if (r.tilt_channel >= 0) {
       const double target = commands[r.tilt_channel] * r.max_tilt_rad;
       const double limit = r.tilt_rate_rad_s * dt;
       const double step = std::clamp(target - r.tilt_rad, -limit, limit);
-      if (step != 0.0) ApplyTilt(r, r.tilt_rad + step);
+      if (step != 0.0) {
+        ApplyTilt(r, r.tilt_rad + step);
+        tilt_moved_ = true;
+      }
     }
     const double command = commands[i];
     const double offset = r.u - command;
+    r.u_start = r.u;
     const double u_mean = command + offset * r.lag_mean;  // the lag's exact mean over the step
-    r.u = command + offset * r.lag_decay;
+    // The lag never reaches its command exactly (the offset decays for thousands of steps, down to
+    // denormals): within kSettledCommand of it, the motor is there (thrust off by at most that
+    // fraction of full thrust), so a vehicle whose motors have stopped settles and may sleep.
+    const double next_offset = offset * r.lag_decay;
+    r.u = std::abs(next_offset) < kSettledCommand ? command : command + next_offset;
     const double scale = rho * u_mean;
     force_B += scale * r.force_per_density_B;
     torque_B += scale * r.torque_per_density_B;
@@ -169,6 +184,24 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
   wrench.force_B = force_B;
   wrench.torque_B = torque_B;
   return wrench;
+}
+
+bool Multirotor::AreActuatorsSettled() const {
+  // Every rotor began the last step at the command it has now and every tilt is at its target:
+  // that step's offsets were zero, so another step at its length and density gives its wrench
+  // again and moves nothing. A command changed since shows as a rotor that began elsewhere.
+  if (tilt_moved_) return false;
+  for (std::size_t i = 0; i < rotors_.size(); ++i) {
+    if (rotors_[i].u_start != commands_[i]) return false;
+  }
+  if (commands_.size() == rotors_.size()) return true;  // no tilt actuators
+  for (const Rotor& r : rotors_) {
+    if (r.tilt_channel >= 0 &&
+        commands_[static_cast<std::size_t>(r.tilt_channel)] * r.max_tilt_rad != r.tilt_rad) {
+      return false;
+    }
+  }
+  return true;
 }
 
 double Multirotor::CalcMaxThrust_N(int i, double air_density_kg_m3) const {
