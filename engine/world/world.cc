@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -170,10 +171,10 @@ void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
     ParallelFor(pool, slots_.size(), [&](std::size_t i) {
       Slot& slot = slots_[i];
       slot.p_start_W = slot.vehicle->state().p_W;
-      StepSlot(slot, i, now_ns, dt_s);
       // Here, on the thread that stepped the vehicle, not in the serial pass after: there each
-      // vehicle would be read from the other core's cache.
-      swept_bounds_[i] = CalcSweptBounds(slot);
+      // vehicle would be read from the other core's cache. A vehicle that stays asleep keeps
+      // its bounds (its state, so its start and end, are those of the last tick).
+      if (StepSlot(slot, i, now_ns, dt_s)) swept_bounds_[i] = CalcSweptBounds(slot);
     });
   }
   if (!collision_listeners_.empty()) ReportEvents();
@@ -250,11 +251,12 @@ void World::Fail(const Slot& slot, TimeNs now_ns, const std::string& cause) cons
   throw SimulationError(out.str());
 }
 
-void World::StepSlot(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s) {
-  if (slot.asleep && StaysAsleep(slot)) return;
+bool World::StepSlot(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s) {
+  if (slot.asleep && StaysAsleep(slot)) return false;
   // A held vehicle's state may be set by hand between steps; any other may move now.
   ++slot.motion_serial;
   if (!slot.held) StepVehicle(slot, index, now_ns, dt_s);
+  return true;
 }
 
 void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s) {
@@ -335,13 +337,15 @@ void World::StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_
 }
 
 bool World::IsRestState(const Slot& slot) const {
+  // Bitwise (memcmp of each vector): stricter than == only for -0.0 against 0.0, which counts as a
+  // change and wakes the body; a sleeping body's state is finite.
   const RigidBodyState& state = slot.vehicle->state();
   const RigidBodyState& rest = slot.rest_state;
-  for (int k = 0; k < 3; ++k) {
-    if (state.p_W[k] != rest.p_W[k] || state.v_W[k] != rest.v_W[k] || state.w_B[k] != rest.w_B[k])
-      return false;
-  }
-  return state.q_WB.coeffs() == rest.q_WB.coeffs();
+  return std::memcmp(state.p_W.data(), rest.p_W.data(), sizeof(Vec3)) == 0 &&
+         std::memcmp(state.v_W.data(), rest.v_W.data(), sizeof(Vec3)) == 0 &&
+         std::memcmp(state.w_B.data(), rest.w_B.data(), sizeof(Vec3)) == 0 &&
+         std::memcmp(state.q_WB.coeffs().data(), rest.q_WB.coeffs().data(), 4 * sizeof(double)) ==
+             0;
 }
 
 bool World::StaysAsleep(const Slot& slot) const {

@@ -222,8 +222,9 @@ class World {
     std::size_t a, b;          // vehicle indices, a < b
     std::size_t first, count;  // range in vehicle_contacts_
   };
-  // Steps one vehicle, unless it is held or surely stays asleep (StaysAsleep).
-  void StepSlot(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
+  // Steps one vehicle, unless it is held or surely stays asleep (StaysAsleep: then it returns
+  // false and nothing of the vehicle changed).
+  bool StepSlot(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
   void StepVehicle(Slot& slot, std::size_t index, TimeNs now_ns, double dt_s);
   void SetSleepDelay(double dt_s);
   void ReportEvents();  // the vehicles' new static contacts, to the listeners

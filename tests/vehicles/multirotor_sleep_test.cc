@@ -99,18 +99,20 @@ TEST_P(MultirotorSleepTest, SkippingSettledActuatorsChangesNothing) {
   SleepRun skip = MakeRun(GetParam(), true);
   SleepRun step = MakeRun(GetParam(), false);
   int asleep_ticks = 0, woken_by_wind = 0;
-  for (int tick = 0; tick < 9000; ++tick) {
-    // WHEN both get the same commands and wind over 9 s: asleep in gusts from 0.5 s, motors (and
+  bool asleep_at_climb = false;
+  for (int tick = 0; tick < 10000; ++tick) {
+    // WHEN both get the same commands and wind over 10 s: asleep in gusts from 0.5 s, motors (and
     // tilts) at idle from 2 s, off again from 2.5 s (asleep again at 3 s, the motors run down), a
-    // 12 m/s wind from 5 s (it wakes and slides), calm and a climb to 2 m from 6.5 s
+    // 12 m/s wind from 5 s (it wakes and slides), calm from 6 s (asleep again), and a climb to 2 m
+    // from 7.5 s, commanded while it sleeps
     for (SleepRun* run : {&skip, &step}) {
       engine::Vehicle& v = *run->vehicle;
       engine::Wind& wind = run->sim->world().environment().wind();
       if (tick == 2000) v.SetCommand(Motors(v, 0.15, 0.5));
       if (tick == 2500) v.SetCommand(Motors(v, 0.0, 0.0));
       if (tick == 5000) wind.set_mean_ned_m_s(Vec3(12.0, 0.0, 0.0));
-      if (tick == 6500) {
-        wind.set_mean_ned_m_s(Vec3::Zero());
+      if (tick == 6000) wind.set_mean_ned_m_s(Vec3::Zero());
+      if (tick == 7500) {
         VehicleCommand climb;
         climb.mode = CommandMode::kPosition;
         climb.position_W = Vec3(0.0, 0.0, -2.0);
@@ -123,15 +125,17 @@ TEST_P(MultirotorSleepTest, SkippingSettledActuatorsChangesNothing) {
     ASSERT_EQ(asleep, step.sim->world().asleep(0)) << "tick " << tick;
     ASSERT_TRUE(SameBits(skip.vehicle->state(), step.vehicle->state())) << "tick " << tick;
     asleep_ticks += asleep ? 1 : 0;
-    if (tick > 5000 && tick < 6500 && !asleep) ++woken_by_wind;
+    if (tick > 5000 && tick < 6000 && !asleep) ++woken_by_wind;
+    if (tick == 7499) asleep_at_climb = asleep;
   }
-  // AND the run was a real test: it slept for seconds, the wind woke it, it flew, and the
-  // actuators were skipped on most of the ticks asleep
-  EXPECT_GT(asleep_ticks, 3000) << asleep_ticks;
+  // AND the run was a real test: it slept for seconds, the wind woke it, the climb came while it
+  // slept and it flew, and the actuators were skipped on most of the ticks asleep
+  EXPECT_GT(asleep_ticks, 4000) << asleep_ticks;
   EXPECT_GT(woken_by_wind, 0);
+  EXPECT_TRUE(asleep_at_climb);
   EXPECT_LT(skip.vehicle->state().p_W.z(), -1.5);
-  EXPECT_EQ(step.vehicle->updates(), 9000);
-  EXPECT_LT(skip.vehicle->updates(), 9000 - asleep_ticks * 9 / 10);
+  EXPECT_EQ(step.vehicle->updates(), 10000);
+  EXPECT_LT(skip.vehicle->updates(), 10000 - asleep_ticks * 9 / 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, MultirotorSleepTest, ::testing::Values("quad_x", "tilt_rotor"));

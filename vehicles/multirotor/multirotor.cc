@@ -86,7 +86,10 @@ void Multirotor::UpdateControl(const engine::ControlContext& context) {
   const std::span<double> motors(control_u_.data(), rotors_.size());
   controller_->Update(context.dt_s, state, context.gravity_m_s2,
                       context.air_density_kg_m3 / kReferenceDensity_kg_m3, motors);
-  std::copy(motors.begin(), motors.end(), commands_.begin());
+  for (std::size_t i = 0; i < motors.size(); ++i) {
+    if (motors[i] != commands_[i]) settled_ = false;  // as SetActuatorCommands
+    commands_[i] = motors[i];
+  }
 }
 
 void Multirotor::CheckCommands(std::span<const double> commands) const {
@@ -105,12 +108,16 @@ void Multirotor::CheckCommands(std::span<const double> commands) const {
 
 void Multirotor::SetActuatorCommands(std::span<const double> commands) {
   CheckCommands(commands);
-  for (std::size_t i = 0; i < commands.size(); ++i)
-    commands_[i] = std::clamp(commands[i], 0.0, 1.0);
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    const double u = std::clamp(commands[i], 0.0, 1.0);
+    if (u != commands_[i]) settled_ = false;
+    commands_[i] = u;
+  }
 }
 
 void Multirotor::ResetActuators(std::span<const double> commands) {
   SetActuatorCommands(commands);
+  settled_ = false;  // the rotors jump: the next step is not the last one again
   for (std::size_t i = 0; i < rotors_.size(); ++i) {
     Rotor& r = rotors_[i];
     r.u = commands_[i];
@@ -155,7 +162,11 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
   Vec3 force_B = Vec3::Zero(), torque_B = Vec3::Zero();
   const double* commands = commands_.data();
   const std::size_t count = rotors_.size();
-  tilt_moved_ = false;
+  bool tilt_moved = false;
+  // Settled: every rotor began this step at its command and no tilt moved, so the next step at
+  // this length and density gives this wrench again (AreActuatorsSettled). A command that changes
+  // clears it (SetActuatorCommands).
+  bool settled = true;
   for (std::size_t i = 0; i < count; ++i) {
     Rotor& r = rotors_[i];
     if (r.tilt_channel >= 0) {
@@ -164,12 +175,12 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
       const double step = std::clamp(target - r.tilt_rad, -limit, limit);
       if (step != 0.0) {
         ApplyTilt(r, r.tilt_rad + step);
-        tilt_moved_ = true;
+        tilt_moved = true;
       }
     }
     const double command = commands[i];
     const double offset = r.u - command;
-    r.u_start = r.u;
+    settled &= offset == 0.0;
     const double u_mean = command + offset * r.lag_mean;  // the lag's exact mean over the step
     // The lag never reaches its command exactly (the offset decays for thousands of steps, down to
     // denormals): within kSettledCommand of it, the motor is there (thrust off by at most that
@@ -180,28 +191,11 @@ engine::Wrench Multirotor::UpdateActuators(const engine::ActuatorContext& contex
     force_B += scale * r.force_per_density_B;
     torque_B += scale * r.torque_per_density_B;
   }
+  settled_ = settled && !tilt_moved;
   engine::Wrench wrench;
   wrench.force_B = force_B;
   wrench.torque_B = torque_B;
   return wrench;
-}
-
-bool Multirotor::AreActuatorsSettled() const {
-  // Every rotor began the last step at the command it has now and every tilt is at its target:
-  // that step's offsets were zero, so another step at its length and density gives its wrench
-  // again and moves nothing. A command changed since shows as a rotor that began elsewhere.
-  if (tilt_moved_) return false;
-  for (std::size_t i = 0; i < rotors_.size(); ++i) {
-    if (rotors_[i].u_start != commands_[i]) return false;
-  }
-  if (commands_.size() == rotors_.size()) return true;  // no tilt actuators
-  for (const Rotor& r : rotors_) {
-    if (r.tilt_channel >= 0 &&
-        commands_[static_cast<std::size_t>(r.tilt_channel)] * r.max_tilt_rad != r.tilt_rad) {
-      return false;
-    }
-  }
-  return true;
 }
 
 double Multirotor::CalcMaxThrust_N(int i, double air_density_kg_m3) const {

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <array>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -40,7 +39,7 @@ class Multirotor final : public engine::Vehicle {
   void SetActuatorCommands(std::span<const double> commands) override;
   std::span<const double> actuator_commands() const override { return commands_; }
   engine::Wrench UpdateActuators(const engine::ActuatorContext& context) override;
-  bool AreActuatorsSettled() const override;
+  bool AreActuatorsSettled() const override { return settled_; }
   bool has_active_controller() const override { return controller_active_; }
 
   /// Commands through the built-in flight controller (config().controller): any mode but kMotors
@@ -98,11 +97,10 @@ class Multirotor final : public engine::Vehicle {
     double thrust_per_density;         // C_T n^2 D^4
     double torque_per_density_signed;  // -(+1 CCW, -1 CW) C_pow n^2 D^5 / (2 pi)
     double time_constant_s;
-    double u = 0.0;                                             // lagged command
-    double u_start = std::numeric_limits<double>::quiet_NaN();  // u as the last step began
-    double lag_decay = 0.0;                                     // exp(-dt / T) for the cached dt
-    double lag_mean = 0.0;  // (T / dt)(1 - exp(-dt / T)): mean of the lag's response
-    int tilt_channel = -1;  // index into commands_, or -1
+    double u = 0.0;          // lagged command
+    double lag_decay = 0.0;  // exp(-dt / T) for the cached dt
+    double lag_mean = 0.0;   // (T / dt)(1 - exp(-dt / T)): mean of the lag's response
+    int tilt_channel = -1;   // index into commands_, or -1
     double tilt_rad = 0.0, max_tilt_rad = 0.0, tilt_rate_rad_s = 0.0;
   };
   void CheckCommands(std::span<const double> commands) const;
@@ -117,7 +115,7 @@ class Multirotor final : public engine::Vehicle {
   std::vector<Rotor> rotors_;
   std::vector<double> commands_;
   double cached_dt_s_ = -1.0;
-  bool tilt_moved_ = false;                     // a tilt moved in the last UpdateActuators
+  bool settled_ = false;  // AreActuatorsSettled: set by UpdateActuators, cleared by commands
   std::optional<FlightController> controller_;  // built once the rotors are
   bool controller_active_ = false;
   std::unique_ptr<StateSource> state_source_ = std::make_unique<TruthStateSource>();
