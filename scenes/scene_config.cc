@@ -1,5 +1,6 @@
 #include "scenes/scene_config.h"
 
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -19,6 +20,10 @@ using engine::RequireWithinWorld;
 using engine::ValidateNested;
 
 namespace {
+
+// ln(1 / 0.02): the optical depth at which a black object's contrast against the horizon falls to
+// the 2% threshold of the meteorological visibility (Koschmieder 1924; WMO-No. 8).
+constexpr double kKoschmiederContrast = 3.912;
 
 constexpr engine::EnumName<RoofShape> kRoofNames[] = {
     {RoofShape::kFlat, "flat"}, {RoofShape::kGabled, "gabled"}, {RoofShape::kPyramid, "pyramid"}};
@@ -91,7 +96,19 @@ void LightingConfig::Validate() const {
   RequireColor("sky_horizon_color", sky_horizon_color);
   RequireInRange("ambient", ambient, 0.0, 1.0);
   RequireNonNegative("fog_distance_m", fog_distance_m);
+  if (visibility_m) {
+    Require(std::isfinite(*visibility_m) && *visibility_m > 0.0, "visibility_m",
+            "must be > 0 (got " + engine::FormatNumber(*visibility_m) + ")");
+    Require(fog_distance_m == 0.0, "visibility_m",
+            "give visibility_m or fog_distance_m, not both (visibility_m = 3.912 fog_distance_m)");
+  }
+  RequireNonNegative("fog_height_m", fog_height_m);
+  RequireInRange("turbidity", turbidity, 2.0, 10.0);
   ValidateNested(shadows, "shadows");
+}
+
+double LightingConfig::CalcFogDistance_m() const {
+  return visibility_m ? *visibility_m / kKoschmiederContrast : fog_distance_m;
 }
 
 void SceneSettingsConfig::Validate() const {

@@ -75,7 +75,17 @@ struct LightingConfig {
   Eigen::Vector3d sky_horizon_color = Eigen::Vector3d(0.75, 0.85, 0.95);
   double ambient = 0.35;        ///< sky light fraction [0, 1]
   double fog_distance_m = 0.0;  ///< distance at which fog reaches 63% (m), 0 = no fog
+  std::optional<double>
+      visibility_m;           ///< meteorological visibility (m): fog_distance_m = V / 3.912
+  double fog_height_m = 0.0;  ///< scale height of the fog's density (m), 0 = uniform
+  engine::SkyModel sky = engine::SkyModel::kGradient;
+  double turbidity = 3.0;  ///< the clear sky's haze, 2 to 10
   ShadowConfig shadows;
+
+  /// The fog distance these settings give: visibility_m / 3.912 when it is set (Koschmieder's law
+  /// for a 2% contrast threshold: a black object at the visibility has 2% contrast), else
+  /// fog_distance_m.
+  double CalcFogDistance_m() const;
 
   template <class V>
   void Visit(V& v) {
@@ -92,6 +102,16 @@ struct LightingConfig {
     v.Field("sky_horizon_color", sky_horizon_color, "sky colour at the horizon, linear RGB 0..1");
     v.Field("ambient", ambient, "sky (ambient) light fraction, 0..1");
     v.Field("fog_distance_m", fog_distance_m, "distance at which fog reaches 63% (m); 0 = no fog");
+    v.Field("visibility_m", visibility_m,
+            "meteorological visibility at the ground (m): fog whose black objects keep 2% contrast "
+            "at this distance (fog_distance_m = visibility_m / 3.912); not with fog_distance_m");
+    v.Field("fog_height_m", fog_height_m,
+            "scale height of the fog (m): its density falls as exp(-height / fog_height_m) above "
+            "the world's z = 0, and the sky above the horizon shows through; 0 = uniform fog");
+    v.Field("sky", sky,
+            "gradient (the colours above), clear (Preetham's daylight sky and the sun through the "
+            "atmosphere) or overcast (CIE overcast sky, no direct sun)");
+    v.Field("turbidity", turbidity, "haze of the clear sky, 2 (very clear) to 10 (hazy)");
     v.Field("shadows", shadows, "the sun's shadows (docs/rendering.md, \"Shadows\")");
   }
   /// Throws InvalidField on a value out of range, or on time_of_day_h given with a sun angle (the

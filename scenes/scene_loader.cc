@@ -145,7 +145,10 @@ class SceneAssembler {
     out.sky_zenith_rgb = c.sky_zenith_color.cast<float>();
     out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
     out.ambient = static_cast<float>(c.ambient);
-    out.fog_distance_m = static_cast<float>(c.fog_distance_m);
+    out.fog_distance_m = static_cast<float>(c.CalcFogDistance_m());
+    out.fog_height_m = static_cast<float>(c.fog_height_m);
+    out.sky = c.sky;
+    out.turbidity = static_cast<float>(c.turbidity);
     out.shadows.enabled = c.shadows.enabled;
     out.shadows.distance_m = static_cast<float>(c.shadows.distance_m);
     out.shadows.map_size_px = c.shadows.map_size_px;

@@ -1,6 +1,7 @@
 // One geometry pass writing every requested output into its own render target (OUT_* defines select them).
 // RGB: Lambertian sun shaded by the sun's shadow map, hemispheric sky light with a cheap contact-darkening
-// term, optional texture and distance fog; written linear into an sRGB8 target, which encodes to sRGB.
+// term, optional texture and fog (uniform or thinning with height); written linear into an sRGB8 target, which
+// encodes to sRGB.
 // Depths: written from the interpolated camera-frame position, not the non-linear depth buffer.
 precision highp float;
 precision highp int;
@@ -39,7 +40,8 @@ uniform vec3 u_sun_rgb;
 uniform vec3 u_sky_zenith_rgb;
 uniform vec3 u_sky_horizon_rgb;
 uniform float u_ambient;         // fraction of the light that comes from the sky
-uniform float u_fog_distance_m;  // 0 = no fog
+uniform float u_fog_distance_m;  // 0 = no fog; else 1 / the extinction at the world's z = 0
+uniform float u_fog_height_m;    // scale height of the fog's density; 0 = the same at every height
 uniform bool u_has_shadow;       // the shadow map below holds this frame's casters
 uniform highp sampler2DShadow u_shadow_map;
 uniform mat4 u_shadow_from_C;    // camera frame -> the map's clip space
@@ -83,8 +85,16 @@ void main() {
   vec3 light = (1.0 - u_ambient) * 1.6 * u_sun_rgb * sun + u_ambient * 1.4 * sky_light * occlusion;
   vec3 rgb = albedo * light;
   if (u_fog_distance_m > 0.0) {
-    float fog = 1.0 - exp(-length(v_p_C) / u_fog_distance_m);
-    rgb = mix(rgb, u_sky_horizon_rgb, fog);
+    // Optical depth from the camera to the surface: d / fog distance, times the mean of the density
+    // exp(-h / H) along the segment in height fog (from h_c to h_c + dh: exp(-h_c / H) (1 - e^-x) / x
+    // with x = dh / H, its series near x = 0). The in-scattered light is the horizon's colour.
+    float tau = length(v_p_C) / u_fog_distance_m;
+    if (u_fog_height_m > 0.0) {
+      float x = dot(v_p_C, u_up_C) / u_fog_height_m;
+      float mean = abs(x) > 1e-3 ? (1.0 - exp(-x)) / x : 1.0 - 0.5 * x;
+      tau *= exp(-u_camera_height_m / u_fog_height_m) * mean;
+    }
+    rgb = mix(rgb, u_sky_horizon_rgb, 1.0 - exp(-tau));
   }
   o_rgb = vec4(rgb, 1.0);
 #endif

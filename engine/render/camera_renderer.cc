@@ -9,6 +9,7 @@
 #include "engine/core/config.h"
 #include "engine/core/error.h"
 #include "engine/core/limits.h"
+#include "engine/render/daylight.h"
 #include "engine/render/shader_sources.h"
 
 namespace airis::engine {
@@ -290,7 +291,8 @@ void CameraRenderer::DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& 
                                 const DetailLimit& detail) {
   shadow_.reset();
   last_shadow_triangles_ = 0;
-  if (!outputs_.rgb || !light.shadows.enabled) return;
+  // Under an overcast sky there is no direct sun to cast them.
+  if (!outputs_.rgb || !light.shadows.enabled || light.sky == SkyModel::kOvercast) return;
   shadow_ = FitShadowFrame(T_WC, render_intrinsics_, light.sun_direction_W,
                            light.shadows.distance_m, light.shadows.map_size_px);
   if (!shadow_) return;
@@ -318,6 +320,26 @@ void CameraRenderer::SetShadowUniforms(const std::optional<ShadowFrame>& shadow,
   glActiveTexture(GL_TEXTURE0);
 }
 
+void CameraRenderer::SetSkyUniforms(const SkyShading& sky, const SceneLighting& light,
+                                    float camera_height_m) {
+  glUniform3fv(sky_program_.Uniform("u_sun_rgb"), 1, sky.sun_rgb.data());
+  glUniform3fv(sky_program_.Uniform("u_sky_zenith_rgb"), 1, sky.zenith_rgb.data());
+  glUniform3fv(sky_program_.Uniform("u_sky_horizon_rgb"), 1, sky.horizon_rgb.data());
+  glUniform1i(sky_program_.Uniform("u_sky_model"), static_cast<GLint>(sky.model));
+  if (sky.model == SkyModel::kClear) {
+    float perez[15];
+    for (int k = 0; k < 5; ++k) {
+      for (int c = 0; c < 3; ++c) perez[3 * k + c] = sky.perez[k][c];
+    }
+    glUniform3fv(sky_program_.Uniform("u_perez"), 5, perez);
+    glUniform3fv(sky_program_.Uniform("u_zenith_over_perez"), 1, sky.zenith_over_perez.data());
+  }
+  glUniform1f(sky_program_.Uniform("u_overcast_zenith"), sky.overcast_zenith);
+  glUniform1f(sky_program_.Uniform("u_fog_distance_m"), light.fog_distance_m);
+  glUniform1f(sky_program_.Uniform("u_fog_height_m"), light.fog_height_m);
+  glUniform1f(sky_program_.Uniform("u_camera_height_m"), camera_height_m);
+}
+
 void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
                                const BodyPoses& bodies) {
   const CameraIntrinsics& k = render_intrinsics_;
@@ -325,6 +347,8 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   const SceneLighting& light = lighting_ ? *lighting_ : scene.lighting();
   const Eigen::Vector3f to_sun_C = (R_CW * -light.sun_direction_W.normalized()).cast<float>();
   const Eigen::Vector3f up_C = (R_CW * Eigen::Vector3d(0.0, 0.0, -1.0)).cast<float>();
+  const SkyShading sky = CalcSkyShading(light);
+  const auto camera_height_m = static_cast<float>(-T_WC.translation().z());
 
   const DetailLimit detail{std::max(k.fx_px, k.fy_px), detail_tolerance_px_};
   DrawShadow(scene, T_WC, bodies, light, detail);
@@ -376,13 +400,13 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   glUniformMatrix4fv(scene_program_.Uniform("u_projection"), 1, GL_FALSE, P.data());
   glUniform3fv(scene_program_.Uniform("u_to_sun_C"), 1, to_sun_C.data());
   glUniform3fv(scene_program_.Uniform("u_up_C"), 1, up_C.data());
-  glUniform1f(scene_program_.Uniform("u_camera_height_m"),
-              static_cast<float>(-T_WC.translation().z()));
-  glUniform3fv(scene_program_.Uniform("u_sun_rgb"), 1, light.sun_color_rgb.data());
-  glUniform3fv(scene_program_.Uniform("u_sky_zenith_rgb"), 1, light.sky_zenith_rgb.data());
-  glUniform3fv(scene_program_.Uniform("u_sky_horizon_rgb"), 1, light.sky_horizon_rgb.data());
-  glUniform1f(scene_program_.Uniform("u_ambient"), light.ambient);
+  glUniform1f(scene_program_.Uniform("u_camera_height_m"), camera_height_m);
+  glUniform3fv(scene_program_.Uniform("u_sun_rgb"), 1, sky.sun_rgb.data());
+  glUniform3fv(scene_program_.Uniform("u_sky_zenith_rgb"), 1, sky.zenith_rgb.data());
+  glUniform3fv(scene_program_.Uniform("u_sky_horizon_rgb"), 1, sky.horizon_rgb.data());
+  glUniform1f(scene_program_.Uniform("u_ambient"), sky.ambient);
   glUniform1f(scene_program_.Uniform("u_fog_distance_m"), light.fog_distance_m);
+  glUniform1f(scene_program_.Uniform("u_fog_height_m"), light.fog_height_m);
   SetShadowUniforms(shadow_, light);
   const GLint has_texture = scene_program_.Uniform("u_has_texture");
   for (const VisibleSet::Draw& d : visible_.draws) {
@@ -409,9 +433,7 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
                 static_cast<float>(k.cy_px));
     glUniform3fv(sky_program_.Uniform("u_to_sun_C"), 1, to_sun_C.data());
     glUniform3fv(sky_program_.Uniform("u_up_C"), 1, up_C.data());
-    glUniform3fv(sky_program_.Uniform("u_sun_rgb"), 1, light.sun_color_rgb.data());
-    glUniform3fv(sky_program_.Uniform("u_sky_zenith_rgb"), 1, light.sky_zenith_rgb.data());
-    glUniform3fv(sky_program_.Uniform("u_sky_horizon_rgb"), 1, light.sky_horizon_rgb.data());
+    SetSkyUniforms(sky, light, camera_height_m);
     glBindVertexArray(empty_vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);

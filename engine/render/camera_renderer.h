@@ -18,6 +18,8 @@
 
 namespace airis::engine {
 
+struct SkyShading;
+
 /// Renders one camera's images of a GpuScene: frustum culling, one instanced geometry pass into
 /// multiple render targets (RGB, planar depth, perspective depth, class id, instance id, normals),
 /// the sky, the lens distortion remap when the camera has one, and readback.
@@ -113,6 +115,8 @@ class CameraRenderer {
   void DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies,
                   const SceneLighting& light, const DetailLimit& detail);
   void SetShadowUniforms(const std::optional<ShadowFrame>& shadow, const SceneLighting& light);
+  // The sky program's uniforms for this frame (sky_program_ in use).
+  void SetSkyUniforms(const SkyShading& sky, const SceneLighting& light, float camera_height_m);
   void PrepareFrame(CameraFrame& out, TimeNs time_ns, const Eigen::Isometry3d& T_WC) const;
   void DeliverFromBytes(int target, const void* bytes, CameraFrame& out) const;
   void* FrameBuffer(int target, CameraFrame& out) const;

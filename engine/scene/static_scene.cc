@@ -1,5 +1,7 @@
 #include "engine/scene/static_scene.h"
 
+#include <array>
+
 namespace airis::engine {
 
 namespace {
@@ -16,6 +18,15 @@ constexpr EnumName<CollisionShape> kCollisionShapeNames[] = {
 
 std::span<const EnumName<Primitive>> EnumNames(Primitive) { return kPrimitiveNames; }
 std::span<const EnumName<CollisionShape>> EnumNames(CollisionShape) { return kCollisionShapeNames; }
+
+std::span<const EnumName<SkyModel>> EnumNames(SkyModel) {
+  static constexpr std::array<EnumName<SkyModel>, 3> kNames{{
+      {SkyModel::kGradient, "gradient"},
+      {SkyModel::kClear, "clear"},
+      {SkyModel::kOvercast, "overcast"},
+  }};
+  return kNames;
+}
 
 const SemanticClass* StaticScene::FindClass(std::uint8_t id) const {
   for (const auto& c : classes) {

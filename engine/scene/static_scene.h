@@ -128,6 +128,15 @@ struct ShadowSettings {
   int map_size_px = 2048;     ///< the shadow map's side
 };
 
+/// How the sky is drawn and lights the scene (docs/rendering.md, "Sky and weather").
+enum class SkyModel {
+  kGradient,  ///< the configured zenith and horizon colours, the configured sun
+  kClear,     ///< Preetham's analytic clear sky and the sun through the atmosphere, by turbidity
+  kOvercast,  ///< the CIE standard overcast sky, no direct sun
+};
+/// Spellings of SkyModel in files: gradient, clear, overcast.
+std::span<const EnumName<SkyModel>> EnumNames(SkyModel);
+
 /// Lighting and sky of a scene, for the renderer.
 struct SceneLighting {
   Vec3 sun_direction_W =
@@ -138,6 +147,11 @@ struct SceneLighting {
   Eigen::Vector3f sky_horizon_rgb = Eigen::Vector3f(0.75f, 0.85f, 0.95f);
   float ambient = 0.35f;        ///< sky light fraction
   float fog_distance_m = 0.0f;  ///< distance at which fog reaches 63%, 0 = no fog
+  /// Scale height of the fog's density (m): the extinction 1 / fog_distance_m at the world's z = 0
+  /// falls as exp(-height / fog_height_m); 0 = the same at every height.
+  float fog_height_m = 0.0f;
+  SkyModel sky = SkyModel::kGradient;
+  float turbidity = 3.0f;  ///< the clear sky's haze, 2 (very clear) to 10 (hazy)
   ShadowSettings shadows;
 };
 

@@ -1,0 +1,199 @@
+// The sky and the fog as rendered (shaders/sky.frag, shaders/scene.frag) against the closed forms:
+// every sky pixel of a clear sky is Preetham's value for its ray (daylight::ClearSky on the CPU),
+// an overcast sky is (1 + 2 sin(elevation)) / 3 of its zenith, a black wall in fog keeps the
+// contrast exp(-3.912 d / V) of Koschmieder's law (2% at the visibility), thinned by exp(-h / H) in
+// height fog; and none of it touches depth or labels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "engine/render/camera_renderer.h"
+#include "engine/render/daylight.h"
+#include "engine/render/gpu_scene.h"
+#include "tests/render/render_test_util.h"
+
+namespace airis::engine {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+// One level of an 8-bit sRGB channel plus the GPU's single precision.
+constexpr int kLevels = 1;
+
+// Sunlight along -to_sun for a sun at `elevation_rad`, `azimuth_rad` clockwise from north.
+Eigen::Vector3d SunRays_W(double azimuth_rad, double elevation_rad) {
+  return -Eigen::Vector3d(std::cos(elevation_rad) * std::cos(azimuth_rad),
+                          std::cos(elevation_rad) * std::sin(azimuth_rad),
+                          -std::sin(elevation_rad));
+}
+
+double LinearToSrgb(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+}
+
+double SrgbToLinear(int level) {
+  const double s = level / 255.0;
+  return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
+}
+
+CameraFrame Render(const StaticScene& scene, const SceneLighting& light,
+                   const CameraIntrinsics& camera, const Eigen::Isometry3d& T_WC) {
+  EglContext& context = testing::SharedContext();
+  GpuScene gpu(scene);
+  gpu.set_lighting(light);
+  RenderOutputs outputs;
+  outputs.depth_planar = true;
+  outputs.segmentation = true;
+  CameraRenderer renderer(context, camera, outputs);
+  CameraFrame frame;
+  renderer.Render(gpu, T_WC, 0, frame);
+  return frame;
+}
+
+// The world direction of pixel (u, v)'s ray.
+Eigen::Vector3d Ray_W(const CameraIntrinsics& k, const Eigen::Isometry3d& T_WC, int u, int v) {
+  const Eigen::Vector3d ray_C((u - k.cx_px) / k.fx_px, (v - k.cy_px) / k.fy_px, 1.0);
+  return (T_WC.linear() * ray_C).normalized();
+}
+
+const CameraIntrinsics kCamera = CameraIntrinsics::FromHorizontalFov(160, 120, 90.0, 0.1, 5000.0);
+
+TEST(SkyRenderTest, ClearSkyPixelsArePreethamsSky) {
+  // GIVEN an empty world under a clear sky (turbidity 3), the sun 30 deg up in the north, and a
+  // camera looking south, 30 deg up (the sun's glow behind it)
+  StaticScene scene = testing::MakeEmptyScene();
+  SceneLighting light;
+  light.sky = SkyModel::kClear;
+  light.turbidity = 3.0f;
+  light.sun_direction_W = SunRays_W(0.0, 30.0 * kDeg);
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, M_PI, 30.0 * kDeg);
+  const CameraFrame frame = Render(scene, light, kCamera, T_WC);
+  // THEN every pixel above the horizon is the model's radiance for its ray, in sRGB
+  const daylight::ClearSky sky(3.0, 60.0 * kDeg);
+  const Eigen::Vector3d to_sun = -light.sun_direction_W;
+  int compared = 0;
+  for (int v = 0; v < kCamera.height_px; ++v) {
+    for (int u = 0; u < kCamera.width_px; ++u) {
+      const Eigen::Vector3d ray = Ray_W(kCamera, T_WC, u, v);
+      const double elevation = std::asin(-ray.z());
+      if (elevation < 0.02 || ray.dot(to_sun) >= 0.0) continue;
+      const Eigen::Vector3d rgb = sky.CalcDisplayRgb(
+          0.5 * M_PI - elevation, std::acos(std::clamp(ray.dot(to_sun), -1.0, 1.0)));
+      const std::size_t i = 4 * (static_cast<std::size_t>(v) * kCamera.width_px + u);
+      for (int c = 0; c < 3; ++c) {
+        const double want = 255.0 * LinearToSrgb(rgb[c]);
+        ASSERT_NEAR(frame.rgba.pixels[i + c], want, kLevels + 0.5)
+            << "pixel " << u << "," << v << " channel " << c << " elevation " << elevation;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 10000);
+}
+
+TEST(SkyRenderTest, OvercastSkyIsAThirdAsBrightAtTheHorizonAsOverhead) {
+  // GIVEN an overcast sky and a camera looking north 45 deg up (from the horizon to the zenith)
+  StaticScene scene = testing::MakeEmptyScene();
+  SceneLighting light;
+  light.sky = SkyModel::kOvercast;
+  light.sun_direction_W = SunRays_W(1.0, 40.0 * kDeg);
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 45.0 * kDeg);
+  const CameraFrame frame = Render(scene, light, kCamera, T_WC);
+  // THEN each pixel is the zenith's colour times (1 + 2 sin(elevation)) / 3, and there is no sun
+  const SkyShading shading = CalcSkyShading(light);
+  int compared = 0;
+  for (int v = 0; v < kCamera.height_px; v += 3) {
+    for (int u = 0; u < kCamera.width_px; u += 3) {
+      const double elevation = std::asin(-Ray_W(kCamera, T_WC, u, v).z());
+      if (elevation < 0.0) continue;
+      const std::size_t i = 4 * (static_cast<std::size_t>(v) * kCamera.width_px + u);
+      for (int c = 0; c < 3; ++c) {
+        const double want =
+            255.0 * LinearToSrgb(shading.zenith_rgb[c] * (1.0 + 2.0 * std::sin(elevation)) / 3.0);
+        ASSERT_NEAR(frame.rgba.pixels[i + c], want, kLevels + 0.5) << "pixel " << u << "," << v;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
+// The contrast against the fog's colour (1 - surface / fog in linear light, green) of the image
+// centre, a black surface (albedo 0) seen in fog: a wall `distance_m` north of a camera at
+// `height_m` looking north level, or (`down`) the ground `height_m` below a camera looking down.
+double BlackContrast(double distance_m, double height_m, float fog_distance_m, float fog_height_m,
+                     bool down = false) {
+  StaticScene scene = testing::MakeEmptyScene();
+  if (down) {
+    testing::AddBox(scene, {0.0, 0.0, 0.5}, {4000.0, 4000.0, 1.0}, 2, 2, Eigen::Vector3f::Zero());
+  } else {
+    testing::AddBox(scene, {distance_m + 0.5, 0.0, -height_m}, {1.0, 4000.0, 4000.0}, 2, 2,
+                    Eigen::Vector3f::Zero());
+  }
+  SceneLighting light;
+  light.fog_distance_m = fog_distance_m;
+  light.fog_height_m = fog_height_m;
+  const CameraIntrinsics camera = CameraIntrinsics::FromHorizontalFov(33, 33, 10.0, 0.1, 10000.0);
+  const CameraFrame frame = Render(
+      scene, light, camera, testing::LookPose({0.0, 0.0, -height_m}, 0.0, down ? -M_PI / 2 : 0.0));
+  const std::size_t centre = 4 * (16 * 33 + 16);
+  EXPECT_EQ(frame.class_id.pixels[centre / 4], 2);  // the wall, not the sky
+  return 1.0 - SrgbToLinear(frame.rgba.pixels[centre + 1]) / light.sky_horizon_rgb[1];
+}
+
+TEST(SkyRenderTest, FogKeepsKoschmiedersContrast) {
+  // GIVEN uniform fog of visibility V = 400 m (fog distance V / 3.912)
+  const double V = 400.0;
+  const auto D = static_cast<float>(V / 3.912);
+  // THEN a black wall at distance d keeps contrast exp(-3.912 d / V): 2% at the visibility.
+  // Tolerance: one 8-bit level of the wall and of the horizon colour, about 0.005 in contrast.
+  for (double d : {V / 8.0, V / 4.0, V / 2.0, V}) {
+    EXPECT_NEAR(BlackContrast(d, 5.0, D, 0.0f), std::exp(-3.912 * d / V), 0.006) << "d " << d;
+  }
+  // AND in height fog of scale height H = 50 m, at 50 m up the extinction is e^-1 of the ground's.
+  for (double d : {V / 4.0, V}) {
+    EXPECT_NEAR(BlackContrast(d, 50.0, D, 50.0f), std::exp(-3.912 * d / V * std::exp(-1.0)), 0.006)
+        << "d " << d;
+  }
+  // AND looking down from height h onto the ground the optical depth is the integral of the
+  // density over the height, (3.912 / V) H (1 - exp(-h / H))
+  for (double h : {25.0, 100.0, 300.0}) {
+    EXPECT_NEAR(BlackContrast(0.0, h, D, 50.0f, true),
+                std::exp(-3.912 / V * 50.0 * (1.0 - std::exp(-h / 50.0))), 0.006)
+        << "h " << h;
+  }
+}
+
+TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {
+  // GIVEN a ground with boxes, seen in the gradient sky without fog, in a clear sky with height
+  // fog, and overcast with uniform fog
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 2000.0, 1);
+  for (int k = 0; k < 6; ++k) {
+    testing::AddBox(scene, {30.0 + 15.0 * k, -20.0 + 8.0 * k, -4.0}, {6.0, 6.0, 8.0}, 2,
+                    static_cast<std::uint32_t>(10 + k));
+  }
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -12.0}, 0.2, -8.0 * kDeg);
+  SceneLighting plain;
+  plain.sun_direction_W = SunRays_W(2.0, 35.0 * kDeg);
+  SceneLighting clear = plain;
+  clear.sky = SkyModel::kClear;
+  clear.fog_distance_m = 80.0f;
+  clear.fog_height_m = 20.0f;
+  SceneLighting overcast = plain;
+  overcast.sky = SkyModel::kOvercast;
+  overcast.fog_distance_m = 150.0f;
+  const CameraFrame a = Render(scene, plain, kCamera, T_WC);
+  for (const SceneLighting& light : {clear, overcast}) {
+    const CameraFrame b = Render(scene, light, kCamera, T_WC);
+    // THEN depth and labels are the same to the byte, and the colour image is not
+    EXPECT_EQ(a.depth_planar_m.pixels, b.depth_planar_m.pixels);
+    EXPECT_EQ(a.class_id.pixels, b.class_id.pixels);
+    EXPECT_EQ(a.instance_id.pixels, b.instance_id.pixels);
+    EXPECT_NE(a.rgba.pixels, b.rgba.pixels);
+  }
+}
+
+}  // namespace
+}  // namespace airis::engine
