@@ -38,12 +38,17 @@ void DomainRandomizationConfig::Validate() const {
   RequireRange("sun_elevation_deg", sun_elevation_deg, -90.0, 90.0);
   RequireRange("sun_azimuth_deg", sun_azimuth_deg, -360.0, 360.0);
   RequireRange("fog_distance_m", fog_distance_m, 0.0, 1e6);
+  RequireRange("visibility_m", visibility_m, 1e-3, 1e6);
+  Require(!visibility_m || !fog_distance_m, "visibility_m",
+          "give visibility_m or fog_distance_m, not both (visibility_m = 3.912 fog_distance_m)");
+  RequireRange("turbidity", turbidity, 2.0, 10.0);
   RequireRange("exposure_ev", exposure_ev, -20.0, 20.0);
   RequireRange("read_noise_e", read_noise_e, 0.0, 1e4);
 }
 
 bool DomainRandomizationConfig::any() const {
-  return sun_elevation_deg || sun_azimuth_deg || fog_distance_m || exposure_ev || read_noise_e;
+  return sun_elevation_deg || sun_azimuth_deg || fog_distance_m || visibility_m || turbidity ||
+         exposure_ev || read_noise_e;
 }
 
 Eigen::Vector3d CalcSunDirection_W(double azimuth_deg, double elevation_deg) {
@@ -75,6 +80,10 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
         Draw(stream, "sun_azimuth_deg", config.sun_azimuth_deg).value_or(azimuth_deg);
   }
   d.fog_distance_m = Draw(stream, "fog_distance_m", config.fog_distance_m);
+  d.visibility_m = Draw(stream, "visibility_m", config.visibility_m);
+  // Koschmieder's law for the 2% contrast threshold (scenes' lighting.visibility_m likewise).
+  if (d.visibility_m) d.fog_distance_m = *d.visibility_m / 3.912;
+  d.turbidity = Draw(stream, "turbidity", config.turbidity);
   d.exposure_ev = Draw(stream, "exposure_ev", config.exposure_ev);
   d.read_noise_e = Draw(stream, "read_noise_e", config.read_noise_e);
   return d;
@@ -86,6 +95,7 @@ FrameConditions DomainDraw::ToFrameConditions() const {
     c.sun_direction_W = CalcSunDirection_W(*sun_azimuth_deg, *sun_elevation_deg);
   }
   c.fog_distance_m = fog_distance_m;
+  c.turbidity = turbidity;
   c.exposure_ev_offset = exposure_ev.value_or(0.0);
   c.read_noise_e = read_noise_e;
   return c;
@@ -98,6 +108,8 @@ std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) 
     out.push_back("sun_azimuth_deg");
   }
   if (config.fog_distance_m) out.push_back("fog_distance_m");
+  if (config.visibility_m) out.push_back("visibility_m");
+  if (config.turbidity) out.push_back("turbidity");
   if (config.exposure_ev) out.push_back("exposure_ev");
   if (config.read_noise_e) out.push_back("read_noise_e");
   return out;
@@ -110,6 +122,8 @@ std::vector<double> DomainValues(const DomainRandomizationConfig& config, const 
     out.push_back(*draw.sun_azimuth_deg);
   }
   if (config.fog_distance_m) out.push_back(*draw.fog_distance_m);
+  if (config.visibility_m) out.push_back(*draw.visibility_m);
+  if (config.turbidity) out.push_back(*draw.turbidity);
   if (config.exposure_ev) out.push_back(*draw.exposure_ev);
   if (config.read_noise_e) out.push_back(*draw.read_noise_e);
   return out;

@@ -30,6 +30,8 @@ struct DomainRandomizationConfig {
   std::optional<Eigen::Vector2d> sun_elevation_deg;
   std::optional<Eigen::Vector2d> sun_azimuth_deg;
   std::optional<Eigen::Vector2d> fog_distance_m;
+  std::optional<Eigen::Vector2d> visibility_m;
+  std::optional<Eigen::Vector2d> turbidity;
   std::optional<Eigen::Vector2d> exposure_ev;
   std::optional<Eigen::Vector2d> read_noise_e;
 
@@ -42,12 +44,18 @@ struct DomainRandomizationConfig {
             "[lo, hi]: direction toward the sun, clockwise from north (deg, -360 to 360)");
     v.Field("fog_distance_m", fog_distance_m,
             "[lo, hi]: distance at which fog reaches 63% (m; 0 = no fog)");
+    v.Field("visibility_m", visibility_m,
+            "[lo, hi]: meteorological visibility of the fog (m; fog distance = visibility / "
+            "3.912); not with fog_distance_m");
+    v.Field("turbidity", turbidity,
+            "[lo, hi]: haze of a clear sky (2 to 10; scene.lighting.sky: clear)");
     v.Field("exposure_ev", exposure_ev,
             "[lo, hi]: added to every camera's exposure (EV stops; docs/rendering.md)");
     v.Field("read_noise_e", read_noise_e,
             "[lo, hi]: every camera's read noise (electrons); turns its sensor noise on");
   }
-  /// Throws InvalidField naming the range (lo > hi, or outside its bounds).
+  /// Throws InvalidField naming the range (lo > hi, or outside its bounds, or visibility_m with
+  /// fog_distance_m).
   void Validate() const;
   /// True when some range is given.
   bool any() const;
@@ -57,7 +65,9 @@ struct DomainRandomizationConfig {
 struct DomainDraw {
   std::optional<double> sun_elevation_deg;  ///< set when either sun angle is randomized
   std::optional<double> sun_azimuth_deg;    ///< set when either sun angle is randomized
-  std::optional<double> fog_distance_m;
+  std::optional<double> fog_distance_m;     ///< drawn, or from the drawn visibility
+  std::optional<double> visibility_m;
+  std::optional<double> turbidity;
   std::optional<double> exposure_ev;
   std::optional<double> read_noise_e;
 

@@ -78,6 +78,7 @@ struct FrameConditions {
   /// Unit vector along which sunlight travels, world NED (as SceneLighting::sun_direction_W).
   std::optional<Eigen::Vector3d> sun_direction_W;
   std::optional<double> fog_distance_m;  ///< distance at which fog reaches 63% (m); 0 = no fog
+  std::optional<double> turbidity;       ///< a clear sky's haze (SceneLighting::turbidity)
   double exposure_ev_offset = 0.0;       ///< added to the camera's exposure (EV stops)
   std::optional<double> read_noise_e;    ///< replaces the camera's read noise, turns noise on
 };

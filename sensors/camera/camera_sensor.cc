@@ -106,7 +106,7 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
 
 void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameConditions& conditions,
                       engine::CameraRenderer& renderer) {
-  if (!conditions.sun_direction_W && !conditions.fog_distance_m) {
+  if (!conditions.sun_direction_W && !conditions.fog_distance_m && !conditions.turbidity) {
     renderer.set_lighting(std::nullopt);
     return;
   }
@@ -115,6 +115,7 @@ void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameCon
   if (conditions.fog_distance_m) {
     lighting.fog_distance_m = static_cast<float>(*conditions.fog_distance_m);
   }
+  if (conditions.turbidity) lighting.turbidity = static_cast<float>(*conditions.turbidity);
   renderer.set_lighting(lighting);
 }
 

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace airis::engine {
 namespace {
@@ -112,7 +114,47 @@ TEST(DomainRandomizationTest, ValidateNamesTheRange) {
   } catch (const InvalidField& e) {
     EXPECT_EQ(e.field(), "sun_elevation_deg[1]");
   }
+  c = {};
+  c.fog_distance_m = Eigen::Vector2d(100.0, 200.0);
+  c.visibility_m = Eigen::Vector2d(400.0, 800.0);
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "visibility_m");
+  }
+  c = {};
+  c.turbidity = Eigen::Vector2d(1.0, 4.0);
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "turbidity[0]");
+  }
   EXPECT_FALSE(DomainRandomizationConfig{}.any());
+}
+
+TEST(DomainRandomizationTest, VisibilityAndTurbidityReachTheFrame) {
+  // GIVEN visibility and turbidity ranges
+  DomainRandomizationConfig c;
+  c.visibility_m = Eigen::Vector2d(300.0, 3000.0);
+  c.turbidity = Eigen::Vector2d(2.0, 9.0);
+  const SceneLighting scene;
+  EXPECT_EQ(DomainColumns(c), (std::vector<std::string>{"visibility_m", "turbidity"}));
+  for (int k = 1; k <= 50; ++k) {
+    const DomainDraw d = DrawDomain(c, 11, k * kFrame, scene);
+    // THEN each frame's drawn values are in range, written as drawn, and the frame's fog is the
+    // visibility's (Koschmieder: fog distance = V / 3.912) with the drawn turbidity
+    ASSERT_TRUE(d.visibility_m && d.turbidity && d.fog_distance_m);
+    EXPECT_GE(*d.visibility_m, 300.0);
+    EXPECT_LT(*d.visibility_m, 3000.0);
+    EXPECT_GE(*d.turbidity, 2.0);
+    EXPECT_LT(*d.turbidity, 9.0);
+    EXPECT_EQ(DomainValues(c, d), (std::vector<double>{*d.visibility_m, *d.turbidity}));
+    const FrameConditions f = d.ToFrameConditions();
+    EXPECT_DOUBLE_EQ(*f.fog_distance_m, *d.visibility_m / 3.912);
+    EXPECT_EQ(f.turbidity, d.turbidity);
+  }
 }
 
 }  // namespace
