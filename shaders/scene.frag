@@ -86,13 +86,15 @@ void main() {
   vec3 rgb = albedo * light;
   if (u_fog_distance_m > 0.0) {
     // Optical depth from the camera to the surface: d / fog distance, times the mean of the density
-    // exp(-h / H) along the segment in height fog (from h_c to h_c + dh: exp(-h_c / H) (1 - e^-x) / x
-    // with x = dh / H, its series near x = 0). The in-scattered light is the horizon's colour.
+    // exp(-h / H) along the segment in height fog: from h_c to h_s = h_c + x H it is
+    // (exp(-h_c / H) - exp(-h_s / H)) / x, written so that neither exponential overflows for a
+    // camera far above the fog (x near 0: its series). The in-scattered light is the horizon's.
     float tau = length(v_p_C) / u_fog_distance_m;
     if (u_fog_height_m > 0.0) {
+      float a = u_camera_height_m / u_fog_height_m;
       float x = dot(v_p_C, u_up_C) / u_fog_height_m;
-      float mean = abs(x) > 1e-3 ? (1.0 - exp(-x)) / x : 1.0 - 0.5 * x;
-      tau *= exp(-u_camera_height_m / u_fog_height_m) * mean;
+      float mean = abs(x) > 1e-3 ? (exp(-a) - exp(-(a + x))) / x : exp(-a) * (1.0 - 0.5 * x);
+      tau *= mean;
     }
     rgb = mix(rgb, u_sky_horizon_rgb, 1.0 - exp(-tau));
   }

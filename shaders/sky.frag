@@ -15,7 +15,6 @@ uniform vec3 u_sky_horizon_rgb;
 uniform int u_sky_model;            // 0 gradient, 1 clear (Preetham), 2 overcast (CIE)
 uniform vec3 u_perez[5];            // clear: A..E for (Y, x, y)
 uniform vec3 u_zenith_over_perez;   // clear: zenith (Y display, x, y) / F(0, theta_s)
-uniform float u_overcast_zenith;    // overcast: zenith luminance, display units
 uniform float u_fog_distance_m;     // 0 = no fog
 uniform float u_fog_height_m;       // 0 = uniform fog (the sky is left as it is)
 uniform float u_camera_height_m;
@@ -57,7 +56,9 @@ void main() {
   } else {
     rgb = u_sky_horizon_rgb * mix(0.9, 0.6, sqrt(-elevation));
   }
-  rgb += u_sun_rgb * (0.25 * pow(glow, 8.0) + 2.0 * pow(glow, 800.0));
+  // The sun's disc; and a halo around it, which the clear sky's distribution has already.
+  float halo = u_sky_model == 1 ? 0.0 : 0.25 * pow(glow, 8.0);
+  rgb += u_sun_rgb * (halo + 2.0 * pow(glow, 800.0));
   if (u_fog_distance_m > 0.0 && u_fog_height_m > 0.0) {
     // Optical depth to infinity through density exp(-h / H) from the camera's height h_c: finite
     // looking up, H exp(-h_c / H) / (fog distance sin(elevation)); at and below the horizon the fog's colour.

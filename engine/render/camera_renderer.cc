@@ -334,7 +334,6 @@ void CameraRenderer::SetSkyUniforms(const SkyShading& sky, const SceneLighting& 
     glUniform3fv(sky_program_.Uniform("u_perez"), 5, perez);
     glUniform3fv(sky_program_.Uniform("u_zenith_over_perez"), 1, sky.zenith_over_perez.data());
   }
-  glUniform1f(sky_program_.Uniform("u_overcast_zenith"), sky.overcast_zenith);
   glUniform1f(sky_program_.Uniform("u_fog_distance_m"), light.fog_distance_m);
   glUniform1f(sky_program_.Uniform("u_fog_height_m"), light.fog_height_m);
   glUniform1f(sky_program_.Uniform("u_camera_height_m"), camera_height_m);

@@ -159,7 +159,6 @@ SkyShading CalcSkyShading(const SceneLighting& lighting) {
     case SkyModel::kOvercast: {
       const double zenith =
           daylight::CalcOvercastZenithLuminance(elevation_rad) / daylight::kSkyLuminanceScale_cd_m2;
-      out.overcast_zenith = static_cast<float>(zenith);
       out.zenith_rgb = (zenith * kOvercastTint).cast<float>();
       out.horizon_rgb = (zenith / 3.0 * kOvercastTint).cast<float>();
       out.sun_rgb = Eigen::Vector3f::Zero();  // no direct sun through the cloud deck

@@ -93,8 +93,6 @@ struct SkyShading {
   /// units), for shaders/sky.frag.
   Eigen::Vector3f perez[5];
   Eigen::Vector3f zenith_over_perez = Eigen::Vector3f::Zero();
-  /// Overcast sky only: its zenith luminance in display units.
-  float overcast_zenith = 0.0f;
 };
 
 /// The sky of `lighting` for its sun: the gradient sky's colours as configured; a clear sky's

@@ -167,6 +167,8 @@ void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
   if (slots_.size() == 1) {
     StepSlot(slots_[0], 0, now_ns, dt_s);
   } else {
+    // A vehicle added since the last tick has no bounds yet: all are worked out this tick.
+    const bool added = swept_bounds_.size() != slots_.size();
     swept_bounds_.resize(slots_.size());
     ParallelFor(pool, slots_.size(), [&](std::size_t i) {
       Slot& slot = slots_[i];
@@ -174,7 +176,7 @@ void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
       // Here, on the thread that stepped the vehicle, not in the serial pass after: there each
       // vehicle would be read from the other core's cache. A vehicle that stays asleep keeps
       // its bounds (its state, so its start and end, are those of the last tick).
-      if (StepSlot(slot, i, now_ns, dt_s)) swept_bounds_[i] = CalcSweptBounds(slot);
+      if (StepSlot(slot, i, now_ns, dt_s) || added) swept_bounds_[i] = CalcSweptBounds(slot);
     });
   }
   if (!collision_listeners_.empty()) ReportEvents();

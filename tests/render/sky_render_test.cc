@@ -163,6 +163,8 @@ TEST(SkyRenderTest, FogKeepsKoschmiedersContrast) {
                 std::exp(-3.912 / V * 50.0 * (1.0 - std::exp(-h / 50.0))), 0.006)
         << "h " << h;
   }
+  // AND from far above thin fog (900 m over a scale height of 10 m) the whole column, H / D
+  EXPECT_NEAR(BlackContrast(0.0, 900.0, D, 10.0f, true), std::exp(-3.912 / V * 10.0), 0.006);
 }
 
 TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {

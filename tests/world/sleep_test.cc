@@ -173,6 +173,25 @@ TEST(SleepTest, VehicleLandingOnASleepingOneWakesItAndTheStackStaysAtRest) {
   EXPECT_FALSE(rig->world().asleep(1));
 }
 
+TEST(SleepTest, AVehicleAddedLaterLandsOnOneAsleep) {
+  // GIVEN a alone, asleep on the ground and skipping its settled actuators
+  auto rig = MakeRig(1);
+  rig->bodies[0]->settled = true;
+  rig->state(0).p_W = Vec3(2.0, 1.0, -kHalfHeight_m);
+  StepUntilAsleep(*rig, 0);
+  rig->sim->RunFor(0.1);
+  // WHEN b is added above it and dropped
+  auto b = std::make_unique<testing::PassiveBody>("b", QuadBody());
+  b->state().p_W = Vec3(2.0, 1.0, -3.0 * kHalfHeight_m - 0.3);
+  rig->bodies.push_back(b.get());
+  rig->world().AddVehicle(std::move(b));
+  rig->sim->RunFor(3.0);
+  // THEN b lands on a (the broadphase knows where a sleeps from the first tick of two vehicles)
+  EXPECT_FALSE(rig->world().asleep(0));
+  EXPECT_NEAR(rig->state(1).p_W.z(), -3.0 * kHalfHeight_m, 1e-3);
+  EXPECT_NEAR(rig->state(0).p_W.z(), -kHalfHeight_m, 1e-3);
+}
+
 TEST(SleepTest, DisabledHeldOrWokenBodiesDoNotSleep) {
   PhysicsConfig off;
   off.sleep.enabled = false;

@@ -10,7 +10,8 @@ namespace airis::testing {
 
 /// A passive box vehicle for the world tests: no actuators; the wrench it applies is whatever
 /// `wrench` says (constant, or computed by `wrench_function` from the context when set). Counts
-/// controller calls.
+/// controller calls. With `settled`, it tells a sleeping World that its constant `wrench` needs no
+/// update (Vehicle::AreActuatorsSettled), as a multirotor with stopped motors does.
 class PassiveBody final : public engine::Vehicle {
  public:
   PassiveBody(std::string name, const engine::RigidBodyConfig& body)
@@ -22,6 +23,7 @@ class PassiveBody final : public engine::Vehicle {
   engine::Wrench UpdateActuators(const engine::ActuatorContext& context) override {
     return wrench_function ? wrench_function(context) : wrench;
   }
+  bool AreActuatorsSettled() const override { return settled && !wrench_function; }
   void UpdateControl(const engine::ControlContext& context) override {
     ++control_calls;
     last_control_ns = context.now_ns;
@@ -29,6 +31,7 @@ class PassiveBody final : public engine::Vehicle {
 
   engine::Wrench wrench;
   std::function<engine::Wrench(const engine::ActuatorContext&)> wrench_function;
+  bool settled = false;
   int control_calls = 0;
   engine::TimeNs last_control_ns = -1;
 };
