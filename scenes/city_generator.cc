@@ -38,6 +38,18 @@ engine::Material Colored(const Eigen::Vector3d& rgb, const char* name) {
   return m;
 }
 
+/// A material with a procedural pattern (docs/rendering.md, "Materials") and its shading.
+engine::Material Patterned(const Eigen::Vector3d& rgb, const char* name,
+                           engine::SurfacePattern pattern, const Eigen::Vector2f& size_m,
+                           float roughness, float metallic = 0.0f) {
+  engine::Material m = Colored(rgb, name);
+  m.pattern = pattern;
+  m.pattern_size_m = size_m;
+  m.roughness = roughness;
+  m.metallic = metallic;
+  return m;
+}
+
 double Lerp(const Eigen::Vector2d& range, double u) { return range[0] + (range[1] - range[0]) * u; }
 
 class CityBuilder {
@@ -90,9 +102,13 @@ class CityBuilder {
  private:
   void MakeModels() {
     box_ = b_.PrimitiveModel(Primitive::kBox);
-    asphalt_ = static_cast<std::int32_t>(b_.Material(Colored({0.12, 0.12, 0.13}, "asphalt")));
-    concrete_ = static_cast<std::int32_t>(b_.Material(Colored({0.62, 0.61, 0.58}, "concrete")));
-    const std::uint32_t roof_material = b_.Material(Colored(c_.roof_color, "roof"));
+    // Two 3.5 m lanes and 3 m dashes every 9 m; 1.2 m paving slabs; 0.3 m tile rows.
+    asphalt_ = static_cast<std::int32_t>(b_.Material(Patterned(
+        {0.12, 0.12, 0.13}, "asphalt", engine::SurfacePattern::kAsphalt, {3.5f, 9.0f}, 0.85f)));
+    concrete_ = static_cast<std::int32_t>(b_.Material(Patterned(
+        {0.62, 0.61, 0.58}, "concrete", engine::SurfacePattern::kSidewalk, {1.2f, 1.2f}, 0.8f)));
+    const std::uint32_t roof_material = b_.Material(
+        Patterned(c_.roof_color, "roof", engine::SurfacePattern::kRoof, {0.3f, 0.05f}, 0.75f));
     const std::uint32_t body_mesh = b_.PrimitiveMesh(Primitive::kBox);
     const std::uint32_t gable = b_.AddMesh(engine::MakeGableRoofMesh());
     const std::uint32_t pyramid = b_.AddMesh(engine::MakePyramidRoofMesh());
@@ -101,7 +117,12 @@ class CityBuilder {
         engine::Model m;
         m.name =
             name_ + "/building_" + std::string(engine::ToString(roof)) + "_" + std::to_string(k);
-        const std::uint32_t wall = b_.Material(Colored(c_.building_colors[k], "wall"));
+        // Storeys of 3.0 to 3.5 m and window pitches of 2.6 to 3.8 m, by colour.
+        const Eigen::Vector2f storey_and_pitch(3.0f + 0.25f * static_cast<float>(k % 3),
+                                               2.6f + 0.4f * static_cast<float>(k % 4));
+        const std::uint32_t wall =
+            b_.Material(Patterned(c_.building_colors[k], "wall", engine::SurfacePattern::kFacade,
+                                  storey_and_pitch, 0.85f));
         // Walls span z in [-1, 0] so the object's z scale is the wall height; the roof sits on top.
         m.parts.push_back({body_mesh, wall, PartPose({0, 0, -0.5f}, {1, 1, 1})});
         if (roof == RoofShape::kGabled) {
@@ -116,7 +137,10 @@ class CityBuilder {
     }
     engine::Model lamp;
     lamp.name = name_ + "/lamp_post";
-    const std::uint32_t steel = b_.Material(Colored({0.3, 0.3, 0.32}, "steel"));
+    engine::Material steel_material = Colored({0.55, 0.56, 0.58}, "steel");
+    steel_material.metallic = 1.0f;
+    steel_material.roughness = 0.45f;
+    const std::uint32_t steel = b_.Material(steel_material);
     const std::uint32_t glass = b_.Material(Colored({1.0, 0.95, 0.8}, "lamp"));
     lamp.parts.push_back(
         {b_.PrimitiveMesh(Primitive::kCylinder), steel,
@@ -136,8 +160,12 @@ class CityBuilder {
       car_model_ = b_.AddModel(std::move(car));
       const Eigen::Vector3d palette[] = {
           {0.8, 0.1, 0.1}, {0.1, 0.2, 0.6}, {0.85, 0.85, 0.85}, {0.1, 0.1, 0.1}, {0.5, 0.5, 0.52}};
-      for (const auto& rgb : palette)
-        car_colors_.push_back(static_cast<std::int32_t>(b_.Material(Colored(rgb, "car"))));
+      // Car paint: a glossy dielectric (the clear coat over the pigment).
+      for (const auto& rgb : palette) {
+        engine::Material paint = Colored(rgb, "car");
+        paint.roughness = 0.3f;
+        car_colors_.push_back(static_cast<std::int32_t>(b_.Material(paint)));
+      }
     }
   }
 

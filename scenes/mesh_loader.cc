@@ -3,6 +3,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <filesystem>
 #include <vector>
@@ -46,6 +47,18 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
   if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
       in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
     out.base_color_rgb = Eigen::Vector3f(color.r, color.g, color.b).cwiseMax(0.0f).cwiseMin(1.0f);
+  }
+  // glTF 2.0's metallic-roughness factors (pbrMetallicRoughness; the format's defaults are 1 and
+  // 1). Other formats keep the default rough dielectric: their importers' guesses differ.
+  const std::string extension = fs::path(mesh_path).extension().string();
+  if (extension == ".gltf" || extension == ".glb" || extension == ".GLTF" || extension == ".GLB") {
+    float factor = 1.0f;
+    if (in.Get(AI_MATKEY_ROUGHNESS_FACTOR, factor) == AI_SUCCESS) {
+      out.roughness = std::clamp(factor, 0.02f, 1.0f);
+    }
+    if (in.Get(AI_MATKEY_METALLIC_FACTOR, factor) == AI_SUCCESS) {
+      out.metallic = std::clamp(factor, 0.0f, 1.0f);
+    }
   }
   aiString texture;
   if (in.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||

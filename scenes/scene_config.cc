@@ -120,6 +120,11 @@ void SceneSettingsConfig::Validate() const {
 
 void MaterialConfig::Validate() const {
   RequireColor("color", color);
+  RequireInRange("roughness", roughness, 0.02, 1.0);
+  RequireInRange("metallic", metallic, 0.0, 1.0);
+  for (int i = 0; i < 2; ++i) {
+    RequireInRange("pattern_size_m[" + std::to_string(i) + "]", pattern_size_m[i], 0.01, 1000.0);
+  }
   RequireInRange("restitution", restitution, 0.0, 1.0);
   RequireNonNegative("friction", friction);
 }

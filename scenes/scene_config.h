@@ -142,6 +142,10 @@ struct SceneSettingsConfig {
 struct MaterialConfig {
   Eigen::Vector3d color = Eigen::Vector3d(0.7, 0.7, 0.7);
   std::string texture;
+  double roughness = 0.9;
+  double metallic = 0.0;
+  engine::SurfacePattern pattern = engine::SurfacePattern::kPlain;
+  Eigen::Vector2d pattern_size_m = Eigen::Vector2d(3.0, 3.0);
   double restitution = 0.3;
   double friction = 0.6;
 
@@ -149,6 +153,13 @@ struct MaterialConfig {
   void Visit(V& v) {
     v.Field("color", color, "base colour, linear RGB 0..1");
     v.Field("texture", texture, "image file (PNG/JPEG), relative to the scene file; empty = none");
+    v.Field("roughness", roughness,
+            "perceptual roughness of metallic-roughness shading, 0.02 (mirror) .. 1 (matte)");
+    v.Field("metallic", metallic, "metalness, 0 (dielectric) .. 1 (metal)");
+    v.Field("pattern", pattern,
+            "procedural detail drawn on the colour (docs/rendering.md, \"Materials\")");
+    v.Field("pattern_size_m", pattern_size_m,
+            "the pattern's two lengths (m), e.g. a facade's storey height and window pitch");
     v.Field("restitution", restitution, "coefficient of restitution for contacts, 0..1");
     v.Field("friction", friction, "Coulomb friction coefficient, >= 0");
   }
@@ -159,6 +170,8 @@ struct MaterialConfig {
 inline MaterialConfig DefaultGroundMaterial() {
   MaterialConfig m;
   m.color = Eigen::Vector3d(0.33, 0.42, 0.27);
+  m.pattern = engine::SurfacePattern::kGrass;
+  m.pattern_size_m = Eigen::Vector2d(12.0, 0.5);
   m.restitution = 0.2;
   m.friction = 0.8;
   return m;

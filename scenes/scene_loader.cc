@@ -38,6 +38,10 @@ engine::Material ToMaterial(const MaterialConfig& c, const std::string& texture_
   engine::Material m;
   m.base_color_rgb = c.color.cast<float>();
   m.texture_path = texture_path;
+  m.roughness = static_cast<float>(c.roughness);
+  m.metallic = static_cast<float>(c.metallic);
+  m.pattern = c.pattern;
+  m.pattern_size_m = c.pattern_size_m.cast<float>();
   m.restitution = static_cast<float>(c.restitution);
   m.friction = static_cast<float>(c.friction);
   return m;

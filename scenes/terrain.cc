@@ -226,17 +226,24 @@ TerraceResult LevelTerrain(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
 bool AddTerrain(const TerrainConfig& c, engine::Heightfield heightfield, std::uint8_t class_id,
                 engine::StaticSceneBuilder& builder) {
   // Grass, rock and soil (linear RGB), one contact material for all three.
-  const auto material = [&](const char* name, const Eigen::Vector3f& rgb) {
+  const auto material = [&](const char* name, const Eigen::Vector3f& rgb,
+                            engine::SurfacePattern pattern, const Eigen::Vector2f& size_m) {
     engine::Material m;
     m.name = name;
     m.base_color_rgb = rgb;
+    m.pattern = pattern;
+    m.pattern_size_m = size_m;
     m.friction = static_cast<float>(c.friction);
     m.restitution = static_cast<float>(c.restitution);
     return builder.Material(m);
   };
-  const std::uint32_t materials[3] = {material("grass", Eigen::Vector3f(0.22f, 0.36f, 0.12f)),
-                                      material("rock", Eigen::Vector3f(0.42f, 0.40f, 0.37f)),
-                                      material("soil", Eigen::Vector3f(0.40f, 0.31f, 0.20f))};
+  // Patches of 15 m with a 0.5 m grain; rock strata 1.5 m apart.
+  const std::uint32_t materials[3] = {material("grass", Eigen::Vector3f(0.22f, 0.36f, 0.12f),
+                                               engine::SurfacePattern::kGrass, {15.0f, 0.5f}),
+                                      material("rock", Eigen::Vector3f(0.42f, 0.40f, 0.37f),
+                                               engine::SurfacePattern::kRock, {1.5f, 0.3f}),
+                                      material("soil", Eigen::Vector3f(0.40f, 0.31f, 0.20f),
+                                               engine::SurfacePattern::kSoil, {6.0f, 0.3f})};
   const double rock_up = std::cos(c.rock_slope_deg * M_PI / 180.0);
   // Generated hills span 0 to relief_m (before terraces); a DEM its own lowest to highest sample.
   const double soil_above_m =

@@ -28,6 +28,22 @@ std::span<const EnumName<SkyModel>> EnumNames(SkyModel) {
   return kNames;
 }
 
+std::span<const EnumName<SurfacePattern>> EnumNames(SurfacePattern) {
+  static constexpr std::array<EnumName<SurfacePattern>, kSurfacePatterns> kNames{{
+      {SurfacePattern::kPlain, "plain"},
+      {SurfacePattern::kFacade, "facade"},
+      {SurfacePattern::kRoof, "roof"},
+      {SurfacePattern::kAsphalt, "asphalt"},
+      {SurfacePattern::kSidewalk, "sidewalk"},
+      {SurfacePattern::kGrass, "grass"},
+      {SurfacePattern::kSoil, "soil"},
+      {SurfacePattern::kRock, "rock"},
+      {SurfacePattern::kBark, "bark"},
+      {SurfacePattern::kFoliage, "foliage"},
+  }};
+  return kNames;
+}
+
 const SemanticClass* StaticScene::FindClass(std::uint8_t id) const {
   for (const auto& c : classes) {
     if (c.id == id) return &c;

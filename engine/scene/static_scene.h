@@ -31,6 +31,27 @@ struct SemanticClass {
   bool stuff = false;
 };
 
+/// A procedural surface detail the renderer adds to a material's base colour, in the metric
+/// coordinates of the part's own mesh (docs/rendering.md, "Materials"). The detail changes the
+/// colour image only: depth, normals and labels never see it.
+enum class SurfacePattern : std::uint8_t {
+  kPlain,     ///< the base colour alone
+  kFacade,    ///< walls of a unit box: storeys of windows (glass), frames, floor lines
+  kRoof,      ///< roofing: tile rows on slopes, gravel on flat roofs
+  kAsphalt,   ///< a road slab: grain, edge lines, dashed centre line, zebra crossings at its ends
+  kSidewalk,  ///< paving slabs with joints
+  kGrass,     ///< grass with dry and bare patches
+  kSoil,      ///< bare soil with clods
+  kRock,      ///< rock with strata
+  kBark,      ///< a trunk: furrows along its axis
+  kFoliage,   ///< a crown: clumps of leaves with gaps of shade
+};
+/// How many SurfacePattern values there are.
+inline constexpr std::size_t kSurfacePatterns = 10;
+/// Spellings of SurfacePattern in files: plain, facade, roof, asphalt, sidewalk, grass, soil, rock,
+/// bark, foliage.
+std::span<const EnumName<SurfacePattern>> EnumNames(SurfacePattern);
+
 /// Surface appearance for rendering and contact response.
 struct Material {
   std::string name;
@@ -38,6 +59,16 @@ struct Material {
   std::string texture_path;  ///< absolute path of a texture image, empty if none
   float restitution = 0.3f;  ///< coefficient of restitution for contacts, [0, 1]
   float friction = 0.6f;     ///< Coulomb friction coefficient, >= 0
+  /// Metallic-roughness shading (the glTF 2.0 model): perceptual roughness in [0.02, 1] and
+  /// metalness in [0, 1]. The default is a rough dielectric (paint, concrete, foliage).
+  float roughness = 0.9f;
+  float metallic = 0.0f;
+  SurfacePattern pattern = SurfacePattern::kPlain;
+  /// The pattern's two lengths (m), by pattern: facade storey height and window pitch; asphalt
+  /// lane width and dash period; sidewalk slab side (both); roof tile row and gravel grain;
+  /// grass, soil and rock the sizes of their large and small variation; bark furrow spacing and
+  /// length; foliage clump size and leaf size.
+  Eigen::Vector2f pattern_size_m = Eigen::Vector2f(3.0f, 3.0f);
 };
 
 /// Analytic shape of a mesh when it has one, so collision and ray casting can use exact primitives.

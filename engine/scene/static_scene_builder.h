@@ -67,8 +67,10 @@ class StaticSceneBuilder {
   std::uint32_t instances_ = 0;  // instance ids given so far (to objects and vehicle bodies)
   std::int32_t primitive_mesh_[6] = {-1, -1, -1, -1, -1, -1};
   std::int32_t primitive_model_[6] = {-1, -1, -1, -1, -1, -1};
-  std::map<std::tuple<float, float, float, std::string, float, float>, std::uint32_t>
-      material_index_;
+  // Materials by every field but the name: equal materials are stored once.
+  using MaterialKey = std::tuple<float, float, float, std::string, float, float, float, float,
+                                 SurfacePattern, float, float>;
+  std::map<MaterialKey, std::uint32_t> material_index_;
 };
 
 /// Bounds of `model`'s parts in the model frame.

@@ -92,6 +92,37 @@ TEST(SceneLoaderTest, WrongTypeAndOutOfRangeNameTheKey) {
                 "gauss_markov or dryden; did you mean 'dryden'?)");
 }
 
+TEST(SceneLoaderTest, MaterialShadingKeysReachTheSceneAndBadOnesNameTheKey) {
+  SceneFiles f("shading");
+  const std::string good = f.Write(
+      "good.yaml",
+      "objects:\n"
+      "  - primitive: box\n"
+      "    material: {roughness: 0.25, metallic: 1, pattern: facade, pattern_size_m: [3.5, 2]}\n");
+  const Scene s = LoadScene(good);
+  const engine::StaticObject& box = s.static_scene.objects.back();
+  ASSERT_GE(box.material_override, 0);
+  const engine::Material& m = s.static_scene.materials[box.material_override];
+  EXPECT_EQ(m.roughness, 0.25f);
+  EXPECT_EQ(m.metallic, 1.0f);
+  EXPECT_EQ(m.pattern, engine::SurfacePattern::kFacade);
+  EXPECT_EQ(m.pattern_size_m, Eigen::Vector2f(3.5f, 2.0f));
+  const std::string a =
+      f.Write("a.yaml", "objects:\n  - primitive: box\n    material:\n      roughness: 0\n");
+  EXPECT_EQ(LoadError(a),
+            a + ":4:7: objects[0].material.roughness: must be between 0.02 and 1 (got 0)");
+  const std::string b =
+      f.Write("b.yaml", "objects:\n  - primitive: box\n    material:\n      pattern: facde\n");
+  EXPECT_EQ(LoadError(b).rfind(b + ":4:7: objects[0].material.pattern: unknown value 'facde'", 0),
+            0u)
+      << LoadError(b);
+  const std::string c = f.Write(
+      "c.yaml", "objects:\n  - primitive: box\n    material:\n      pattern_size_m: [3, 0]\n");
+  EXPECT_EQ(LoadError(c).rfind(c + ":4:", 0), 0u) << LoadError(c);
+  EXPECT_NE(LoadError(c).find("objects[0].material.pattern_size_m[1]"), std::string::npos)
+      << LoadError(c);
+}
+
 TEST(SceneLoaderTest, NestedGeneratorValidationPointsIntoTheList) {
   SceneFiles f("nested");
   const std::string path = f.Write("s.yaml",
