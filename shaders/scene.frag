@@ -1,16 +1,22 @@
 // One geometry pass writing every requested output into its own render target (OUT_* defines select them).
-// RGB: Lambertian sun shaded by the sun's shadow map, hemispheric sky light with a cheap contact-darkening
-// term, optional texture and fog (uniform or thinning with height); written linear into an sRGB8 target, which
-// encodes to sRGB.
+// RGB: metallic-roughness shading (surface.glsl, prepended) of the sun, shaded by the sun's shadow map,
+// and of the sky (hemispheric diffuse light with a cheap contact-darkening term, the mirrored sky for
+// the specular part), optional texture, procedural surface patterns, and fog (uniform or thinning with
+// height); written linear into an sRGB8 target, which encodes to sRGB.
 // Depths: written from the interpolated camera-frame position, not the non-linear depth buffer.
-precision highp float;
-precision highp int;
-
+// PATTERN (defined by the renderer) is the surface pattern of every part the program draws: a
+// constant, so that the compiler keeps only that pattern's code (llvmpipe runs every branch of a
+// shader for every pixel, taken or not: one program holding all patterns cost each pixel all of them).
 in vec3 v_p_C;
 in vec3 v_n_C;
 in vec2 v_uv;
 flat in uvec2 v_ids;
 flat in vec3 v_base_color;
+in vec3 v_p_M;
+in vec3 v_n_M;
+flat in vec3 v_size_M;
+flat in uvec4 v_surface;
+flat in vec2 v_pattern_size_m;
 
 #ifdef OUT_RGB
 layout(location = 0) out vec4 o_rgb;
@@ -70,20 +76,43 @@ void main() {
   vec3 n = normalize(v_n_C);
   if (!gl_FrontFacing) n = -n;
 #ifdef OUT_RGB
-  vec3 albedo = v_base_color;
-  if (u_has_texture) albedo *= texture(u_texture, v_uv).rgb;
+  Surface s = Surface(v_base_color, float(v_surface.x) / 255.0, float(v_surface.y) / 255.0);
+  if (u_has_texture) s.albedo *= texture(u_texture, v_uv).rgb;
+#if PATTERN != 0
+  s = ApplyPattern(s, uint(PATTERN), v_p_M, normalize(v_n_M), v_size_M, v_pattern_size_m, v_ids.y);
+#endif
+  float roughness = max(s.roughness, 0.02);
   float up = dot(n, u_up_C);
   // Hemispheric ambient: sky colour from above, a warm ground bounce from below.
   vec3 ground_bounce = vec3(0.32, 0.28, 0.24);
-  vec3 sky_light = mix(ground_bounce, mix(u_sky_horizon_rgb, u_sky_zenith_rgb, 0.5) * 1.3,
-                       0.5 + 0.5 * up);
+  vec3 sky_mean = mix(u_sky_horizon_rgb, u_sky_zenith_rgb, 0.5) * 1.3;
+  vec3 sky_light = mix(ground_bounce, sky_mean, 0.5 + 0.5 * up);
   // Contact darkening: walls get darker toward the ground (a cheap stand-in for ambient occlusion).
   float height_m = dot(v_p_C, u_up_C) + u_camera_height_m;
   float occlusion = mix(1.0, mix(0.55, 1.0, clamp(height_m / 4.0, 0.0, 1.0)), 1.0 - abs(up));
   float sun = max(dot(n, u_to_sun_C), 0.0);
-  if (sun > 0.0) sun *= SunVisibility(v_p_C, n);
-  vec3 light = (1.0 - u_ambient) * 1.6 * u_sun_rgb * sun + u_ambient * 1.4 * sky_light * occlusion;
-  vec3 rgb = albedo * light;
+  float visibility = sun > 0.0 ? SunVisibility(v_p_C, n) : 0.0;
+  vec3 sun_light = (1.0 - u_ambient) * 1.6 * u_sun_rgb;
+  vec3 sky_scale = vec3(u_ambient * 1.4 * occlusion);
+  // Metallic-roughness (glTF 2.0): metals reflect their base colour and have no diffuse part;
+  // dielectrics reflect 4% at normal incidence. Diffuse here is albedo times the light (the
+  // Lambertian 1/pi folded into the light's scale), so the sun's specular is pi times the BRDF.
+  vec3 diffuse = s.albedo * (1.0 - s.metallic);
+  vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
+  vec3 view = -normalize(v_p_C);
+  vec3 rgb = diffuse * (sun_light * sun * visibility + sky_scale * sky_light);
+  if (visibility > 0.0) {
+    rgb += sun_light * kPi * SpecularSun(n, view, u_to_sun_C, roughness, f0) * visibility;
+  }
+  // The sky seen in the mirror direction (the ground's bounce below the horizon), blurred toward
+  // the sky's mean with roughness: image-based light from the same sky the background shows.
+  vec3 r = reflect(-view, n);
+  float r_up = dot(r, u_up_C);
+  vec3 mirrored = r_up >= 0.0
+                      ? mix(u_sky_horizon_rgb, u_sky_zenith_rgb, sqrt(r_up)) * 1.3
+                      : ground_bounce;
+  rgb += sky_scale * mix(mirrored, sky_mean, roughness) *
+         EnvironmentReflectance(max(dot(n, view), 1e-4), roughness, f0);
   if (u_fog_distance_m > 0.0) {
     // Optical depth from the camera to the surface: d / fog distance, times the mean of the density
     // exp(-h / H) along the segment in height fog: from h_c to h_s = h_c + x H it is

@@ -11,6 +11,8 @@ layout(location = 4) in vec4 a_T_CO_1;
 layout(location = 5) in vec4 a_T_CO_2;
 layout(location = 6) in uvec2 a_ids;      // (class id, instance id)
 layout(location = 7) in vec3 a_base_color; // linear albedo of the part's material
+layout(location = 8) in uvec4 a_surface;   // roughness and metalness (1/255), 0, 0
+layout(location = 9) in vec2 a_pattern_size_m;
 
 uniform mat4 u_projection;  // camera frame -> clip space (pinhole intrinsics, image rows top-down)
 #ifdef SHADOW_CASTER
@@ -22,6 +24,13 @@ out vec3 v_n_C;
 out vec2 v_uv;
 flat out uvec2 v_ids;
 flat out vec3 v_base_color;
+#ifndef SHADOW_CASTER
+out vec3 v_p_M;                 // position in the mesh's frame, scaled to metres along its axes
+out vec3 v_n_M;                 // normal in the mesh's frame
+flat out vec3 v_size_M;         // the part's scale along the mesh's axes (a unit box's sides, m)
+flat out uvec4 v_surface;
+flat out vec2 v_pattern_size_m;
+#endif
 
 void main() {
   vec3 c0 = vec3(a_T_CO_0.x, a_T_CO_1.x, a_T_CO_2.x);
@@ -36,6 +45,14 @@ void main() {
   v_uv = a_uv;
   v_ids = a_ids;
   v_base_color = a_base_color;
+#ifndef SHADOW_CASTER
+  // The columns' lengths are the part's scale: T_CO is a rotation times that scale.
+  v_size_M = vec3(length(c0), length(c1), length(c2));
+  v_p_M = a_p_O * v_size_M;
+  v_n_M = a_n_O;
+  v_surface = a_surface;
+  v_pattern_size_m = a_pattern_size_m;
+#endif
 #ifdef SHADOW_CASTER
   gl_Position = u_shadow_from_C * vec4(v_p_C, 1.0);
 #else

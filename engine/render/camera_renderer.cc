@@ -156,11 +156,8 @@ CameraRenderer::CameraRenderer(const EglContext& context, const CameraIntrinsics
   for (int t = 0; t < kTargets; ++t) {
     if (Enabled(t)) defines += std::string("#define ") + kDefine[t] + " 1\n";
   }
-  scene_program_ = GlProgram("scene", shaders::k_scene_vert, shaders::k_scene_frag, defines);
+  scene_defines_ = defines;
   if (outputs_.rgb) sky_program_ = GlProgram("sky", shaders::k_sky_vert, shaders::k_sky_frag, "");
-  glUseProgram(scene_program_.id());
-  glUniform1i(scene_program_.Uniform("u_texture"), 0);
-  if (outputs_.rgb) glUniform1i(scene_program_.Uniform("u_shadow_map"), 1);
 
   geometry_target_ =
       CreateTarget(render_intrinsics_.width_px, render_intrinsics_.height_px, distorted_, true);
@@ -303,18 +300,49 @@ void CameraRenderer::DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& 
   last_shadow_triangles_ = sun_shadow_->last_triangles();
 }
 
-void CameraRenderer::SetShadowUniforms(const std::optional<ShadowFrame>& shadow,
+const GlProgram& CameraRenderer::SceneProgram(SurfacePattern pattern) {
+  // Patterns only colour the RGB image: without it every part is drawn by the plain program.
+  if (!outputs_.rgb) pattern = SurfacePattern::kPlain;
+  GlProgram& program = scene_programs_[static_cast<std::size_t>(pattern)];
+  if (program.id() != 0) return program;
+  const std::string fragment =
+      std::string(shaders::k_surface_glsl) + std::string(shaders::k_scene_frag);
+  const std::string defines =
+      scene_defines_ + "#define PATTERN " + std::to_string(static_cast<int>(pattern)) + "\n";
+  program = GlProgram("scene", shaders::k_scene_vert, fragment, defines);
+  glUseProgram(program.id());
+  glUniform1i(program.Uniform("u_texture"), 0);
+  if (outputs_.rgb) glUniform1i(program.Uniform("u_shadow_map"), 1);
+  return program;
+}
+
+void CameraRenderer::SetSceneUniforms(const GlProgram& program, const FrameUniforms& frame) {
+  const SkyShading& sky = frame.sky;
+  glUniformMatrix4fv(program.Uniform("u_projection"), 1, GL_FALSE, frame.projection.data());
+  glUniform3fv(program.Uniform("u_to_sun_C"), 1, frame.to_sun_C.data());
+  glUniform3fv(program.Uniform("u_up_C"), 1, frame.up_C.data());
+  glUniform1f(program.Uniform("u_camera_height_m"), frame.camera_height_m);
+  glUniform3fv(program.Uniform("u_sun_rgb"), 1, sky.sun_rgb.data());
+  glUniform3fv(program.Uniform("u_sky_zenith_rgb"), 1, sky.zenith_rgb.data());
+  glUniform3fv(program.Uniform("u_sky_horizon_rgb"), 1, sky.horizon_rgb.data());
+  glUniform1f(program.Uniform("u_ambient"), sky.ambient);
+  glUniform1f(program.Uniform("u_fog_distance_m"), frame.light.fog_distance_m);
+  glUniform1f(program.Uniform("u_fog_height_m"), frame.light.fog_height_m);
+  SetShadowUniforms(program, shadow_, frame.light);
+}
+
+void CameraRenderer::SetShadowUniforms(const GlProgram& program,
+                                       const std::optional<ShadowFrame>& shadow,
                                        const SceneLighting& light) {
-  glUniform1i(scene_program_.Uniform("u_has_shadow"), shadow ? 1 : 0);
+  glUniform1i(program.Uniform("u_has_shadow"), shadow ? 1 : 0);
   if (!shadow) return;
   const Eigen::Matrix4f M = shadow->shadow_from_C.cast<float>();
-  glUniformMatrix4fv(scene_program_.Uniform("u_shadow_from_C"), 1, GL_FALSE, M.data());
-  glUniform1f(scene_program_.Uniform("u_shadow_texel"),
+  glUniformMatrix4fv(program.Uniform("u_shadow_from_C"), 1, GL_FALSE, M.data());
+  glUniform1f(program.Uniform("u_shadow_texel"),
               1.0f / static_cast<float>(sun_shadow_->map_size_px()));
   // One and a half texels out along the normal: past the map's depth steps on sloped receivers.
-  glUniform1f(scene_program_.Uniform("u_shadow_offset_m"),
-              static_cast<float>(1.5 * shadow->texel_m));
-  glUniform1f(scene_program_.Uniform("u_shadow_distance_m"), light.shadows.distance_m);
+  glUniform1f(program.Uniform("u_shadow_offset_m"), static_cast<float>(1.5 * shadow->texel_m));
+  glUniform1f(program.Uniform("u_shadow_distance_m"), light.shadows.distance_m);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, sun_shadow_->texture());
   glActiveTexture(GL_TEXTURE0);
@@ -393,23 +421,22 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   glFrontFace(GL_CW);
   glDisable(GL_BLEND);
 
-  const GLuint program = scene_program_.id();
-  glUseProgram(program);
-  const Eigen::Matrix4f P = CalcProjection(k);
-  glUniformMatrix4fv(scene_program_.Uniform("u_projection"), 1, GL_FALSE, P.data());
-  glUniform3fv(scene_program_.Uniform("u_to_sun_C"), 1, to_sun_C.data());
-  glUniform3fv(scene_program_.Uniform("u_up_C"), 1, up_C.data());
-  glUniform1f(scene_program_.Uniform("u_camera_height_m"), camera_height_m);
-  glUniform3fv(scene_program_.Uniform("u_sun_rgb"), 1, sky.sun_rgb.data());
-  glUniform3fv(scene_program_.Uniform("u_sky_zenith_rgb"), 1, sky.zenith_rgb.data());
-  glUniform3fv(scene_program_.Uniform("u_sky_horizon_rgb"), 1, sky.horizon_rgb.data());
-  glUniform1f(scene_program_.Uniform("u_ambient"), sky.ambient);
-  glUniform1f(scene_program_.Uniform("u_fog_distance_m"), light.fog_distance_m);
-  glUniform1f(scene_program_.Uniform("u_fog_height_m"), light.fog_height_m);
-  SetShadowUniforms(shadow_, light);
-  const GLint has_texture = scene_program_.Uniform("u_has_texture");
+  // Each draw by the program of its batch's pattern, given this frame's uniforms on first use.
+  const FrameUniforms frame{CalcProjection(k), to_sun_C, up_C, camera_height_m, sky, light};
+  std::array<bool, kSurfacePatterns> ready{};
+  const GlProgram* in_use = nullptr;
   for (const VisibleSet::Draw& d : visible_.draws) {
-    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count, has_texture);
+    const SurfacePattern pattern = scene.batches()[d.batch].pattern;
+    const GlProgram& program = SceneProgram(pattern);
+    if (&program != in_use) {
+      glUseProgram(program.id());
+      in_use = &program;
+    }
+    if (!ready[static_cast<std::size_t>(pattern)]) {
+      SetSceneUniforms(program, frame);
+      ready[static_cast<std::size_t>(pattern)] = true;
+    }
+    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count, program.Uniform("u_has_texture"));
   }
   last_draw_calls_ = visible_.draws.size();
   last_triangles_ = visible_.triangles;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/core/camera_frame.h"
@@ -110,11 +111,24 @@ class CameraRenderer {
   RenderTarget CreateTarget(int width, int height, bool sampled, bool with_depth) const;
   void DestroyTarget(RenderTarget& target) const;
   void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies);
-  // Draws the sun's shadow map for this frame when the lighting asks for shadows and the sun is up;
-  // sets the scene program's shadow uniforms either way (needs the program in use).
+  // Draws the sun's shadow map for this frame when the lighting asks for shadows and the sun is up.
   void DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies,
                   const SceneLighting& light, const DetailLimit& detail);
-  void SetShadowUniforms(const std::optional<ShadowFrame>& shadow, const SceneLighting& light);
+  // What every scene program needs of a frame.
+  struct FrameUniforms {
+    Eigen::Matrix4f projection;
+    Eigen::Vector3f to_sun_C;
+    Eigen::Vector3f up_C;
+    float camera_height_m = 0.0f;
+    const SkyShading& sky;
+    const SceneLighting& light;
+  };
+  // The scene program that draws parts of `pattern` (made on first use; see scene.frag's PATTERN).
+  const GlProgram& SceneProgram(SurfacePattern pattern);
+  // `program`'s uniforms for this frame (the program in use).
+  void SetSceneUniforms(const GlProgram& program, const FrameUniforms& frame);
+  void SetShadowUniforms(const GlProgram& program, const std::optional<ShadowFrame>& shadow,
+                         const SceneLighting& light);
   // The sky program's uniforms for this frame (sky_program_ in use).
   void SetSkyUniforms(const SkyShading& sky, const SceneLighting& light, float camera_height_m);
   void PrepareFrame(CameraFrame& out, TimeNs time_ns, const Eigen::Isometry3d& T_WC) const;
@@ -128,7 +142,8 @@ class CameraRenderer {
   double detail_tolerance_px_;
   std::optional<SceneLighting> lighting_;  // replaces the scene's when set
   bool distorted_ = false;
-  GlProgram scene_program_;
+  std::string scene_defines_;  // the outputs' defines of every scene program
+  std::array<GlProgram, kSurfacePatterns> scene_programs_;  // by SurfacePattern
   GlProgram sky_program_;
   GlProgram remap_program_;
   RenderTarget geometry_target_;

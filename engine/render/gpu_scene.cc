@@ -102,7 +102,7 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offsetof(Vertex, uv)));
-    for (GLuint a = 3; a <= 7; ++a) {
+    for (GLuint a = 3; a <= 9; ++a) {
       glEnableVertexAttribArray(a);
       glVertexAttribDivisor(a, 1);
     }
@@ -116,11 +116,18 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
     GpuMaterial gpu;
-    for (int c = 0; c < 3; ++c) {
-      gpu.base_color_rgba[c] = static_cast<std::uint8_t>(
-          std::lround(255.0f * std::clamp(m.base_color_rgb[c], 0.0f, 1.0f)));
-    }
-    gpu.base_color_rgba[3] = 255;
+    const auto to_byte = [](float x) {
+      return static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(x, 0.0f, 1.0f)));
+    };
+    for (int c = 0; c < 3; ++c) gpu.params.base_color_rgba[c] = to_byte(m.base_color_rgb[c]);
+    gpu.params.base_color_rgba[3] = 255;
+    gpu.params.surface[0] = to_byte(m.roughness);
+    gpu.params.surface[1] = to_byte(m.metallic);
+    gpu.params.surface[2] = 0;
+    gpu.params.surface[3] = 0;
+    gpu.pattern = m.pattern;
+    gpu.params.pattern_size_m[0] = m.pattern_size_m.x();
+    gpu.params.pattern_size_m[1] = m.pattern_size_m.y();
     gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m);
     materials_.push_back(gpu);
   }
@@ -185,12 +192,16 @@ std::uint32_t GpuScene::BatchOf(
   AIRIS_DEMAND(mesh < meshes_.size() && material < materials_.size());
   const std::int32_t textured =
       materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
+  // Untextured materials share a batch per pattern (keys -1 - pattern); a textured one has its own.
+  const SurfacePattern pattern = materials_[material].pattern;
+  const std::int32_t key = textured >= 0 ? textured : -1 - static_cast<std::int32_t>(pattern);
   auto [it, inserted] =
-      batch_of.try_emplace({mesh, textured}, static_cast<std::uint32_t>(batches_.size()));
+      batch_of.try_emplace({mesh, key}, static_cast<std::uint32_t>(batches_.size()));
   if (inserted) {
     batches_.emplace_back();
     batches_.back().mesh = mesh;
     batches_.back().textured_material = textured;
+    batches_.back().pattern = pattern;
   }
   return it->second;
 }
@@ -310,14 +321,14 @@ struct Entry {
 };
 
 GpuInstance MakeInstance(const Eigen::Matrix4d& T_CP, std::uint32_t class_id,
-                         std::uint32_t instance_id, const std::uint8_t* base_color_rgba) {
+                         std::uint32_t instance_id, const GpuMaterialParams& material) {
   GpuInstance instance;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 4; ++c) instance.T_CO_rows[r * 4 + c] = static_cast<float>(T_CP(r, c));
   }
   instance.class_id = class_id;
   instance.instance_id = instance_id;
-  std::memcpy(instance.base_color_rgba, base_color_rgba, 4);
+  instance.material = material;
   return instance;
 }
 
@@ -379,8 +390,7 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
       Eigen::Affine3d T_WO = Eigen::Affine3d::Identity();
       T_WO.matrix().topRows<3>() = item.T_WO;
       out.instances.push_back(MakeInstance((T_CW * T_WO * part.T_MP).matrix(), item.class_id,
-                                           item.instance_id,
-                                           materials_[part.material].base_color_rgba));
+                                           item.instance_id, materials_[part.material].params));
     }
     const auto count = static_cast<std::uint32_t>(list.size());
     out.draws.push_back({b, first, count});
@@ -409,7 +419,7 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
       const Eigen::Isometry3d T_CB = T_CW * bodies.T_WB[batch.body[i]];
       out.instances.push_back(MakeInstance((T_CB * batch.T_FP[i]).matrix(), batch.class_id[i],
                                            batch.instance_id[i],
-                                           materials_[batch.material[i]].base_color_rgba));
+                                           materials_[batch.material[i]].params));
     }
     const auto count = static_cast<std::uint32_t>(order.size());
     out.draws.push_back({b, first, count});
@@ -435,9 +445,16 @@ void GpuScene::DrawBatch(std::uint32_t b, GLuint instance_buffer, std::uint32_t 
   }
   glVertexAttribIPointer(6, 2, GL_UNSIGNED_INT, sizeof(GpuInstance),
                          reinterpret_cast<const void*>(base + offsetof(GpuInstance, class_id)));
+  const std::size_t material = base + offsetof(GpuInstance, material);
   glVertexAttribPointer(
       7, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(GpuInstance),
-      reinterpret_cast<const void*>(base + offsetof(GpuInstance, base_color_rgba)));
+      reinterpret_cast<const void*>(material + offsetof(GpuMaterialParams, base_color_rgba)));
+  glVertexAttribIPointer(
+      8, 4, GL_UNSIGNED_BYTE, sizeof(GpuInstance),
+      reinterpret_cast<const void*>(material + offsetof(GpuMaterialParams, surface)));
+  glVertexAttribPointer(
+      9, 2, GL_FLOAT, GL_FALSE, sizeof(GpuInstance),
+      reinterpret_cast<const void*>(material + offsetof(GpuMaterialParams, pattern_size_m)));
   glDrawElementsInstanced(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr,
                           static_cast<GLsizei>(count));
 }

@@ -14,14 +14,22 @@
 
 namespace airis::engine {
 
+/// A material as an instance carries it: base colour (linear, 8 bits per channel), the surface
+/// (roughness and metalness in 1/255) and the pattern's lengths, so that parts differing only in
+/// these share one draw call. The pattern itself is the batch's (GpuScene::Batch::pattern).
+struct GpuMaterialParams {
+  std::uint8_t base_color_rgba[4];
+  std::uint8_t surface[4];  ///< roughness, metallic, 0, 0
+  float pattern_size_m[2];
+};
+
 /// One instance as the vertex shader reads it: rows of T_CO (object -> camera), the labels and the
-/// material's base colour (linear, 8 bits per channel) so that parts differing only in colour share
-/// one draw call.
+/// material.
 struct GpuInstance {
   float T_CO_rows[12];
   std::uint32_t class_id;
   std::uint32_t instance_id;
-  std::uint8_t base_color_rgba[4];
+  GpuMaterialParams material;
 };
 
 /// Where the vehicle bodies of the scene (StaticScene::vehicle_bodies) are in one frame. Body k is
@@ -55,15 +63,15 @@ struct DetailLimit {
 };
 
 /// The static scene on the GPU: every mesh uploaded once (vertex array + index buffer), materials
-/// with their textures, and the placed parts grouped into batches of (mesh, texture) for instanced
-/// drawing: untextured materials differ only in the per-instance colour, so a city of boxes in many
-/// colours is one draw call and its parts can be drawn front to back together. Static objects are
-/// culled whole, by their bounding sphere, in clusters of neighbours first (a big world costs what
-/// its visible part costs), and drawn at the coarsest look of their model that DetailLimit allows.
-/// The parts of the vehicle bodies form batches of their own, placed relative to their body and
-/// moved to its pose of the frame (BodyPoses). Needs the GL context current. Poses are kept in
-/// double precision; each frame transforms the visible parts into the camera frame on the CPU
-/// (camera-relative precision).
+/// with their textures, and the placed parts grouped into batches of (mesh, texture, pattern) for
+/// instanced drawing: untextured materials of one pattern differ only in per-instance values, so a
+/// city of boxes in many colours is one draw call per pattern and its parts can be drawn front to
+/// back together. Static objects are culled whole, by their bounding sphere, in clusters of
+/// neighbours first (a big world costs what its visible part costs), and drawn at the coarsest look
+/// of their model that DetailLimit allows. The parts of the vehicle bodies form batches of their
+/// own, placed relative to their body and moved to its pose of the frame (BodyPoses). Needs the GL
+/// context current. Poses are kept in double precision; each frame transforms the visible parts
+/// into the camera frame on the CPU (camera-relative precision).
 class GpuScene {
  public:
   /// Uploads `scene`. Throws ConfigError naming the material when a texture image cannot be read,
@@ -73,11 +81,13 @@ class GpuScene {
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;
 
-  /// One (mesh, texture) pair: one instanced draw per frame. A batch of body parts also holds its
-  /// parts, placed in their body's frame (FRD).
+  /// One (mesh, texture, surface pattern) triple: one instanced draw per frame. A batch of body
+  /// parts also holds its parts, placed in their body's frame (FRD).
   struct Batch {
     std::uint32_t mesh = 0;
     std::int32_t textured_material = -1;  ///< material whose texture the batch binds, -1 for none
+    /// The pattern of its materials: drawn by the program with that pattern compiled in.
+    SurfacePattern pattern = SurfacePattern::kPlain;
     bool large =
         false;  ///< holds a part larger than 100 m (ground): drawn last, after the occluders
     /// Of a batch of body parts: the body of each part (index into StaticScene::vehicle_bodies).
@@ -125,7 +135,8 @@ class GpuScene {
     bool casts_shadow = true;  // false for flat planes (the ground): nothing lies beneath them
   };
   struct GpuMaterial {
-    std::uint8_t base_color_rgba[4];
+    GpuMaterialParams params;
+    SurfacePattern pattern = SurfacePattern::kPlain;
     GLuint texture = 0;
   };
   // A part of a look: drawn in `batch`, placed in the model's frame, coloured by `material`.

@@ -10,6 +10,9 @@ namespace airis::engine::shaders {
 
 /// shaders/scene.vert: instanced geometry, positions and normals into the camera frame.
 extern const std::string_view k_scene_vert;
+/// shaders/surface.glsl: procedural surface patterns and metallic-roughness reflectance, prepended
+/// to scene.frag.
+extern const std::string_view k_surface_glsl;
 /// shaders/scene.frag: shading, depths, labels and normals into multiple render targets.
 extern const std::string_view k_scene_frag;
 /// shaders/shadow.frag: depth only, for the sun's shadow map (scene.vert with SHADOW_CASTER).

@@ -32,25 +32,6 @@ double LinearToSrgb(double x) {
   return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
 }
 
-double SrgbToLinear(int level) {
-  const double s = level / 255.0;
-  return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
-}
-
-CameraFrame Render(const StaticScene& scene, const SceneLighting& light,
-                   const CameraIntrinsics& camera, const Eigen::Isometry3d& T_WC) {
-  EglContext& context = testing::SharedContext();
-  GpuScene gpu(scene);
-  gpu.set_lighting(light);
-  RenderOutputs outputs;
-  outputs.depth_planar = true;
-  outputs.segmentation = true;
-  CameraRenderer renderer(context, camera, outputs);
-  CameraFrame frame;
-  renderer.Render(gpu, T_WC, 0, frame);
-  return frame;
-}
-
 // The world direction of pixel (u, v)'s ray.
 Eigen::Vector3d Ray_W(const CameraIntrinsics& k, const Eigen::Isometry3d& T_WC, int u, int v) {
   const Eigen::Vector3d ray_C((u - k.cx_px) / k.fx_px, (v - k.cy_px) / k.fy_px, 1.0);
@@ -68,7 +49,7 @@ TEST(SkyRenderTest, ClearSkyPixelsArePreethamsSky) {
   light.turbidity = 3.0f;
   light.sun_direction_W = SunRays_W(0.0, 30.0 * kDeg);
   const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, M_PI, 30.0 * kDeg);
-  const CameraFrame frame = Render(scene, light, kCamera, T_WC);
+  const CameraFrame frame = testing::RenderColourDepthLabels(scene, light, kCamera, T_WC);
   // THEN every pixel above the horizon is the model's radiance for its ray, in sRGB
   const daylight::ClearSky sky(3.0, 60.0 * kDeg);
   const Eigen::Vector3d to_sun = -light.sun_direction_W;
@@ -99,7 +80,7 @@ TEST(SkyRenderTest, OvercastSkyIsAThirdAsBrightAtTheHorizonAsOverhead) {
   light.sky = SkyModel::kOvercast;
   light.sun_direction_W = SunRays_W(1.0, 40.0 * kDeg);
   const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 45.0 * kDeg);
-  const CameraFrame frame = Render(scene, light, kCamera, T_WC);
+  const CameraFrame frame = testing::RenderColourDepthLabels(scene, light, kCamera, T_WC);
   // THEN each pixel is the zenith's colour times (1 + 2 sin(elevation)) / 3, and there is no sun
   const SkyShading shading = CalcSkyShading(light);
   int compared = 0;
@@ -120,8 +101,9 @@ TEST(SkyRenderTest, OvercastSkyIsAThirdAsBrightAtTheHorizonAsOverhead) {
 }
 
 // The contrast against the fog's colour (1 - surface / fog in linear light, green) of the image
-// centre, a black surface (albedo 0) seen in fog: a wall `distance_m` north of a camera at
-// `height_m` looking north level, or (`down`) the ground `height_m` below a camera looking down.
+// centre, a black surface (albedo 0, no reflection) seen in fog: a wall `distance_m` north of a
+// camera at `height_m` looking north level, or (`down`) the ground `height_m` below a camera
+// looking down.
 double BlackContrast(double distance_m, double height_m, float fog_distance_m, float fog_height_m,
                      bool down = false) {
   StaticScene scene = testing::MakeEmptyScene();
@@ -131,15 +113,18 @@ double BlackContrast(double distance_m, double height_m, float fog_distance_m, f
     testing::AddBox(scene, {distance_m + 0.5, 0.0, -height_m}, {1.0, 4000.0, 4000.0}, 2, 2,
                     Eigen::Vector3f::Zero());
   }
+  // A perfect absorber: a black dielectric would still mirror 4% of the sky (F0 = 0.04), a metal
+  // of albedo 0 mirrors nothing.
+  scene.materials.back().metallic = 1.0f;
   SceneLighting light;
   light.fog_distance_m = fog_distance_m;
   light.fog_height_m = fog_height_m;
   const CameraIntrinsics camera = CameraIntrinsics::FromHorizontalFov(33, 33, 10.0, 0.1, 10000.0);
-  const CameraFrame frame = Render(
+  const CameraFrame frame = testing::RenderColourDepthLabels(
       scene, light, camera, testing::LookPose({0.0, 0.0, -height_m}, 0.0, down ? -M_PI / 2 : 0.0));
   const std::size_t centre = 4 * (16 * 33 + 16);
   EXPECT_EQ(frame.class_id.pixels[centre / 4], 2);  // the wall, not the sky
-  return 1.0 - SrgbToLinear(frame.rgba.pixels[centre + 1]) / light.sky_horizon_rgb[1];
+  return 1.0 - testing::SrgbToLinear(frame.rgba.pixels[centre + 1]) / light.sky_horizon_rgb[1];
 }
 
 TEST(SkyRenderTest, FogKeepsKoschmiedersContrast) {
@@ -186,9 +171,9 @@ TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {
   SceneLighting overcast = plain;
   overcast.sky = SkyModel::kOvercast;
   overcast.fog_distance_m = 150.0f;
-  const CameraFrame a = Render(scene, plain, kCamera, T_WC);
+  const CameraFrame a = testing::RenderColourDepthLabels(scene, plain, kCamera, T_WC);
   for (const SceneLighting& light : {clear, overcast}) {
-    const CameraFrame b = Render(scene, light, kCamera, T_WC);
+    const CameraFrame b = testing::RenderColourDepthLabels(scene, light, kCamera, T_WC);
     // THEN depth and labels are the same to the byte, and the colour image is not
     EXPECT_EQ(a.depth_planar_m.pixels, b.depth_planar_m.pixels);
     EXPECT_EQ(a.class_id.pixels, b.class_id.pixels);

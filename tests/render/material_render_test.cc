@@ -1,0 +1,156 @@
+// Materials as rendered (shaders/surface.glsl, shaders/scene.frag): patterns and metallic-roughness
+// shading change the colour image only; a facade shows the storeys and window columns its pattern
+// lengths ask for; black metal face on is almost black, and a black dielectric mirrors the sky,
+// more at grazing angles.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "engine/render/camera_renderer.h"
+#include "engine/render/gpu_scene.h"
+#include "tests/render/render_test_util.h"
+
+namespace airis::engine {
+namespace {
+
+// Linear luminance (Rec. 709) of pixel (u, v) of an sRGB8 colour image.
+double Luminance(const CameraFrame& frame, int u, int v) {
+  const std::size_t i = 4 * (static_cast<std::size_t>(v) * frame.rgba.width + u);
+  return 0.2126 * testing::SrgbToLinear(frame.rgba.pixels[i]) +
+         0.7152 * testing::SrgbToLinear(frame.rgba.pixels[i + 1]) +
+         0.0722 * testing::SrgbToLinear(frame.rgba.pixels[i + 2]);
+}
+
+// Pixel of world point p_W (it must be in front of the camera).
+Eigen::Vector2i Project(const CameraIntrinsics& k, const Eigen::Isometry3d& T_WC,
+                        const Eigen::Vector3d& p_W) {
+  const Eigen::Vector3d p_C = T_WC.inverse() * p_W;
+  return {static_cast<int>(std::floor(k.fx_px * p_C.x() / p_C.z() + k.cx_px)),
+          static_cast<int>(std::floor(k.fy_px * p_C.y() / p_C.z() + k.cy_px))};
+}
+
+// Runs of pixels darker than `share` of the brightest along the samples (the wall between windows).
+int CountDarkRuns(const std::vector<double>& luminance, double share) {
+  const double bright = *std::max_element(luminance.begin(), luminance.end());
+  int runs = 0;
+  bool dark = false;
+  for (double l : luminance) {
+    const bool now = l < share * bright;
+    if (now && !dark) ++runs;
+    dark = now;
+  }
+  return runs;
+}
+
+TEST(MaterialRenderTest, PatternsAndShadingChangeTheColourImageOnly) {
+  // GIVEN a ground and a box of every pattern, once plain and once with patterns, roughness and
+  // metalness
+  StaticScene plain = testing::MakeEmptyScene();
+  testing::AddGround(plain, 2000.0, 1);
+  const int patterns = static_cast<int>(EnumNames(SurfacePattern{}).size());
+  for (int k = 1; k < patterns; ++k) {
+    testing::AddBox(plain, {25.0 + 6.0 * k, -30.0 + 6.0 * k, -4.0}, {5.0, 5.0, 8.0}, 2,
+                    static_cast<std::uint32_t>(10 + k));
+  }
+  StaticScene patterned = plain;
+  patterned.materials[0].pattern = SurfacePattern::kGrass;
+  for (int k = 1; k < patterns; ++k) {
+    Material& m = patterned.materials[static_cast<std::size_t>(k)];
+    m.pattern = static_cast<SurfacePattern>(k);
+    m.roughness = 0.1f * static_cast<float>(k);
+    m.metallic = k % 3 == 0 ? 1.0f : 0.0f;
+    m.pattern_size_m = {3.0f, 2.5f};
+  }
+  SceneLighting light;
+  light.sun_direction_W = Eigen::Vector3d(0.3, 0.5, 0.8).normalized();
+  const auto camera = CameraIntrinsics::FromHorizontalFov(160, 120, 90.0, 0.1, 5000.0);
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -12.0}, 0.3, -10.0 * M_PI / 180);
+  const CameraFrame a = testing::RenderColourDepthLabels(plain, light, camera, T_WC);
+  const CameraFrame b = testing::RenderColourDepthLabels(patterned, light, camera, T_WC);
+  // THEN depth and labels are the same to the byte
+  EXPECT_EQ(a.depth_planar_m.pixels, b.depth_planar_m.pixels);
+  EXPECT_EQ(a.class_id.pixels, b.class_id.pixels);
+  EXPECT_EQ(a.instance_id.pixels, b.instance_id.pixels);
+  // AND the colour of most pixels of the boxes and the ground differs
+  int surface = 0;
+  int changed = 0;
+  for (std::size_t i = 0; i < a.class_id.pixels.size(); ++i) {
+    if (a.class_id.pixels[i] == 0) continue;  // sky
+    ++surface;
+    if (std::memcmp(&a.rgba.pixels[4 * i], &b.rgba.pixels[4 * i], 3) != 0) ++changed;
+  }
+  EXPECT_GT(surface, 5000);
+  EXPECT_GT(changed, surface * 8 / 10);
+}
+
+TEST(MaterialRenderTest, FacadeHasTheStoreysAndWindowColumnsOfItsPattern) {
+  // GIVEN a wall 30 m wide and 19.5 m high (6 storeys of 3 m and a 1.5 m parapet) with a window
+  // pitch of 2.9 m (the nearest whole number of columns across 30 m is 10), seen face on
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddBox(scene, {0.0, 20.0, -9.75}, {30.0, 10.0, 19.5}, 2, 7,
+                  Eigen::Vector3f::Constant(0.8f));
+  scene.materials.back().pattern = SurfacePattern::kFacade;
+  scene.materials.back().pattern_size_m = {3.0f, 2.9f};
+  SceneLighting light;
+  light.sun_direction_W = Eigen::Vector3d(0.2, 1.0, 0.6).normalized();  // onto the face
+  const auto camera = CameraIntrinsics::FromHorizontalFov(320, 240, 60.0, 0.1, 1000.0);
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, -25.0, -9.75}, M_PI / 2, 0.0);
+  const CameraFrame frame = testing::RenderColourDepthLabels(scene, light, camera, T_WC);
+  // THEN across the middle of the fourth storey's windows (0.59 of a storey up) there are 10
+  const double y_face = 15.0;
+  const Eigen::Vector2i left = Project(camera, T_WC, {14.9, y_face, -(3.0 * 3.59)});
+  const Eigen::Vector2i right = Project(camera, T_WC, {-14.9, y_face, -(3.0 * 3.59)});
+  std::vector<double> row;
+  for (int u = std::min(left.x(), right.x()); u <= std::max(left.x(), right.x()); ++u) {
+    row.push_back(Luminance(frame, u, left.y()));
+  }
+  EXPECT_EQ(CountDarkRuns(row, 0.6), 10);
+  // AND up the middle of the sixth column (1.5 m east of the centre) one window per storey, the
+  // shop front included, and none in the parapet
+  const Eigen::Vector2i base = Project(camera, T_WC, {1.5, y_face, -0.1});
+  const Eigen::Vector2i top = Project(camera, T_WC, {1.5, y_face, -19.4});
+  std::vector<double> column;
+  for (int v = std::min(base.y(), top.y()); v <= std::max(base.y(), top.y()); ++v) {
+    column.push_back(Luminance(frame, base.x(), v));
+  }
+  EXPECT_EQ(CountDarkRuns(column, 0.6), 6);
+}
+
+TEST(MaterialRenderTest, BlackMetalIsAlmostBlackFaceOnAndDielectricsReflectMoreAtGrazingAngles) {
+  // GIVEN black ground, once a metal (F0 = albedo = 0) and once a dielectric (F0 = 0.04)
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 4000.0, 1);
+  Material& ground = scene.materials.back();
+  ground.base_color_rgb.setZero();
+  ground.roughness = 0.3f;
+  SceneLighting light;
+  light.sun_direction_W = Eigen::Vector3d(-0.3, 0.0, 0.9).normalized();  // behind the camera
+  const auto camera = CameraIntrinsics::FromHorizontalFov(64, 48, 60.0, 0.1, 5000.0);
+  const Eigen::Isometry3d down = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -M_PI / 2);
+  const Eigen::Isometry3d oblique = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -10.0 * M_PI / 180);
+  ground.metallic = 1.0f;
+  const CameraFrame metal = testing::RenderColourDepthLabels(scene, light, camera, down);
+  ground.metallic = 0.0f;
+  const CameraFrame dielectric = testing::RenderColourDepthLabels(scene, light, camera, down);
+  const CameraFrame dielectric_oblique =
+      testing::RenderColourDepthLabels(scene, light, camera, oblique);
+  // THEN seen face on the metal reflects almost nothing (Schlick: F = F0 = 0; what is left is the
+  // bias of Karis's fit of the sky's reflectance, 0.003 at roughness 0.3) and the dielectric
+  // reflects the sky's 4% and the sun's highlight
+  const double metal_face_on = Luminance(metal, 32, 24);
+  const double dielectric_face_on = Luminance(dielectric, 32, 24);
+  EXPECT_GT(dielectric_face_on, 0.0);
+  EXPECT_LT(metal_face_on, 0.1 * dielectric_face_on);
+  // AND the dielectric reflects more at grazing angles (Fresnel): a row 2 deg below the horizon is
+  // more than twice as bright as the bottom row (32 deg down)
+  const double steep = Luminance(dielectric_oblique, 32, 47);
+  const double grazing = Luminance(dielectric_oblique, 32, 16);
+  EXPECT_GT(steep, 0.0);
+  EXPECT_GT(grazing, 2.0 * steep);
+}
+
+}  // namespace
+}  // namespace airis::engine
