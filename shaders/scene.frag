@@ -96,13 +96,14 @@ void main() {
   vec3 sky_scale = vec3(u_ambient * 1.4 * occlusion);
   // Metallic-roughness (glTF 2.0): metals reflect their base colour and have no diffuse part;
   // dielectrics reflect 4% at normal incidence. Diffuse here is albedo times the light (the
-  // Lambertian 1/pi folded into the light's scale), so the sun's specular is pi times the BRDF.
+  // Lambertian 1/pi folded into the light's scale), so the sun's specular is pi times the BRDF
+  // (SpecularSun).
   vec3 diffuse = s.albedo * (1.0 - s.metallic);
   vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
   vec3 view = -normalize(v_p_C);
   vec3 rgb = diffuse * (sun_light * sun * visibility + sky_scale * sky_light);
   if (visibility > 0.0) {
-    rgb += sun_light * kPi * SpecularSun(n, view, u_to_sun_C, roughness, f0) * visibility;
+    rgb += sun_light * SpecularSun(n, view, u_to_sun_C, roughness, f0) * visibility;
   }
   // The sky seen in the mirror direction (the ground's bounce below the horizon), blurred toward
   // the sky's mean with roughness: image-based light from the same sky the background shows.

@@ -229,13 +229,13 @@ Surface ApplyPattern(Surface s, uint id, vec3 p, vec3 n, vec3 size, vec2 pattern
   return s;
 }
 
-const float kPi = 3.14159265358979;
-
-// Specular reflectance toward the viewer of light from `l` (n, v, l unit vectors, cosines
-// clamped): the Cook-Torrance microfacet BRDF times cos(theta_l), with the GGX (Trowbridge-Reitz)
-// distribution D = a^2 / (pi (cos^2 theta_h (a^2 - 1) + 1)^2), a = roughness^2 (Burley 2012), Smith's
-// height-correlated visibility V = 0.5 / (n.l sqrt((n.v)^2 (1 - a^2) + a^2) + n.v sqrt((n.l)^2 (1 - a^2)
-// + a^2)) (Heitz 2014, eq. 99) and Schlick's Fresnel F = F0 + (1 - F0)(1 - v.h)^5.
+// Pi times the specular reflectance toward the viewer of light from `l` (n, v, l unit vectors,
+// cosines clamped): the Cook-Torrance microfacet BRDF times cos(theta_l), with the GGX
+// (Trowbridge-Reitz) distribution D = a^2 / (pi (cos^2 theta_h (a^2 - 1) + 1)^2), a = roughness^2
+// (Burley 2012); Smith's height-correlated visibility term in Hammon's approximation without square
+// roots, V = 0.5 / mix(2 n.l n.v, n.l + n.v, a) ("PBR Diffuse Lighting for GGX+Smith
+// Microsurfaces", GDC 2017; Heitz 2014, eq. 99 is the exact form); Schlick's Fresnel
+// F = F0 + (1 - F0)(1 - v.h)^5. The pi cancels D's, as the diffuse term leaves out its 1 / pi.
 vec3 SpecularSun(vec3 n, vec3 v, vec3 l, float roughness, vec3 f0) {
   vec3 h = normalize(v + l);
   float nl = max(dot(n, l), 0.0);
@@ -244,10 +244,11 @@ vec3 SpecularSun(vec3 n, vec3 v, vec3 l, float roughness, vec3 f0) {
   float a = roughness * roughness;
   float a2 = a * a;
   float d = nh * nh * (a2 - 1.0) + 1.0;
-  float D = a2 / (kPi * d * d);
-  float V = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2) + 1e-6);
-  vec3 F = f0 + (1.0 - f0) * pow(1.0 - max(dot(v, h), 0.0), 5.0);
-  return D * V * F * nl;
+  float V = 0.5 / (mix(2.0 * nl * nv, nl + nv, a) + 1e-6);
+  float m = 1.0 - max(dot(v, h), 0.0);
+  float m2 = m * m;
+  vec3 F = f0 + (1.0 - f0) * (m2 * m2 * m);
+  return (a2 / (d * d)) * V * nl * F;
 }
 
 // The directional albedo of the same BRDF under uniform light (the scale and bias of F0 integrated
