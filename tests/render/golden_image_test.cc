@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tests/render/render_test_util.h"
@@ -47,18 +48,14 @@ constexpr double kMeanAbsToleranceLevels = 1.0;  // per channel, 8-bit levels
 constexpr double kOutlierFraction = 0.01;  // pixels with a channel off by more than kOutlierLevels
 constexpr int kOutlierLevels = 16;
 
-TEST(GoldenImageTest, LitSceneMatchesTheGoldenImage) {
-  EglContext& context = testing::SharedContext();
-  GpuScene gpu(MakeGoldenScene(WriteCheckerTexture()));
-  const CameraIntrinsics k = CameraIntrinsics::FromHorizontalFov(160, 120, 75.0);
-  CameraRenderer renderer(context, k, RenderOutputs{});
-  CameraFrame frame;
-  renderer.Render(gpu, testing::LookPose({0.0, 0.0, -6.0}, 0.05, -0.12), 0, frame);
-  cv::Mat rgba(k.height_px, k.width_px, CV_8UC4, frame.rgba.pixels.data());
+// Compares `frame`'s colour image with tests/render/golden/NAME.png (AIRIS_UPDATE_GOLDEN=1 rewrites
+// it); on failure writes the render beside the test's temporary files.
+void ExpectMatchesGolden(const CameraFrame& frame, const std::string& name) {
+  cv::Mat rgba(frame.rgba.height, frame.rgba.width, CV_8UC4,
+               const_cast<std::uint8_t*>(frame.rgba.pixels.data()));
   cv::Mat bgr;
   cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
-
-  const std::string golden_path = std::string(AIRIS_RENDER_GOLDEN_DIR) + "/lit_scene.png";
+  const std::string golden_path = std::string(AIRIS_RENDER_GOLDEN_DIR) + "/" + name + ".png";
   const char* update = std::getenv("AIRIS_UPDATE_GOLDEN");
   if (update != nullptr && std::string(update) == "1") {
     ASSERT_TRUE(cv::imwrite(golden_path, bgr)) << golden_path;
@@ -72,19 +69,93 @@ TEST(GoldenImageTest, LitSceneMatchesTheGoldenImage) {
   cv::absdiff(golden, bgr, diff);
   const cv::Scalar mean = cv::mean(diff);
   for (int c = 0; c < 3; ++c) EXPECT_LE(mean[c], kMeanAbsToleranceLevels) << "channel " << c;
-  cv::Mat max_channel;
   cv::Mat channels[3];
   cv::split(diff, channels);
-  max_channel = cv::max(channels[0], cv::max(channels[1], channels[2]));
+  const cv::Mat max_channel = cv::max(channels[0], cv::max(channels[1], channels[2]));
   const double outliers = cv::countNonZero(max_channel > kOutlierLevels);
   EXPECT_LE(outliers / static_cast<double>(diff.total()), kOutlierFraction);
-  if (HasFailure()) {
+  if (::testing::Test::HasFailure()) {
     const std::string actual_path =
-        (airis::testing::TestTempDir() / "airis_lit_scene_actual.png").string();
+        (airis::testing::TestTempDir() / ("airis_" + name + "_actual.png")).string();
     cv::imwrite(actual_path, bgr);
     ADD_FAILURE() << "rendered image differs from " << golden_path << "; this render is at "
                   << actual_path;
   }
+}
+
+const CameraIntrinsics kGoldenCamera = CameraIntrinsics::FromHorizontalFov(160, 120, 75.0);
+const Eigen::Isometry3d kGoldenPose = testing::LookPose({0.0, 0.0, -6.0}, 0.05, -0.12);
+
+CameraFrame RenderGolden(const StaticScene& scene) {
+  EglContext& context = testing::SharedContext();
+  GpuScene gpu(scene);
+  CameraRenderer renderer(context, kGoldenCamera, RenderOutputs{});
+  CameraFrame frame;
+  renderer.Render(gpu, kGoldenPose, 0, frame);
+  return frame;
+}
+
+TEST(GoldenImageTest, LitSceneMatchesTheGoldenImage) {
+  ExpectMatchesGolden(RenderGolden(MakeGoldenScene(WriteCheckerTexture())), "lit_scene");
+}
+
+TEST(GoldenImageTest, SunShadowsMatchTheGoldenImage) {
+  // The same scene under a clear afternoon sky, the sun behind the boxes' left casting shadows
+  // toward the camera.
+  StaticScene scene = MakeGoldenScene(WriteCheckerTexture());
+  scene.lighting.sky = SkyModel::kClear;
+  scene.lighting.sun_direction_W = Eigen::Vector3d(-0.6, 0.5, 0.62).normalized();
+  scene.lighting.shadows.enabled = true;
+  ExpectMatchesGolden(RenderGolden(scene), "sun_shadows");
+}
+
+TEST(GoldenImageTest, OvercastHeightFogMatchesTheGoldenImage) {
+  StaticScene scene = MakeGoldenScene(WriteCheckerTexture());
+  scene.lighting.sky = SkyModel::kOvercast;
+  scene.lighting.fog_distance_m = 25.0f;
+  scene.lighting.fog_height_m = 6.0f;
+  ExpectMatchesGolden(RenderGolden(scene), "overcast_height_fog");
+}
+
+TEST(GoldenImageTest, MaterialsMatchTheGoldenImage) {
+  // Grass, an asphalt slab with its markings, a sidewalk, a facade, a steel box and a crown.
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 400.0, 1);
+  scene.materials.back().base_color_rgb = {0.33f, 0.42f, 0.27f};
+  const auto pattern = [&](SurfacePattern p, Eigen::Vector2f size_m, float roughness) {
+    scene.materials.back().pattern = p;
+    scene.materials.back().pattern_size_m = size_m;
+    scene.materials.back().roughness = roughness;
+  };
+  pattern(SurfacePattern::kGrass, {12.0f, 0.5f}, 0.9f);
+  testing::AddBox(scene, {30.0, 0.0, 0.0}, {60.0, 8.0, 0.1}, 4, 2, {0.25f, 0.25f, 0.26f});
+  pattern(SurfacePattern::kAsphalt, {3.5f, 9.0f}, 0.85f);
+  testing::AddBox(scene, {30.0, -12.0, -9.0}, {14.0, 10.0, 18.0}, 2, 3, {0.75f, 0.7f, 0.62f});
+  pattern(SurfacePattern::kFacade, {3.0f, 2.8f}, 0.85f);
+  testing::AddBox(scene, {30.0, 5.5, -0.05}, {60.0, 3.0, 0.2}, 4, 4, {0.6f, 0.6f, 0.58f});
+  pattern(SurfacePattern::kSidewalk, {1.2f, 1.2f}, 0.8f);
+  testing::AddBox(scene, {14.0, 5.0, -1.0}, {2.0, 2.0, 2.0}, 3, 5, {0.9f, 0.9f, 0.92f});
+  scene.materials.back().metallic = 1.0f;
+  scene.materials.back().roughness = 0.35f;
+  testing::AddBox(scene, {18.0, -4.0, -2.5}, {3.0, 3.0, 3.0}, 5, 6, {0.2f, 0.45f, 0.15f});
+  pattern(SurfacePattern::kFoliage, {0.9f, 0.12f}, 0.85f);
+  scene.lighting.sky = SkyModel::kClear;
+  scene.lighting.sun_direction_W = Eigen::Vector3d(0.5, 0.6, 0.62).normalized();
+  ExpectMatchesGolden(RenderGolden(scene), "materials");
+}
+
+TEST(GoldenImageTest, SensorEffectsMatchTheGoldenImage) {
+  // The lit scene 1 EV brighter, vignetted and with seeded sensor noise (a 10-bit sensor of 2,000
+  // electrons: visible grain).
+  CameraFrame frame = RenderGolden(MakeGoldenScene(WriteCheckerTexture()));
+  CameraEffectsConfig config;
+  config.exposure_ev = 1.0;
+  config.vignetting = true;
+  config.noise = true;
+  config.full_well_e = 2000.0;
+  const CameraEffects effects(config, kGoldenCamera, 7);
+  effects.Apply(frame.rgba, 0);
+  ExpectMatchesGolden(frame, "sensor_effects");
 }
 
 }  // namespace
