@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <filesystem>
+#include <initializer_list>
+#include <string>
 #include <vector>
 
 #include "engine/core/limits.h"
@@ -39,6 +41,32 @@ Eigen::Matrix3f AxesRotation(MeshAxes axes) {
   return R;
 }
 
+// The absolute path of the first texture of `types` that material `in` (named `material`) of the
+// mesh file at `mesh_path` names, "" when it names none. Throws MeshLoadError when the file is
+// missing or no image the renderer reads.
+std::string TexturePath(const aiMaterial& in, std::initializer_list<aiTextureType> types,
+                        const std::string& material, const std::string& mesh_path) {
+  aiString texture;
+  for (aiTextureType type : types) {
+    if (in.GetTexture(type, 0, &texture) == AI_SUCCESS) break;
+    texture.Clear();
+  }
+  const std::string t = texture.C_Str();
+  // "*N" names a texture embedded in the file (GLB); the renderer does not read those yet.
+  if (t.empty() || t[0] == '*') return "";
+  const fs::path resolved = (fs::path(mesh_path).parent_path() / t).lexically_normal();
+  if (!fs::is_regular_file(resolved)) {
+    throw MeshLoadError("texture file not found: " + resolved.string() + " (named by material '" +
+                        material + "' of " + mesh_path + ")");
+  }
+  const std::string problem = engine::CheckTextureFile(resolved.string());
+  if (!problem.empty()) {
+    throw MeshLoadError("texture " + resolved.string() + " (named by material '" + material +
+                        "'): " + problem);
+  }
+  return fs::absolute(resolved).string();
+}
+
 engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path) {
   engine::Material out;
   aiString name;
@@ -51,7 +79,9 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
   // glTF 2.0's metallic-roughness factors (pbrMetallicRoughness; the format's defaults are 1 and
   // 1). Other formats keep the default rough dielectric: their importers' guesses differ.
   const std::string extension = fs::path(mesh_path).extension().string();
-  if (extension == ".gltf" || extension == ".glb" || extension == ".GLTF" || extension == ".GLB") {
+  const bool gltf =
+      extension == ".gltf" || extension == ".glb" || extension == ".GLTF" || extension == ".GLB";
+  if (gltf) {
     float factor = 1.0f;
     if (in.Get(AI_MATKEY_ROUGHNESS_FACTOR, factor) == AI_SUCCESS) {
       out.roughness = std::clamp(factor, 0.02f, 1.0f);
@@ -60,24 +90,13 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
       out.metallic = std::clamp(factor, 0.0f, 1.0f);
     }
   }
-  aiString texture;
-  if (in.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
-      in.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS) {
-    const std::string t = texture.C_Str();
-    // "*N" names a texture embedded in the file (GLB); the renderer does not read those yet.
-    if (!t.empty() && t[0] != '*') {
-      const fs::path resolved = (fs::path(mesh_path).parent_path() / t).lexically_normal();
-      if (!fs::is_regular_file(resolved)) {
-        throw MeshLoadError("texture file not found: " + resolved.string() +
-                            " (named by material '" + out.name + "' of " + mesh_path + ")");
-      }
-      const std::string problem = engine::CheckTextureFile(resolved.string());
-      if (!problem.empty()) {
-        throw MeshLoadError("texture " + resolved.string() + " (named by material '" + out.name +
-                            "'): " + problem);
-      }
-      out.texture_path = fs::absolute(resolved).string();
-    }
+  out.texture_path =
+      TexturePath(in, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, out.name, mesh_path);
+  if (gltf) {
+    // glTF 2.0's normal and metallic-roughness maps (assimp files the latter as metalness).
+    out.normal_texture_path = TexturePath(in, {aiTextureType_NORMALS}, out.name, mesh_path);
+    out.metallic_roughness_texture_path =
+        TexturePath(in, {aiTextureType_METALNESS}, out.name, mesh_path);
   }
   return out;
 }

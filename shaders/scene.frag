@@ -4,6 +4,8 @@
 // the specular part), optional texture, procedural surface patterns, and fog (uniform or thinning with
 // height); written linear into an sRGB8 target, which encodes to sRGB.
 // Depths: written from the interpolated camera-frame position, not the non-linear depth buffer.
+// TEXTURED (0 or 1, defined by the renderer) says whether the parts drawn have maps (colour, normal,
+// metallic-roughness), so that untextured ones sample none.
 // PATTERN (defined by the renderer) is the surface pattern of every part the program draws: a
 // constant, so that the compiler keeps only that pattern's code (llvmpipe runs every branch of a
 // shader for every pixel, taken or not: one program holding all patterns cost each pixel all of them).
@@ -37,8 +39,14 @@ layout(location = 4) out uint o_instance;
 layout(location = 5) out vec4 o_normal;
 #endif
 
+#if TEXTURED
 uniform bool u_has_texture;
 uniform mediump sampler2D u_texture;     // sRGB texture, decoded to linear by the sampler
+uniform bool u_has_normal_map;
+uniform mediump sampler2D u_normal_map;  // tangent space, (n + 1) / 2
+uniform bool u_has_metallic_roughness_map;
+uniform mediump sampler2D u_metallic_roughness_map;  // roughness in green, metalness in blue
+#endif
 uniform vec3 u_to_sun_C;         // unit vector toward the sun, camera frame
 uniform vec3 u_up_C;             // world up (-z of NED), camera frame
 uniform float u_camera_height_m; // camera height above the world origin (-z of NED)
@@ -77,7 +85,18 @@ void main() {
   if (!gl_FrontFacing) n = -n;
 #ifdef OUT_RGB
   Surface s = Surface(v_base_color, float(v_surface.x) / 255.0, float(v_surface.y) / 255.0);
+  vec3 n_geometry = n;
+#if TEXTURED
   if (u_has_texture) s.albedo *= texture(u_texture, v_uv).rgb;
+  if (u_has_metallic_roughness_map) {
+    vec3 mr = texture(u_metallic_roughness_map, v_uv).rgb;
+    s.roughness *= mr.g;
+    s.metallic *= mr.b;
+  }
+  if (u_has_normal_map) {
+    n = MappedNormal(n, v_p_C, v_uv, texture(u_normal_map, v_uv).xyz * 2.0 - 1.0);
+  }
+#endif
 #if PATTERN != 0
   s = ApplyPattern(s, uint(PATTERN), v_p_M, normalize(v_n_M), v_size_M, v_pattern_size_m, v_ids.y);
 #endif
@@ -143,6 +162,6 @@ void main() {
   o_instance = v_ids.y;
 #endif
 #ifdef OUT_NORMAL
-  o_normal = vec4(n, 0.0);
+  o_normal = vec4(n_geometry, 0.0);
 #endif
 }

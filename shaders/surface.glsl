@@ -260,3 +260,22 @@ vec3 EnvironmentReflectance(float nv, float roughness, vec3 f0) {
   vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
   return f0 * ab.x + ab.y;
 }
+
+// The normal a tangent-space normal map gives (`mapped`: x along the texture's u, y along its v, z
+// along the surface normal n) at camera-frame point p with texture coordinates uv, in the frame
+// the screen-space derivatives of p and uv span (Schuler, "Normal Mapping without Precomputed
+// Tangents", ShaderX5 2006 / 2013): no tangents stored per vertex. The sign of the derivatives'
+// determinant keeps the frame right-handed whichever way the image's rows run.
+vec3 MappedNormal(vec3 n, vec3 p, vec2 uv, vec3 mapped) {
+  vec3 dp1 = dFdx(p);
+  vec3 dp2 = dFdy(p);
+  vec2 duv1 = dFdx(uv);
+  vec2 duv2 = dFdy(uv);
+  vec3 dp2perp = cross(dp2, n);
+  vec3 dp1perp = cross(n, dp1);
+  float orientation = dot(dp1, dp2perp) >= 0.0 ? 1.0 : -1.0;
+  vec3 t = (dp2perp * duv1.x + dp1perp * duv2.x) * orientation;
+  vec3 b = (dp2perp * duv1.y + dp1perp * duv2.y) * orientation;
+  float scale = inversesqrt(max(max(dot(t, t), dot(b, b)), 1e-30));
+  return normalize(mat3(t * scale, b * scale, n) * mapped);
+}

@@ -300,19 +300,27 @@ void CameraRenderer::DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& 
   last_shadow_triangles_ = sun_shadow_->last_triangles();
 }
 
-const GlProgram& CameraRenderer::SceneProgram(SurfacePattern pattern) {
-  // Patterns only colour the RGB image: without it every part is drawn by the plain program.
-  if (!outputs_.rgb) pattern = SurfacePattern::kPlain;
-  GlProgram& program = scene_programs_[static_cast<std::size_t>(pattern)];
+std::size_t CameraRenderer::SceneProgramIndex(const GpuScene::Batch& batch) const {
+  // Patterns and maps only colour the RGB image: without it every part is drawn by one program.
+  if (!outputs_.rgb) return 0;
+  return 2 * static_cast<std::size_t>(batch.pattern) + (batch.textured_material >= 0 ? 1 : 0);
+}
+
+const GlProgram& CameraRenderer::SceneProgram(std::size_t index) {
+  GlProgram& program = scene_programs_[index];
   if (program.id() != 0) return program;
   const std::string fragment =
       std::string(shaders::k_surface_glsl) + std::string(shaders::k_scene_frag);
-  const std::string defines =
-      scene_defines_ + "#define PATTERN " + std::to_string(static_cast<int>(pattern)) + "\n";
+  const std::string defines = scene_defines_ + "#define PATTERN " + std::to_string(index / 2) +
+                              "\n#define TEXTURED " + std::to_string(index % 2) + "\n";
   program = GlProgram("scene", shaders::k_scene_vert, fragment, defines);
   glUseProgram(program.id());
   glUniform1i(program.Uniform("u_texture"), 0);
-  if (outputs_.rgb) glUniform1i(program.Uniform("u_shadow_map"), 1);
+  if (outputs_.rgb) {
+    glUniform1i(program.Uniform("u_shadow_map"), 1);
+    glUniform1i(program.Uniform("u_normal_map"), 2);
+    glUniform1i(program.Uniform("u_metallic_roughness_map"), 3);
+  }
   return program;
 }
 
@@ -421,22 +429,25 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   glFrontFace(GL_CW);
   glDisable(GL_BLEND);
 
-  // Each draw by the program of its batch's pattern, given this frame's uniforms on first use.
+  // Each draw by the program of its batch's pattern and maps, given this frame's uniforms on first
+  // use.
   const FrameUniforms frame{CalcProjection(k), to_sun_C, up_C, camera_height_m, sky, light};
-  std::array<bool, kSurfacePatterns> ready{};
+  std::array<bool, kScenePrograms> ready{};
   const GlProgram* in_use = nullptr;
   for (const VisibleSet::Draw& d : visible_.draws) {
-    const SurfacePattern pattern = scene.batches()[d.batch].pattern;
-    const GlProgram& program = SceneProgram(pattern);
+    const std::size_t index = SceneProgramIndex(scene.batches()[d.batch]);
+    const GlProgram& program = SceneProgram(index);
     if (&program != in_use) {
       glUseProgram(program.id());
       in_use = &program;
     }
-    if (!ready[static_cast<std::size_t>(pattern)]) {
+    if (!ready[index]) {
       SetSceneUniforms(program, frame);
-      ready[static_cast<std::size_t>(pattern)] = true;
+      ready[index] = true;
     }
-    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count, program.Uniform("u_has_texture"));
+    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count,
+                    {program.Uniform("u_has_texture"), program.Uniform("u_has_normal_map"),
+                     program.Uniform("u_has_metallic_roughness_map")});
   }
   last_draw_calls_ = visible_.draws.size();
   last_triangles_ = visible_.triangles;

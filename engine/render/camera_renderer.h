@@ -123,8 +123,11 @@ class CameraRenderer {
     const SkyShading& sky;
     const SceneLighting& light;
   };
-  // The scene program that draws parts of `pattern` (made on first use; see scene.frag's PATTERN).
-  const GlProgram& SceneProgram(SurfacePattern pattern);
+  // Scene programs: one per surface pattern, with and without maps (scene.frag's PATTERN and
+  // TEXTURED), made on first use. The index of the one that draws `batch`, and that program.
+  static constexpr std::size_t kScenePrograms = 2 * kSurfacePatterns;
+  std::size_t SceneProgramIndex(const GpuScene::Batch& batch) const;
+  const GlProgram& SceneProgram(std::size_t index);
   // `program`'s uniforms for this frame (the program in use).
   void SetSceneUniforms(const GlProgram& program, const FrameUniforms& frame);
   void SetShadowUniforms(const GlProgram& program, const std::optional<ShadowFrame>& shadow,
@@ -143,7 +146,7 @@ class CameraRenderer {
   std::optional<SceneLighting> lighting_;  // replaces the scene's when set
   bool distorted_ = false;
   std::string scene_defines_;  // the outputs' defines of every scene program
-  std::array<GlProgram, kSurfacePatterns> scene_programs_;  // by SurfacePattern
+  std::array<GlProgram, kScenePrograms> scene_programs_;  // by SceneProgramIndex
   GlProgram sky_program_;
   GlProgram remap_program_;
   RenderTarget geometry_target_;

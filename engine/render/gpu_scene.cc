@@ -26,21 +26,23 @@ struct Vertex {
   float uv[2];
 };
 
-GLuint UploadTexture(const Material& material) {
+// Uploads the image at `path` (mipmapped, repeating): colour (`srgb`, decoded to linear by the
+// sampler) or data such as normals (linear).
+GLuint UploadTexture(const std::string& path, bool srgb) {
   // Scene loading checked the file (CheckTextureFile); it may have changed since.
-  const cv::Mat bgr = cv::imread(material.texture_path, cv::IMREAD_COLOR);
-  if (bgr.empty()) {
-    throw ConfigError({material.texture_path, 0, 0}, "", "cannot read the texture image");
-  }
+  const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+  if (bgr.empty()) throw ConfigError({path, 0, 0}, "", "cannot read the texture image");
   cv::Mat rgba;
   cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
+  // Texture coordinate v = 0 is the image's bottom row (OpenGL's convention, and what assimp
+  // gives for every format, glTF included): GL takes the rows bottom first.
+  cv::flip(rgba, rgba, 0);
   GLuint texture = 0;
   glGenTextures(1, &texture);
   glBindTexture(GL_TEXTURE_2D, texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  // Image row 0 is texture coordinate v = 0 (the glTF convention).
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, rgba.cols, rgba.rows, 0, GL_RGBA,
-               GL_UNSIGNED_BYTE, rgba.ptr());
+  glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, rgba.cols, rgba.rows, 0,
+               GL_RGBA, GL_UNSIGNED_BYTE, rgba.ptr());
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -128,7 +130,12 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     gpu.pattern = m.pattern;
     gpu.params.pattern_size_m[0] = m.pattern_size_m.x();
     gpu.params.pattern_size_m[1] = m.pattern_size_m.y();
-    gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m);
+    gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m.texture_path, true);
+    if (!m.normal_texture_path.empty())
+      gpu.normal_map = UploadTexture(m.normal_texture_path, false);
+    if (!m.metallic_roughness_texture_path.empty()) {
+      gpu.metallic_roughness_map = UploadTexture(m.metallic_roughness_texture_path, false);
+    }
     materials_.push_back(gpu);
   }
 
@@ -190,8 +197,9 @@ std::uint32_t GpuScene::BatchOf(
     std::uint32_t mesh, std::uint32_t material,
     std::map<std::pair<std::uint32_t, std::int32_t>, std::uint32_t>& batch_of) {
   AIRIS_DEMAND(mesh < meshes_.size() && material < materials_.size());
-  const std::int32_t textured =
-      materials_[material].texture != 0 ? static_cast<std::int32_t>(material) : -1;
+  const GpuMaterial& m = materials_[material];
+  const bool has_maps = m.texture != 0 || m.normal_map != 0 || m.metallic_roughness_map != 0;
+  const std::int32_t textured = has_maps ? static_cast<std::int32_t>(material) : -1;
   // Untextured materials share a batch per pattern (keys -1 - pattern); a textured one has its own.
   const SurfacePattern pattern = materials_[material].pattern;
   const std::int32_t key = textured >= 0 ? textured : -1 - static_cast<std::int32_t>(pattern);
@@ -290,7 +298,9 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &m.index_buffer);
   }
   for (const GpuMaterial& m : materials_) {
-    if (m.texture != 0) glDeleteTextures(1, &m.texture);
+    for (GLuint texture : {m.texture, m.normal_map, m.metallic_roughness_map}) {
+      if (texture != 0) glDeleteTextures(1, &texture);
+    }
   }
 }
 
@@ -428,14 +438,23 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
 }
 
 void GpuScene::DrawBatch(std::uint32_t b, GLuint instance_buffer, std::uint32_t first,
-                         std::uint32_t count, GLint has_texture_uniform) const {
+                         std::uint32_t count, const MaterialUniforms& uniforms) const {
   const Batch& batch = batches_[b];
   const Mesh& mesh = meshes_[batch.mesh];
-  const GLuint texture =
-      batch.textured_material >= 0 ? materials_[batch.textured_material].texture : 0;
-  glUniform1i(has_texture_uniform, texture != 0 ? 1 : 0);
+  const GpuMaterial none{};
+  const GpuMaterial& m = batch.textured_material >= 0 ? materials_[batch.textured_material] : none;
+  // Units 0, 2 and 3 (unit 1 holds the sun's shadow map).
+  const std::pair<GLint, GLuint> maps[] = {
+      {uniforms.has_texture, m.texture},
+      {uniforms.has_normal_map, m.normal_map},
+      {uniforms.has_metallic_roughness_map, m.metallic_roughness_map}};
+  const GLenum units[] = {GL_TEXTURE0, GL_TEXTURE2, GL_TEXTURE3};
+  for (int i = 0; i < 3; ++i) {
+    glUniform1i(maps[i].first, maps[i].second != 0 ? 1 : 0);
+    glActiveTexture(units[i]);
+    glBindTexture(GL_TEXTURE_2D, maps[i].second);
+  }
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, texture);
   glBindVertexArray(mesh.vao);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer);
   const std::size_t base = static_cast<std::size_t>(first) * sizeof(GpuInstance);

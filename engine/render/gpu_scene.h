@@ -85,7 +85,7 @@ class GpuScene {
   /// parts also holds its parts, placed in their body's frame (FRD).
   struct Batch {
     std::uint32_t mesh = 0;
-    std::int32_t textured_material = -1;  ///< material whose texture the batch binds, -1 for none
+    std::int32_t textured_material = -1;  ///< material whose maps the batch binds, -1 for none
     /// The pattern of its materials: drawn by the program with that pattern compiled in.
     SurfacePattern pattern = SurfacePattern::kPlain;
     bool large =
@@ -110,11 +110,17 @@ class GpuScene {
                       const BodyPoses& bodies, VisibleSet& out, const DetailLimit& detail = {},
                       bool shadow_casters = false) const;
 
+  /// Where the program in use takes which of a material's maps it has.
+  struct MaterialUniforms {
+    GLint has_texture = -1;
+    GLint has_normal_map = -1;
+    GLint has_metallic_roughness_map = -1;
+  };
   /// Binds the vertex array of batch `b`'s mesh, points the per-instance attributes at
-  /// `instance_buffer` from instance `first`, binds the batch's texture and issues one
-  /// glDrawElementsInstanced.
+  /// `instance_buffer` from instance `first`, binds the batch's maps (colour on texture unit 0,
+  /// normals on 2, metallic-roughness on 3) and issues one glDrawElementsInstanced.
   void DrawBatch(std::uint32_t b, GLuint instance_buffer, std::uint32_t first, std::uint32_t count,
-                 GLint has_texture_uniform) const;
+                 const MaterialUniforms& uniforms) const;
 
   const std::vector<Batch>& batches() const { return batches_; }
   const SceneLighting& lighting() const { return lighting_; }
@@ -138,6 +144,8 @@ class GpuScene {
     GpuMaterialParams params;
     SurfacePattern pattern = SurfacePattern::kPlain;
     GLuint texture = 0;
+    GLuint normal_map = 0;
+    GLuint metallic_roughness_map = 0;
   };
   // A part of a look: drawn in `batch`, placed in the model's frame, coloured by `material`.
   struct ShapePart {

@@ -185,7 +185,7 @@ void SunShadow::Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
   const Eigen::Matrix4f M = frame.shadow_from_C.cast<float>();
   glUniformMatrix4fv(program_.Uniform("u_shadow_from_C"), 1, GL_FALSE, M.data());
   for (const VisibleSet::Draw& d : visible_.draws) {
-    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count, -1);
+    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count, {});
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
   CheckGl("shadow map");

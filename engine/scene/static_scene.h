@@ -54,11 +54,11 @@ std::span<const EnumName<SurfacePattern>> EnumNames(SurfacePattern);
 
 /// Surface appearance for rendering and contact response.
 struct Material {
-  std::string name;
+  std::string name{};
   Eigen::Vector3f base_color_rgb = Eigen::Vector3f::Constant(0.7f);  ///< linear [0, 1]
-  std::string texture_path;  ///< absolute path of a texture image, empty if none
-  float restitution = 0.3f;  ///< coefficient of restitution for contacts, [0, 1]
-  float friction = 0.6f;     ///< Coulomb friction coefficient, >= 0
+  std::string texture_path{};  ///< absolute path of a texture image, empty if none
+  float restitution = 0.3f;    ///< coefficient of restitution for contacts, [0, 1]
+  float friction = 0.6f;       ///< Coulomb friction coefficient, >= 0
   /// Metallic-roughness shading (the glTF 2.0 model): perceptual roughness in [0.02, 1] and
   /// metalness in [0, 1]. The default is a rough dielectric (paint, concrete, foliage).
   float roughness = 0.9f;
@@ -69,6 +69,11 @@ struct Material {
   /// grass, soil and rock the sizes of their large and small variation; bark furrow spacing and
   /// length; foliage clump size and leaf size.
   Eigen::Vector2f pattern_size_m = Eigen::Vector2f(3.0f, 3.0f);
+  /// glTF 2.0's maps, absolute paths or empty: a tangent-space normal map (x along the texture's
+  /// u, y along its v, z out of the surface, each (c + 1) / 2 in 8 bits) and a metallic-roughness
+  /// map (roughness times its green channel, metalness times its blue one).
+  std::string normal_texture_path{};
+  std::string metallic_roughness_texture_path{};
 };
 
 /// Analytic shape of a mesh when it has one, so collision and ray casting can use exact primitives.
@@ -84,7 +89,9 @@ struct TriangleMesh {
   Primitive primitive = Primitive::kNone;  ///< the analytic shape this mesh tessellates, if any
   std::vector<Eigen::Vector3f> positions;  ///< metres
   std::vector<Eigen::Vector3f> normals;    ///< unit, per vertex (same count as positions)
-  std::vector<Eigen::Vector2f> uvs;        ///< texture coordinates (same count, or empty)
+  /// Texture coordinates (same count, or empty): v = 0 is the image's bottom row (OpenGL's and
+  /// assimp's convention for every format).
+  std::vector<Eigen::Vector2f> uvs;
   std::vector<std::uint32_t> indices;  ///< three per triangle, counter-clockwise seen from outside
   Eigen::AlignedBox3f bounds;          ///< of positions
 

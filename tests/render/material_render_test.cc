@@ -7,10 +7,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
 #include <vector>
 
 #include "engine/render/camera_renderer.h"
 #include "engine/render/gpu_scene.h"
+#include "tests/fixtures/temp_dir.h"
 #include "tests/render/render_test_util.h"
 
 namespace airis::engine {
@@ -150,6 +154,123 @@ TEST(MaterialRenderTest, BlackMetalIsAlmostBlackFaceOnAndDielectricsReflectMoreA
   const double grazing = Luminance(dielectric_oblique, 32, 16);
   EXPECT_GT(steep, 0.0);
   EXPECT_GT(grazing, 2.0 * steep);
+}
+
+// Writes a w x h PNG whose every pixel is `rgb` (top half `rgb`, bottom half `bottom_rgb` when
+// given) and returns its path.
+std::string WritePng(const std::string& name, const cv::Vec3b& rgb, int w = 8, int h = 8,
+                     const cv::Vec3b* bottom_rgb = nullptr) {
+  cv::Mat bgr(h, w, CV_8UC3);
+  for (int v = 0; v < h; ++v) {
+    const cv::Vec3b c = bottom_rgb != nullptr && v >= h / 2 ? *bottom_rgb : rgb;
+    for (int u = 0; u < w; ++u) bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(c[2], c[1], c[0]);
+  }
+  const std::string path = (airis::testing::TestTempDir() / name).string();
+  EXPECT_TRUE(cv::imwrite(path, bgr)) << path;
+  return path;
+}
+
+TEST(MaterialRenderTest, TexturesAreUprightOnBoxes) {
+  // GIVEN a box whose texture is red in the image's top half and blue in its bottom half
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddBox(scene, {10.0, 0.0, -5.0}, {2.0, 8.0, 8.0}, 2, 2, Eigen::Vector3f::Ones());
+  const cv::Vec3b blue(0, 0, 255);
+  scene.materials.back().texture_path = WritePng("upright.png", {255, 0, 0}, 8, 8, &blue);
+  SceneLighting light;
+  light.sun_direction_W = Eigen::Vector3d(1.0, 0.0, 0.3).normalized();  // onto the face
+  const auto camera = CameraIntrinsics::FromHorizontalFov(64, 64, 60.0, 0.1, 100.0);
+  const CameraFrame frame = testing::RenderColourDepthLabels(
+      scene, light, camera, testing::LookPose({0.0, 0.0, -5.0}, 0.0, 0.0));
+  // THEN the face seen from the camera is red above and blue below
+  const auto rgb = [&](int u, int v) {
+    const std::size_t i = 4 * (static_cast<std::size_t>(v) * 64 + u);
+    return Eigen::Vector3i(frame.rgba.pixels[i], frame.rgba.pixels[i + 1],
+                           frame.rgba.pixels[i + 2]);
+  };
+  const Eigen::Vector3i top = rgb(32, 22);
+  const Eigen::Vector3i bottom = rgb(32, 42);
+  EXPECT_GT(top.x(), 4 * top.z()) << top.transpose();
+  EXPECT_GT(bottom.z(), 4 * bottom.x()) << bottom.transpose();
+}
+
+// A wall face on to the camera, 10 m north of it, turned by R about its centre, seen under the sun
+// alone (no sky light) shining along `sun_W`, with its material changed by `edit`; returns the
+// centre pixel (linear luminance).
+template <class Edit>
+double WallCentre(const Eigen::Matrix3d& R, const Eigen::Vector3d& sun_W, Edit edit) {
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddBox(scene, {10.5, 0.0, -5.0}, {1.0, 8.0, 8.0}, 2, 2, {0.6f, 0.6f, 0.6f});
+  scene.objects.back().T_WO =
+      Eigen::Translation3d(10.5, 0.0, -5.0) * R * Eigen::Scaling(1.0, 8.0, 8.0);
+  edit(scene.materials.back());
+  SceneLighting light;
+  light.ambient = 0.0f;
+  light.sun_direction_W = sun_W.normalized();
+  const auto camera = CameraIntrinsics::FromHorizontalFov(33, 33, 20.0, 0.1, 100.0);
+  const CameraFrame frame = testing::RenderColourDepthLabels(
+      scene, light, camera, testing::LookPose({0.0, 0.0, -5.0}, 0.0, 0.0));
+  return Luminance(frame, 16, 16);
+}
+
+std::uint8_t EncodeNormal(double c) {
+  return static_cast<std::uint8_t>(std::lround(127.5 * (c + 1.0)));
+}
+
+TEST(MaterialRenderTest, NormalMapTurnsTheShadingNormalAsTurningTheWallWould) {
+  // GIVEN a wall face on (its normal -x, toward the camera), once turned 20 deg toward the sun,
+  // once flat with a normal map holding that turned normal in tangent space: the face's u runs
+  // along +y and its v up (-z), so a normal turned toward -y is the map's (-sin, 0, cos) and one
+  // turned up is (0, sin, cos). Sun from the south-west, level, then from the west, 40 deg up.
+  const double angle = 20.0 * M_PI / 180;
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  struct Case {
+    Eigen::Matrix3d R;
+    Eigen::Vector3d sun_W;
+    cv::Vec3b map;
+  };
+  const Case cases[] = {
+      {Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
+       {0.6, 0.8, 0.0},
+       {EncodeNormal(-std::sin(angle)), EncodeNormal(0.0), EncodeNormal(std::cos(angle))}},
+      {Eigen::AngleAxisd(-angle, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+       {0.5, 0.6, 0.8},
+       {EncodeNormal(0.0), EncodeNormal(std::sin(angle)), EncodeNormal(std::cos(angle))}},
+  };
+  int k = 0;
+  for (const Case& c : cases) {
+    const double turned = WallCentre(c.R, c.sun_W, [](Material&) {});
+    const double flat = WallCentre(I, c.sun_W, [](Material&) {});
+    const std::string map = WritePng("turned_normal" + std::to_string(k++) + ".png", c.map);
+    const double mapped = WallCentre(I, c.sun_W, [&](Material& m) { m.normal_texture_path = map; });
+    // THEN the mapped wall is shaded as the turned one (within the 8-bit map's resolution), not as
+    // the flat one
+    EXPECT_GT(turned, 1.05 * flat) << "case " << k;
+    EXPECT_NEAR(mapped, turned, 0.01 * turned) << "case " << k << ", flat " << flat;
+  }
+}
+
+TEST(MaterialRenderTest, MetallicRoughnessMapScalesTheFactors) {
+  const Eigen::Matrix3d kFaceOn = Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d kSunLevel(0.6, 0.8, 0.0);
+  // GIVEN a wall with metallic 1 and roughness 1, once with a map of green 128 and blue 255
+  // (roughness x 0.5, metalness x 1), once with roughness 0.5 set directly
+  const std::string map = WritePng("metallic_roughness.png", {0, 128, 255});
+  const double mapped = WallCentre(kFaceOn, kSunLevel, [&](Material& m) {
+    m.metallic = 1.0f;
+    m.roughness = 1.0f;
+    m.metallic_roughness_texture_path = map;
+  });
+  const double direct = WallCentre(kFaceOn, kSunLevel, [](Material& m) {
+    m.metallic = 1.0f;
+    m.roughness = 128.0f / 255.0f;
+  });
+  const double rough = WallCentre(kFaceOn, kSunLevel, [](Material& m) {
+    m.metallic = 1.0f;
+    m.roughness = 1.0f;
+  });
+  // THEN the map gives what the factors give
+  EXPECT_NEAR(mapped, direct, 0.01 * direct + 1e-4) << "rough " << rough;
+  EXPECT_GT(std::abs(rough - direct), 0.05 * direct);
 }
 
 }  // namespace

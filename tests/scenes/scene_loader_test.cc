@@ -186,6 +186,77 @@ TEST(SceneLoaderTest, MissingTexturesNameTheResolvedPath) {
       << error;
 }
 
+// A glTF 2.0 quad (two triangles, positions, normals and texture coordinates in quad.bin) whose
+// material names a colour, a normal and a metallic-roughness texture.
+std::string GltfQuad(const std::string& normal_png, const std::string& metallic_roughness_png) {
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2},
+                              "indices": 3, "material": 0}]}],
+  "materials": [{"name": "panel",
+                 "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                          "metallicRoughnessTexture": {"index": 2},
+                                          "metallicFactor": 1, "roughnessFactor": 0.5},
+                 "normalTexture": {"index": 1}}],
+  "textures": [{"source": 0}, {"source": 1}, {"source": 2}],
+  "images": [{"uri": "colour.png"}, {"uri": ")" +
+         normal_png + R"("}, {"uri": ")" + metallic_roughness_png + R"("}],
+  "buffers": [{"byteLength": 140, "uri": "quad.bin"}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                  {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                  {"buffer": 0, "byteOffset": 96, "byteLength": 32},
+                  {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                 "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+                {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+}
+
+std::string QuadBuffer() {
+  const float positions[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  const float normals[12] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  const float uvs[8] = {0, 1, 1, 1, 1, 0, 0, 0};
+  const std::uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
+  std::string b;
+  b.append(reinterpret_cast<const char*>(positions), sizeof(positions));
+  b.append(reinterpret_cast<const char*>(normals), sizeof(normals));
+  b.append(reinterpret_cast<const char*>(uvs), sizeof(uvs));
+  b.append(reinterpret_cast<const char*>(indices), sizeof(indices));
+  return b;
+}
+
+// A 1 x 1 PNG (RGB 128, 128, 255).
+const std::string kPixelPng(
+    "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x01\x00\x00\x00"
+    "\x01\x08\x02\x00\x00\x00\x90\x77\x53\xde\x00\x00\x00\x0c\x49\x44\x41\x54\x78\x9c\x63\x68\x68"
+    "\xf8\x0f\x00\x03\x83\x02\x00\x00\xa5\xfb\x89\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82",
+    69);
+
+TEST(SceneLoaderTest, GltfMaterialsBringTheirNormalAndMetallicRoughnessMaps) {
+  SceneFiles f("gltf_maps");
+  f.Write("m/quad.bin", QuadBuffer());
+  for (const char* png : {"m/colour.png", "m/normal.png", "m/mr.png"}) f.Write(png, kPixelPng);
+  f.Write("m/quad.gltf", GltfQuad("normal.png", "mr.png"));
+  const std::string good = f.Write("good.yaml", "objects:\n  - mesh: m/quad.gltf\n");
+  const Scene s = LoadScene(good);
+  const engine::Model& model = s.static_scene.models[s.static_scene.objects.back().model];
+  const engine::Material& m = s.static_scene.materials[model.parts.at(0).material];
+  EXPECT_EQ(m.texture_path, f.Path("m/colour.png"));
+  EXPECT_EQ(m.normal_texture_path, f.Path("m/normal.png"));
+  EXPECT_EQ(m.metallic_roughness_texture_path, f.Path("m/mr.png"));
+  EXPECT_EQ(m.metallic, 1.0f);
+  EXPECT_EQ(m.roughness, 0.5f);
+  // A missing map is an error naming the resolved path and the material
+  f.Write("m/missing.gltf", GltfQuad("no_such_normal.png", "mr.png"));
+  const std::string bad = f.Write("bad.yaml", "objects:\n  - mesh: m/missing.gltf\n");
+  const std::string error = LoadError(bad);
+  EXPECT_NE(error.find("texture file not found: " + f.Path("m/no_such_normal.png") +
+                       " (named by material 'panel'"),
+            std::string::npos)
+      << error;
+}
+
 TEST(SceneLoaderTest, IncludeCycleNamesTheChain) {
   SceneFiles f("cycle");
   const std::string a = f.Write("a.yaml", "include: [b.yaml]\n");

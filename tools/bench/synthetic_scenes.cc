@@ -27,7 +27,8 @@ std::uint32_t AddSinglePartModel(StaticScene& scene, const std::string& name, st
 
 void AddGround(StaticScene& scene, double size_m, std::uint32_t& next_instance) {
   scene.meshes.push_back(engine::MakePrimitiveMesh(Primitive::kPlane));
-  scene.materials.push_back({"ground", Eigen::Vector3f(0.30f, 0.30f, 0.28f), "", 0.3f, 0.6f});
+  scene.materials.push_back(
+      engine::Material{.name = "ground", .base_color_rgb = Eigen::Vector3f(0.30f, 0.30f, 0.28f)});
   const std::uint32_t model =
       AddSinglePartModel(scene, "ground", static_cast<std::uint32_t>(scene.meshes.size() - 1),
                          static_cast<std::uint32_t>(scene.materials.size() - 1));
@@ -53,7 +54,8 @@ StaticScene MakeSyntheticCity(int buildings, double extent_m, std::uint32_t seed
       {0.62f, 0.58f, 0.52f}, {0.45f, 0.47f, 0.52f}, {0.70f, 0.66f, 0.60f}, {0.52f, 0.36f, 0.28f}};
   std::vector<std::uint32_t> models;
   for (int i = 0; i < 4; ++i) {
-    scene.materials.push_back({"facade" + std::to_string(i), facades[i], "", 0.3f, 0.6f});
+    scene.materials.push_back(
+        engine::Material{.name = "facade" + std::to_string(i), .base_color_rgb = facades[i]});
     models.push_back(AddSinglePartModel(scene, "building" + std::to_string(i), box,
                                         static_cast<std::uint32_t>(scene.materials.size() - 1)));
   }
@@ -91,8 +93,10 @@ StaticScene MakeSyntheticForest(int trees, double extent_m, std::uint32_t seed) 
   scene.meshes.push_back(engine::MakePrimitiveMesh(Primitive::kCone, 10));
   const auto trunk_mesh = static_cast<std::uint32_t>(scene.meshes.size() - 2);
   const auto crown_mesh = trunk_mesh + 1;
-  scene.materials.push_back({"bark", Eigen::Vector3f(0.30f, 0.20f, 0.12f), "", 0.3f, 0.6f});
-  scene.materials.push_back({"leaves", Eigen::Vector3f(0.12f, 0.32f, 0.10f), "", 0.3f, 0.6f});
+  scene.materials.push_back(
+      engine::Material{.name = "bark", .base_color_rgb = Eigen::Vector3f(0.30f, 0.20f, 0.12f)});
+  scene.materials.push_back(
+      engine::Material{.name = "leaves", .base_color_rgb = Eigen::Vector3f(0.12f, 0.32f, 0.10f)});
   const auto bark = static_cast<std::uint32_t>(scene.materials.size() - 2);
   // A tree 1 m tall: trunk over the lower third, crown over the upper 80 % (model origin at the
   // ground).
