@@ -104,6 +104,7 @@ void LightingConfig::Validate() const {
   }
   RequireNonNegative("fog_height_m", fog_height_m);
   RequireInRange("turbidity", turbidity, 2.0, 10.0);
+  RequireInRange("rain_mm_per_h", rain_mm_per_h, 0.0, 200.0);
   ValidateNested(shadows, "shadows");
 }
 

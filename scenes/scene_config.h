@@ -79,7 +79,8 @@ struct LightingConfig {
       visibility_m;           ///< meteorological visibility (m): fog_distance_m = V / 3.912
   double fog_height_m = 0.0;  ///< scale height of the fog's density (m), 0 = uniform
   engine::SkyModel sky = engine::SkyModel::kGradient;
-  double turbidity = 3.0;  ///< the clear sky's haze, 2 to 10
+  double turbidity = 3.0;      ///< the clear sky's haze, 2 to 10
+  double rain_mm_per_h = 0.0;  ///< rain rate, 0 = none
   ShadowConfig shadows;
 
   /// The fog distance these settings give: visibility_m / 3.912 when it is set (Koschmieder's law
@@ -112,6 +113,9 @@ struct LightingConfig {
             "gradient (the colours above), clear (Preetham's daylight sky and the sun through the "
             "atmosphere) or overcast (CIE overcast sky, no direct sun)");
     v.Field("turbidity", turbidity, "haze of the clear sky, 2 (very clear) to 10 (hazy)");
+    v.Field("rain_mm_per_h", rain_mm_per_h,
+            "rain rate (mm/h, 0 to 200; 0 = none): the drops' extinction dims the scene and the "
+            "large ones near the camera show as streaks (docs/rendering.md, \"Rain\")");
     v.Field("shadows", shadows, "the sun's shadows (docs/rendering.md, \"Shadows\")");
   }
   /// Throws InvalidField on a value out of range, or on time_of_day_h given with a sun angle (the

@@ -153,6 +153,7 @@ class SceneAssembler {
     out.fog_height_m = static_cast<float>(c.fog_height_m);
     out.sky = c.sky;
     out.turbidity = static_cast<float>(c.turbidity);
+    out.rain_mm_per_h = static_cast<float>(c.rain_mm_per_h);
     out.shadows.enabled = c.shadows.enabled;
     out.shadows.distance_m = static_cast<float>(c.shadows.distance_m);
     out.shadows.map_size_px = c.shadows.map_size_px;

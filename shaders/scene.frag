@@ -56,6 +56,7 @@ uniform vec3 u_sky_horizon_rgb;
 uniform float u_ambient;         // fraction of the light that comes from the sky
 uniform float u_fog_distance_m;  // 0 = no fog; else 1 / the extinction at the world's z = 0
 uniform float u_fog_height_m;    // scale height of the fog's density; 0 = the same at every height
+uniform float u_rain_extinction_per_m;  // the rain's, uniform
 uniform bool u_has_shadow;       // the shadow map below holds this frame's casters
 uniform highp sampler2DShadow u_shadow_map;
 uniform mat4 u_shadow_from_C;    // camera frame -> the map's clip space
@@ -147,6 +148,8 @@ void main() {
     }
     rgb = mix(rgb, u_sky_horizon_rgb, 1.0 - exp(-tau));
   }
+  // Rain: its drops' extinction, uniform along the ray.
+  rgb = mix(rgb, u_sky_horizon_rgb, 1.0 - exp(-length(v_p_C) * u_rain_extinction_per_m));
   o_rgb = vec4(rgb, 1.0);
 #endif
 #ifdef OUT_DEPTH_PLANAR

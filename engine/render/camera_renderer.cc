@@ -10,6 +10,7 @@
 #include "engine/core/error.h"
 #include "engine/core/limits.h"
 #include "engine/render/daylight.h"
+#include "engine/render/rain.h"
 #include "engine/render/shader_sources.h"
 
 namespace airis::engine {
@@ -336,6 +337,8 @@ void CameraRenderer::SetSceneUniforms(const GlProgram& program, const FrameUnifo
   glUniform1f(program.Uniform("u_ambient"), sky.ambient);
   glUniform1f(program.Uniform("u_fog_distance_m"), frame.light.fog_distance_m);
   glUniform1f(program.Uniform("u_fog_height_m"), frame.light.fog_height_m);
+  glUniform1f(program.Uniform("u_rain_extinction_per_m"),
+              static_cast<float>(rain::CalcExtinction_per_m(frame.light.rain_mm_per_h)));
   SetShadowUniforms(program, shadow_, frame.light);
 }
 
@@ -375,7 +378,55 @@ void CameraRenderer::SetSkyUniforms(const SkyShading& sky, const SceneLighting& 
   glUniform1f(sky_program_.Uniform("u_camera_height_m"), camera_height_m);
 }
 
-void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
+void CameraRenderer::DrawRain(const SceneLighting& light, const SkyShading& sky,
+                              const Eigen::Isometry3d& T_WC, TimeNs time_ns,
+                              const Eigen::Matrix4f& projection) {
+  constexpr double kBox_m = 16.0;          // the cube of drops around the camera
+  constexpr double kMinDiameter_mm = 2.5;  // the drops drawn as streaks
+  constexpr double kMaxDrops = 30000.0;
+  constexpr double kExposure_s = 1.0 / 125.0;
+  constexpr double kPeriod_s =
+      60.0;  // the drops are drawn anew each period (float time stays exact)
+  const double rate = light.rain_mm_per_h;
+  const double drops =
+      std::min(kMaxDrops, rain::CalcDropsPerM3(rate, kMinDiameter_mm) * kBox_m * kBox_m * kBox_m);
+  if (drops < 1.0) return;
+  if (rain_program_.id() == 0) {
+    rain_program_ = GlProgram("rain", shaders::k_rain_vert, shaders::k_rain_frag, "");
+  }
+  const GlProgram& p = rain_program_;
+  glUseProgram(p.id());
+  const double t_s = static_cast<double>(time_ns) * 1e-9;
+  const double period = std::floor(t_s / kPeriod_s);
+  const Eigen::Matrix3f R_CW = T_WC.linear().transpose().cast<float>();
+  Eigen::Vector3f camera_mod;
+  for (int i = 0; i < 3; ++i) {
+    const double x = std::fmod(T_WC.translation()[i], kBox_m);
+    camera_mod[i] = static_cast<float>(x < 0.0 ? x + kBox_m : x);
+  }
+  const CameraIntrinsics& k = render_intrinsics_;
+  const Eigen::Vector3f drop_rgb = 0.5f * (sky.zenith_rgb + sky.horizon_rgb);
+  glUniformMatrix4fv(p.Uniform("u_projection"), 1, GL_FALSE, projection.data());
+  glUniformMatrix3fv(p.Uniform("u_R_CW"), 1, GL_FALSE, R_CW.data());
+  glUniform3fv(p.Uniform("u_camera_mod_m"), 1, camera_mod.data());
+  glUniform1f(p.Uniform("u_box_m"), static_cast<float>(kBox_m));
+  glUniform1f(p.Uniform("u_time_s"), static_cast<float>(t_s - period * kPeriod_s));
+  glUniform1ui(p.Uniform("u_seed"),
+               static_cast<GLuint>(0x5EED0000u ^ static_cast<std::uint32_t>(period)));
+  glUniform1f(p.Uniform("u_min_diameter_mm"), static_cast<float>(kMinDiameter_mm));
+  glUniform1f(p.Uniform("u_slope_per_mm"), static_cast<float>(rain::CalcSlope_per_mm(rate)));
+  glUniform1f(p.Uniform("u_exposure_s"), static_cast<float>(kExposure_s));
+  glUniform2f(p.Uniform("u_pixel_ndc"), 2.0f / static_cast<float>(k.width_px),
+              2.0f / static_cast<float>(k.height_px));
+  glUniform1f(p.Uniform("u_pixel_rad"), static_cast<float>(1.0 / k.fx_px));
+  glUniform3fv(p.Uniform("u_drop_rgb"), 1, drop_rgb.data());
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(drops));
+  glDisable(GL_BLEND);
+}
+
+void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
                                const BodyPoses& bodies) {
   const CameraIntrinsics& k = render_intrinsics_;
   const Eigen::Matrix3d R_CW = T_WC.linear().transpose();
@@ -473,6 +524,7 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
     SetSkyUniforms(sky, light, camera_height_m);
     glBindVertexArray(empty_vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (light.rain_mm_per_h > 0.0f) DrawRain(light, sky, T_WC, time_ns, frame.projection);
     glDepthMask(GL_TRUE);
   }
   glDisable(GL_DEPTH_TEST);
@@ -565,7 +617,7 @@ void CameraRenderer::DeliverFromBytes(int target, const void* bytes, CameraFrame
 void CameraRenderer::Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
                             CameraFrame& out, const BodyPoses& bodies) {
   context_.MakeCurrent();
-  DrawFrame(scene, T_WC, bodies);
+  DrawFrame(scene, T_WC, time_ns, bodies);
   PrepareFrame(out, time_ns, T_WC);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, output_target_.fbo);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
@@ -590,7 +642,7 @@ void CameraRenderer::Submit(const GpuScene& scene, const Eigen::Isometry3d& T_WC
                             const BodyPoses& bodies) {
   AIRIS_DEMAND(in_flight_ < kMaxInFlight);
   context_.MakeCurrent();
-  DrawFrame(scene, T_WC, bodies);
+  DrawFrame(scene, T_WC, time_ns, bodies);
   Slot& slot = slots_[(next_slot_ + in_flight_) % kMaxInFlight];
   glBindFramebuffer(GL_READ_FRAMEBUFFER, output_target_.fbo);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.pbo);

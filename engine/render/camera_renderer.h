@@ -110,7 +110,11 @@ class CameraRenderer {
   bool Enabled(int target) const;
   RenderTarget CreateTarget(int width, int height, bool sampled, bool with_depth) const;
   void DestroyTarget(RenderTarget& target) const;
-  void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies);
+  void DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T_WC, TimeNs time_ns,
+                 const BodyPoses& bodies);
+  // Rain streaks over the colour image (rain_program_; docs/rendering.md, "Rain"), after the sky.
+  void DrawRain(const SceneLighting& light, const SkyShading& sky, const Eigen::Isometry3d& T_WC,
+                TimeNs time_ns, const Eigen::Matrix4f& projection);
   // Draws the sun's shadow map for this frame when the lighting asks for shadows and the sun is up.
   void DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& T_WC, const BodyPoses& bodies,
                   const SceneLighting& light, const DetailLimit& detail);
@@ -148,6 +152,7 @@ class CameraRenderer {
   std::string scene_defines_;  // the outputs' defines of every scene program
   std::array<GlProgram, kScenePrograms> scene_programs_;  // by SceneProgramIndex
   GlProgram sky_program_;
+  GlProgram rain_program_;  // made when a frame first has rain
   GlProgram remap_program_;
   RenderTarget geometry_target_;
   RenderTarget output_target_;  // == geometry_target_ without distortion

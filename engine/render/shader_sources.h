@@ -21,6 +21,8 @@ extern const std::string_view k_shadow_frag;
 extern const std::string_view k_sky_vert;
 /// shaders/sky.frag: the sky gradient and sun glow behind the geometry.
 extern const std::string_view k_sky_frag;
+extern const std::string_view k_rain_vert;
+extern const std::string_view k_rain_frag;
 /// shaders/remap.frag: applies lens distortion by looking up each output pixel in the undistorted
 /// render.
 extern const std::string_view k_remap_frag;

@@ -189,7 +189,8 @@ struct SceneLighting {
   /// falls as exp(-height / fog_height_m); 0 = the same at every height.
   float fog_height_m = 0.0f;
   SkyModel sky = SkyModel::kGradient;
-  float turbidity = 3.0f;  ///< the clear sky's haze, 2 (very clear) to 10 (hazy)
+  float turbidity = 3.0f;      ///< the clear sky's haze, 2 (very clear) to 10 (hazy)
+  float rain_mm_per_h = 0.0f;  ///< rain rate (mm/h), 0 = none (engine/render/rain.h)
   ShadowSettings shadows;
 };
 

@@ -11,6 +11,7 @@
 #include "engine/render/camera_renderer.h"
 #include "engine/render/daylight.h"
 #include "engine/render/gpu_scene.h"
+#include "engine/render/rain.h"
 #include "tests/render/render_test_util.h"
 
 namespace airis::engine {
@@ -154,7 +155,7 @@ TEST(SkyRenderTest, FogKeepsKoschmiedersContrast) {
 
 TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {
   // GIVEN a ground with boxes, seen in the gradient sky without fog, in a clear sky with height
-  // fog, and overcast with uniform fog
+  // fog, overcast with uniform fog, and the same in rain of 40 mm/h
   StaticScene scene = testing::MakeEmptyScene();
   testing::AddGround(scene, 2000.0, 1);
   for (int k = 0; k < 6; ++k) {
@@ -171,8 +172,10 @@ TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {
   SceneLighting overcast = plain;
   overcast.sky = SkyModel::kOvercast;
   overcast.fog_distance_m = 150.0f;
+  SceneLighting rain = overcast;
+  rain.rain_mm_per_h = 40.0f;
   const CameraFrame a = testing::RenderColourDepthLabels(scene, plain, kCamera, T_WC);
-  for (const SceneLighting& light : {clear, overcast}) {
+  for (const SceneLighting& light : {clear, overcast, rain}) {
     const CameraFrame b = testing::RenderColourDepthLabels(scene, light, kCamera, T_WC);
     // THEN depth and labels are the same to the byte, and the colour image is not
     EXPECT_EQ(a.depth_planar_m.pixels, b.depth_planar_m.pixels);
@@ -180,6 +183,38 @@ TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {
     EXPECT_EQ(a.instance_id.pixels, b.instance_id.pixels);
     EXPECT_NE(a.rgba.pixels, b.rgba.pixels);
   }
+}
+
+TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
+  // GIVEN a black wall 300 m north (a perfect absorber) in rain of 50 mm/h, no fog
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddBox(scene, {300.5, 0.0, -10.0}, {1.0, 4000.0, 4000.0}, 2, 2, Eigen::Vector3f::Zero());
+  scene.materials.back().metallic = 1.0f;
+  SceneLighting light;
+  light.rain_mm_per_h = 50.0f;
+  const auto camera = CameraIntrinsics::FromHorizontalFov(65, 49, 30.0, 0.1, 10000.0);
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 0.0);
+  const auto render = [&](TimeNs t) {
+    EglContext& context = testing::SharedContext();
+    GpuScene gpu(scene);
+    gpu.set_lighting(light);
+    CameraRenderer renderer(context, camera, RenderOutputs{});
+    CameraFrame frame;
+    renderer.Render(gpu, T_WC, t, frame);
+    return frame;
+  };
+  const CameraFrame a = render(1'000'000'000);
+  // THEN its contrast against the horizon is exp(-sigma d), sigma = pi N0 / lambda^3: the median of
+  // the image's green levels (streaks brighten few pixels), within one level of 255
+  std::vector<int> green;
+  for (std::size_t i = 0; i < a.rgba.pixels.size(); i += 4) green.push_back(a.rgba.pixels[i + 1]);
+  std::nth_element(green.begin(), green.begin() + green.size() / 2, green.end());
+  const double contrast =
+      1.0 - testing::SrgbToLinear(green[green.size() / 2]) / light.sky_horizon_rgb[1];
+  EXPECT_NEAR(contrast, std::exp(-rain::CalcExtinction_per_m(50.0) * 300.0), 0.006);
+  // AND the streaks are the same at the same time and move 10 ms later
+  EXPECT_EQ(render(1'000'000'000).rgba.pixels, a.rgba.pixels);
+  EXPECT_NE(render(1'010'000'000).rgba.pixels, a.rgba.pixels);
 }
 
 }  // namespace
