@@ -42,13 +42,14 @@ void DomainRandomizationConfig::Validate() const {
   Require(!visibility_m || !fog_distance_m, "visibility_m",
           "give visibility_m or fog_distance_m, not both (visibility_m = 3.912 fog_distance_m)");
   RequireRange("turbidity", turbidity, 2.0, 10.0);
+  RequireRange("rain_mm_per_h", rain_mm_per_h, 0.0, 200.0);
   RequireRange("exposure_ev", exposure_ev, -20.0, 20.0);
   RequireRange("read_noise_e", read_noise_e, 0.0, 1e4);
 }
 
 bool DomainRandomizationConfig::any() const {
   return sun_elevation_deg || sun_azimuth_deg || fog_distance_m || visibility_m || turbidity ||
-         exposure_ev || read_noise_e;
+         rain_mm_per_h || exposure_ev || read_noise_e;
 }
 
 Eigen::Vector3d CalcSunDirection_W(double azimuth_deg, double elevation_deg) {
@@ -84,6 +85,7 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
   // Koschmieder's law for the 2% contrast threshold (scenes' lighting.visibility_m likewise).
   if (d.visibility_m) d.fog_distance_m = *d.visibility_m / 3.912;
   d.turbidity = Draw(stream, "turbidity", config.turbidity);
+  d.rain_mm_per_h = Draw(stream, "rain_mm_per_h", config.rain_mm_per_h);
   d.exposure_ev = Draw(stream, "exposure_ev", config.exposure_ev);
   d.read_noise_e = Draw(stream, "read_noise_e", config.read_noise_e);
   return d;
@@ -96,6 +98,7 @@ FrameConditions DomainDraw::ToFrameConditions() const {
   }
   c.fog_distance_m = fog_distance_m;
   c.turbidity = turbidity;
+  c.rain_mm_per_h = rain_mm_per_h;
   c.exposure_ev_offset = exposure_ev.value_or(0.0);
   c.read_noise_e = read_noise_e;
   return c;
@@ -110,6 +113,7 @@ std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) 
   if (config.fog_distance_m) out.push_back("fog_distance_m");
   if (config.visibility_m) out.push_back("visibility_m");
   if (config.turbidity) out.push_back("turbidity");
+  if (config.rain_mm_per_h) out.push_back("rain_mm_per_h");
   if (config.exposure_ev) out.push_back("exposure_ev");
   if (config.read_noise_e) out.push_back("read_noise_e");
   return out;
@@ -124,6 +128,7 @@ std::vector<double> DomainValues(const DomainRandomizationConfig& config, const 
   if (config.fog_distance_m) out.push_back(*draw.fog_distance_m);
   if (config.visibility_m) out.push_back(*draw.visibility_m);
   if (config.turbidity) out.push_back(*draw.turbidity);
+  if (config.rain_mm_per_h) out.push_back(*draw.rain_mm_per_h);
   if (config.exposure_ev) out.push_back(*draw.exposure_ev);
   if (config.read_noise_e) out.push_back(*draw.read_noise_e);
   return out;

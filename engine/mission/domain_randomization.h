@@ -32,6 +32,7 @@ struct DomainRandomizationConfig {
   std::optional<Eigen::Vector2d> fog_distance_m;
   std::optional<Eigen::Vector2d> visibility_m;
   std::optional<Eigen::Vector2d> turbidity;
+  std::optional<Eigen::Vector2d> rain_mm_per_h;
   std::optional<Eigen::Vector2d> exposure_ev;
   std::optional<Eigen::Vector2d> read_noise_e;
 
@@ -49,6 +50,7 @@ struct DomainRandomizationConfig {
             "3.912); not with fog_distance_m");
     v.Field("turbidity", turbidity,
             "[lo, hi]: haze of a clear sky (2 to 10; scene.lighting.sky: clear)");
+    v.Field("rain_mm_per_h", rain_mm_per_h, "[lo, hi]: rain rate (mm/h, 0 to 200; 0 = none)");
     v.Field("exposure_ev", exposure_ev,
             "[lo, hi]: added to every camera's exposure (EV stops; docs/rendering.md)");
     v.Field("read_noise_e", read_noise_e,
@@ -68,6 +70,7 @@ struct DomainDraw {
   std::optional<double> fog_distance_m;     ///< drawn, or from the drawn visibility
   std::optional<double> visibility_m;
   std::optional<double> turbidity;
+  std::optional<double> rain_mm_per_h;
   std::optional<double> exposure_ev;
   std::optional<double> read_noise_e;
 

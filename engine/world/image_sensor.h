@@ -79,6 +79,7 @@ struct FrameConditions {
   std::optional<Eigen::Vector3d> sun_direction_W;
   std::optional<double> fog_distance_m;  ///< distance at which fog reaches 63% (m); 0 = no fog
   std::optional<double> turbidity;       ///< a clear sky's haze (SceneLighting::turbidity)
+  std::optional<double> rain_mm_per_h;   ///< rain rate (SceneLighting::rain_mm_per_h)
   double exposure_ev_offset = 0.0;       ///< added to the camera's exposure (EV stops)
   std::optional<double> read_noise_e;    ///< replaces the camera's read noise, turns noise on
 };

@@ -106,7 +106,8 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
 
 void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameConditions& conditions,
                       engine::CameraRenderer& renderer) {
-  if (!conditions.sun_direction_W && !conditions.fog_distance_m && !conditions.turbidity) {
+  if (!conditions.sun_direction_W && !conditions.fog_distance_m && !conditions.turbidity &&
+      !conditions.rain_mm_per_h) {
     renderer.set_lighting(std::nullopt);
     return;
   }
@@ -116,6 +117,9 @@ void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameCon
     lighting.fog_distance_m = static_cast<float>(*conditions.fog_distance_m);
   }
   if (conditions.turbidity) lighting.turbidity = static_cast<float>(*conditions.turbidity);
+  if (conditions.rain_mm_per_h) {
+    lighting.rain_mm_per_h = static_cast<float>(*conditions.rain_mm_per_h);
+  }
   renderer.set_lighting(lighting);
 }
 

@@ -131,29 +131,43 @@ TEST(DomainRandomizationTest, ValidateNamesTheRange) {
   } catch (const InvalidField& e) {
     EXPECT_EQ(e.field(), "turbidity[0]");
   }
+  c = {};
+  c.rain_mm_per_h = Eigen::Vector2d(10.0, 500.0);
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "rain_mm_per_h[1]");
+  }
   EXPECT_FALSE(DomainRandomizationConfig{}.any());
 }
 
-TEST(DomainRandomizationTest, VisibilityAndTurbidityReachTheFrame) {
-  // GIVEN visibility and turbidity ranges
+TEST(DomainRandomizationTest, VisibilityTurbidityAndRainReachTheFrame) {
+  // GIVEN visibility, turbidity and rain ranges
   DomainRandomizationConfig c;
   c.visibility_m = Eigen::Vector2d(300.0, 3000.0);
   c.turbidity = Eigen::Vector2d(2.0, 9.0);
+  c.rain_mm_per_h = Eigen::Vector2d(0.0, 50.0);
   const SceneLighting scene;
-  EXPECT_EQ(DomainColumns(c), (std::vector<std::string>{"visibility_m", "turbidity"}));
+  EXPECT_EQ(DomainColumns(c),
+            (std::vector<std::string>{"visibility_m", "turbidity", "rain_mm_per_h"}));
   for (int k = 1; k <= 50; ++k) {
     const DomainDraw d = DrawDomain(c, 11, k * kFrame, scene);
     // THEN each frame's drawn values are in range, written as drawn, and the frame's fog is the
     // visibility's (Koschmieder: fog distance = V / 3.912) with the drawn turbidity
-    ASSERT_TRUE(d.visibility_m && d.turbidity && d.fog_distance_m);
+    ASSERT_TRUE(d.visibility_m && d.turbidity && d.fog_distance_m && d.rain_mm_per_h);
+    EXPECT_GE(*d.rain_mm_per_h, 0.0);
+    EXPECT_LT(*d.rain_mm_per_h, 50.0);
     EXPECT_GE(*d.visibility_m, 300.0);
     EXPECT_LT(*d.visibility_m, 3000.0);
     EXPECT_GE(*d.turbidity, 2.0);
     EXPECT_LT(*d.turbidity, 9.0);
-    EXPECT_EQ(DomainValues(c, d), (std::vector<double>{*d.visibility_m, *d.turbidity}));
+    EXPECT_EQ(DomainValues(c, d),
+              (std::vector<double>{*d.visibility_m, *d.turbidity, *d.rain_mm_per_h}));
     const FrameConditions f = d.ToFrameConditions();
     EXPECT_DOUBLE_EQ(*f.fog_distance_m, *d.visibility_m / 3.912);
     EXPECT_EQ(f.turbidity, d.turbidity);
+    EXPECT_EQ(f.rain_mm_per_h, d.rain_mm_per_h);
   }
 }
 
