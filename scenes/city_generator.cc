@@ -38,16 +38,11 @@ engine::Material Colored(const Eigen::Vector3d& rgb, const char* name) {
   return m;
 }
 
-/// A material with a procedural pattern (docs/rendering.md, "Materials") and its shading.
+/// A material of colour `rgb` with a procedural pattern (docs/rendering.md, "Materials").
 engine::Material Patterned(const Eigen::Vector3d& rgb, const char* name,
                            engine::SurfacePattern pattern, const Eigen::Vector2f& size_m,
-                           float roughness, float metallic = 0.0f) {
-  engine::Material m = Colored(rgb, name);
-  m.pattern = pattern;
-  m.pattern_size_m = size_m;
-  m.roughness = roughness;
-  m.metallic = metallic;
-  return m;
+                           float roughness) {
+  return engine::MakePatternedMaterial(name, rgb.cast<float>(), pattern, size_m, roughness);
 }
 
 double Lerp(const Eigen::Vector2d& range, double u) { return range[0] + (range[1] - range[0]) * u; }

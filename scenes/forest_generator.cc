@@ -29,13 +29,7 @@ Eigen::Affine3f PartPose(const Eigen::Vector3f& offset, const Eigen::Vector3f& s
 /// "Materials").
 engine::Material Patterned(const Eigen::Vector3d& rgb, const std::string& name,
                            engine::SurfacePattern pattern, const Eigen::Vector2f& size_m) {
-  engine::Material m;
-  m.name = name;
-  m.base_color_rgb = rgb.cast<float>();
-  m.pattern = pattern;
-  m.pattern_size_m = size_m;
-  m.roughness = 0.85f;
-  return m;
+  return engine::MakePatternedMaterial(name, rgb.cast<float>(), pattern, size_m, 0.85f);
 }
 
 bool InClearing(const ForestConfig& c, const Vector2d& p) {

@@ -228,11 +228,7 @@ bool AddTerrain(const TerrainConfig& c, engine::Heightfield heightfield, std::ui
   // Grass, rock and soil (linear RGB), one contact material for all three.
   const auto material = [&](const char* name, const Eigen::Vector3f& rgb,
                             engine::SurfacePattern pattern, const Eigen::Vector2f& size_m) {
-    engine::Material m;
-    m.name = name;
-    m.base_color_rgb = rgb;
-    m.pattern = pattern;
-    m.pattern_size_m = size_m;
+    engine::Material m = engine::MakePatternedMaterial(name, rgb, pattern, size_m, 0.9f);
     m.friction = static_cast<float>(c.friction);
     m.restitution = static_cast<float>(c.restitution);
     return builder.Material(m);

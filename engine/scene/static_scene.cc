@@ -44,6 +44,17 @@ std::span<const EnumName<SurfacePattern>> EnumNames(SurfacePattern) {
   return kNames;
 }
 
+Material MakePatternedMaterial(std::string name, const Eigen::Vector3f& rgb, SurfacePattern pattern,
+                               const Eigen::Vector2f& size_m, float roughness) {
+  Material m;
+  m.name = std::move(name);
+  m.base_color_rgb = rgb;
+  m.roughness = roughness;
+  m.pattern = pattern;
+  m.pattern_size_m = size_m;
+  return m;
+}
+
 const SemanticClass* StaticScene::FindClass(std::uint8_t id) const {
   for (const auto& c : classes) {
     if (c.id == id) return &c;

@@ -76,6 +76,11 @@ struct Material {
   std::string metallic_roughness_texture_path{};
 };
 
+/// A dielectric of base colour `rgb` (linear) drawn with `pattern` of lengths `size_m` and
+/// `roughness` (docs/rendering.md, "Materials"): the generators' parts.
+Material MakePatternedMaterial(std::string name, const Eigen::Vector3f& rgb, SurfacePattern pattern,
+                               const Eigen::Vector2f& size_m, float roughness);
+
 /// Analytic shape of a mesh when it has one, so collision and ray casting can use exact primitives.
 /// Unit primitives are centred on their origin: box 1x1x1; sphere diameter 1; cylinder and cone
 /// diameter 1, height 1, axis along local z, cone apex at z = -0.5 (up in NED); plane 1x1 in the

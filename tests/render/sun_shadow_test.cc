@@ -117,16 +117,7 @@ class TowerShadowTest : public ::testing::Test {
     SceneLighting light = scene_.lighting;
     light.shadows.enabled = shadows;
     if (!sun) light.sun_color_rgb.setZero();
-    EglContext& context = testing::SharedContext();  // current before anything is uploaded
-    GpuScene gpu(scene_);
-    gpu.set_lighting(light);
-    RenderOutputs outputs;
-    outputs.depth_planar = true;
-    outputs.segmentation = true;
-    CameraRenderer renderer(context, camera_, outputs);
-    CameraFrame frame;
-    renderer.Render(gpu, T_WC_, 0, frame);
-    return frame;
+    return testing::RenderColourDepthLabels(scene_, light, camera_, T_WC_);
   }
 
   // Whether a ray toward the sun from p_W meets the tower (slab test).
