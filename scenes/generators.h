@@ -32,7 +32,8 @@ struct GeneratorReport {
   std::size_t buildings = 0;
   std::size_t trees = 0;
   std::size_t bushes = 0;
-  bool out_of_instance_ids = false;  ///< stopped early: the scene reached kMaxInstances objects
+  bool out_of_instance_ids =
+      false;  ///< stopped early: the scene reached the builder's max_instances()
 };
 
 /// Expands a city into `builder`: streets, sidewalks, buildings with roofs, lamp posts and parked

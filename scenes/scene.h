@@ -106,6 +106,10 @@ struct SceneLoadOptions {
   /// Keys of the scene document replaced before it is validated and built (`--set`;
   /// ApplySceneOverrides). Errors their values cause name them.
   std::vector<SceneOverride> overrides = {};
+  /// Memory the scene's objects and vehicles may take once built, counted at
+  /// engine::kMinBuiltObjectBytes each: a scene placing more than fit is refused before they are
+  /// placed (docs/limits.md). Default: this machine's physical memory.
+  std::optional<std::uint64_t> memory_limit_bytes = {};
 };
 
 /// Loads `path` (with includes, meshes and generators). Throws ConfigError naming file:line:col and

@@ -15,6 +15,7 @@
 #include "scenes/builtin_classes.h"
 #include "scenes/generators.h"
 #include "scenes/mesh_loader.h"
+#include "scenes/object_capacity.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_overrides.h"
@@ -53,7 +54,9 @@ constexpr const char* kReservedStreamNames[] = {"tartanair", "shards", "slurm"};
 class SceneAssembler {
  public:
   SceneAssembler(SceneDocument doc, const SceneLoadOptions& options)
-      : doc_(std::move(doc)), options_(options) {}
+      : doc_(std::move(doc)), options_(options), capacity_(options.memory_limit_bytes) {
+    builder_.LimitInstances(capacity_.max_instances());
+  }
 
   Scene Assemble() {
     Scene s;
@@ -289,8 +292,7 @@ class SceneAssembler {
     }
     stored_triangles_ += triangles;
     if (!AddTerrain(c, std::move(field), cls, builder_)) {
-      entry.Fail("", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                         " objects (docs/limits.md)");
+      entry.Fail("", capacity_.DescribeFull("objects"));
     }
   }
 
@@ -342,13 +344,10 @@ class SceneAssembler {
     const RepeatConfig& r = c.repeat;
     // Checked before anything is placed or reserved: how many copies, and where the last ones go.
     const std::uint64_t copies = static_cast<std::uint64_t>(r.count) * r.rows;
-    const std::size_t free_ids = engine::kMaxInstances - builder_.scene().objects.size();
-    if (copies > free_ids) {
-      entry.Fail(r.count > 1 || r.rows > 1 ? "repeat" : "",
-                 "places " + std::to_string(copies) + " objects where " + std::to_string(free_ids) +
-                     " instance ids are left (a scene holds at most " +
-                     std::to_string(engine::kMaxInstances) +
-                     " objects: instance ids are 24-bit; docs/limits.md)");
+    if (const std::string shortfall =
+            capacity_.DescribeShortfall(copies, builder_.scene().objects.size());
+        !shortfall.empty()) {
+      entry.Fail(r.count > 1 || r.rows > 1 ? "repeat" : "", shortfall);
     }
     for (const int row : {0, r.rows - 1}) {
       for (const int i : {0, r.count - 1}) {
@@ -436,8 +435,7 @@ class SceneAssembler {
       report = GenerateForest(f, r, summary.name, stream, builder_);
     }
     if (report.out_of_instance_ids) {
-      entry.Fail(summary.kind, "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                                   " objects (docs/limits.md)");
+      entry.Fail(summary.kind, capacity_.DescribeFull("objects"));
     }
     summary.objects = report.objects;
     summary.buildings = report.buildings;
@@ -611,8 +609,7 @@ class SceneAssembler {
                                 c.rotor_color.value_or(kDefaultRotorColor), builder_);
     }
     if (!builder_.AddVehicleBody(model, c.CalcModelPose(), cls, v.name, material)) {
-      entry.Fail("body", "the scene exceeds " + std::to_string(engine::kMaxInstances) +
-                             " objects and vehicles (docs/limits.md)");
+      entry.Fail("body", capacity_.DescribeFull("objects and vehicles"));
     }
   }
 
@@ -699,6 +696,7 @@ class SceneAssembler {
 
   SceneDocument doc_;
   SceneLoadOptions options_;
+  ObjectCapacity capacity_;
   double physics_max_speed_m_s_ =
       doc_.physics ? doc_.physics->config.max_speed_m_s : engine::PhysicsConfig{}.max_speed_m_s;
   double physics_rate_hz_ =

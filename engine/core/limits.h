@@ -12,6 +12,12 @@ namespace airis::engine {
 /// Objects of one scene, the ground, every generated object and every vehicle body included: each
 /// has an instance id, and instance images store ids in 24 bits (RGB, instance_image_format.h).
 inline constexpr std::uint32_t kMaxInstances = 16'777'215;
+/// The least memory one placed object takes once the world is built (its record, collider and
+/// ray-casting instance): 1.25 kB a box measured (`airis scene check` of 200,000 boxes placed by
+/// `repeat`: 313 MB peak against 64 MB for 1,000; 2026-12-06), 2.35 kB an object of the 10 km city
+/// (docs/performance.md). A scene whose objects would need more than the machine's memory at this
+/// rate is refused before they are placed (docs/limits.md).
+inline constexpr std::uint64_t kMinBuiltObjectBytes = 1'200;
 /// Objects of a scene whose cameras write 16-bit grey instance images (`instance_format: gray16`).
 inline constexpr std::uint32_t kMaxGray16Instances = 65'535;
 /// Largest scene, mission or campaign YAML file (bytes).

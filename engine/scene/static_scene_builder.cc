@@ -130,18 +130,23 @@ std::vector<std::string> StaticSceneBuilder::ClassNames() const {
   return names;
 }
 
+void StaticSceneBuilder::LimitInstances(std::uint32_t max_instances) {
+  max_instances_ = std::min(max_instances, kMaxInstances);
+}
+
 void StaticSceneBuilder::ReserveObjects(std::size_t n) {
   std::vector<StaticObject>& objects = scene_.objects;
-  if (n > kMaxInstances - objects.size()) return;
+  if (n > max_instances_ - instances_) return;
   const std::size_t wanted = objects.size() + n;
   if (wanted <= objects.capacity()) return;
-  objects.reserve(std::min<std::size_t>(std::max(wanted, 2 * objects.capacity()), kMaxInstances));
+  objects.reserve(std::min<std::size_t>(std::max(wanted, 2 * objects.capacity()),
+                                        objects.size() + (max_instances_ - instances_)));
 }
 
 bool StaticSceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO,
                                    std::uint8_t class_id, CollisionShape collision,
                                    std::string name, std::int32_t material_override) {
-  if (instances_ >= kMaxInstances) return false;
+  if (instances_ >= max_instances_) return false;
   StaticObject o;
   o.model = model;
   o.T_WO = T_WO;
@@ -157,7 +162,7 @@ bool StaticSceneBuilder::AddObject(std::uint32_t model, const Eigen::Affine3d& T
 bool StaticSceneBuilder::AddVehicleBody(std::uint32_t model, const Eigen::Affine3d& T_BM,
                                         std::uint8_t class_id, std::string name,
                                         std::int32_t material_override) {
-  if (instances_ >= kMaxInstances) return false;
+  if (instances_ >= max_instances_) return false;
   VehicleBody body;
   body.model = model;
   body.T_BM = T_BM;

@@ -40,18 +40,24 @@ class StaticSceneBuilder {
   /// The class names, for "expected one of" messages.
   std::vector<std::string> ClassNames() const;
 
-  /// Places an object; assigns the next instance id. Returns false when the kMaxInstances instance
+  /// Caps the objects and vehicle bodies this scene may hold below kMaxInstances (what the
+  /// machine's memory can hold: scenes::SceneLoadOptions::memory_limit_bytes).
+  void LimitInstances(std::uint32_t max_instances);
+  /// The cap: kMaxInstances unless LimitInstances lowered it.
+  std::uint32_t max_instances() const { return max_instances_; }
+
+  /// Places an object; assigns the next instance id. Returns false when max_instances() instance
   /// ids are used up.
   bool AddObject(std::uint32_t model, const Eigen::Affine3d& T_WO, std::uint8_t class_id,
                  CollisionShape collision, std::string name, std::int32_t material_override = -1);
 
   /// Adds the look of the next vehicle (StaticScene::vehicle_bodies, in vehicle order) with the
-  /// next instance id. Returns false when the kMaxInstances instance ids are used up.
+  /// next instance id. Returns false when max_instances() instance ids are used up.
   bool AddVehicleBody(std::uint32_t model, const Eigen::Affine3d& T_BM, std::uint8_t class_id,
                       std::string name, std::int32_t material_override = -1);
 
   /// Reserves room for `n` more objects (generators call this before a batch); nothing when they
-  /// would pass kMaxInstances (such a batch cannot be placed whole, and room for every id is
+  /// would pass max_instances() (such a batch cannot be placed whole, and room for every id is
   /// gigabytes). The capacity grows geometrically: reserving a few more for every object of a long
   /// list stays linear in the list.
   void ReserveObjects(std::size_t n);
@@ -65,6 +71,7 @@ class StaticSceneBuilder {
  private:
   StaticScene scene_;
   std::uint32_t instances_ = 0;  // instance ids given so far (to objects and vehicle bodies)
+  std::uint32_t max_instances_ = kMaxInstances;
   std::int32_t primitive_mesh_[6] = {-1, -1, -1, -1, -1, -1};
   std::int32_t primitive_model_[6] = {-1, -1, -1, -1, -1, -1};
   // Materials by every field but the name: equal materials are stored once.

@@ -16,6 +16,7 @@
 #include "scenes/scene.h"
 #include "scenes/world_builder.h"
 #include "tests/fixtures/temp_dir.h"
+#include "tests/fuzz/scene_fuzz_options.h"
 
 namespace airis::scenes {
 namespace {
@@ -65,7 +66,8 @@ std::string ErrorOf(const std::string& target, const std::string& input) {
                     fs::copy_options::overwrite_existing);
       LoadMeshFile(path.string(), MeshAxes::kYUp);
     } else if (target == "scene") {
-      BuildWorldWithoutCameras(LoadSceneFromString(input, "scenes/fuzz_input.yaml"));
+      BuildWorldWithoutCameras(
+          LoadSceneFromString(input, "scenes/fuzz_input.yaml", testing::FuzzSceneLoadOptions()));
     } else if (target == "mission") {
       ParseMission(input, "tests/inputs/support/fuzz_input.yaml");
     } else {

@@ -336,6 +336,54 @@ TEST(SceneLoaderTest, TooManyObjectsIsAnError) {
                 "docs/limits.md)");
 }
 
+/// The error of loading `text` (anchored at mem.yaml) whose objects may take `memory_bytes`.
+std::string LoadErrorWithMemory(const std::string& text, std::uint64_t memory_bytes) {
+  SceneLoadOptions options;
+  options.memory_limit_bytes = memory_bytes;
+  try {
+    LoadSceneFromString(text, "mem.yaml", options);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// GIVEN objects that may take 12 MiB: 10,485 objects at the least a built object takes (1,200 B)
+// WHEN a repeat places 20,000 boxes, or a forest grows past that, or a repeat passes the ids too
+// THEN the repeat is refused before anything is placed, naming what is left and why; the forest
+//      stops at the limit and says so; the ids are checked first (the same words on any machine)
+TEST(SceneLoaderTest, ObjectsBeyondTheMemoryLimitAreRefused) {
+  const std::uint64_t limit = 12ull << 20;
+  EXPECT_EQ(LoadErrorWithMemory("objects:\n"
+                                "  - primitive: box\n"
+                                "    repeat: {count: 100, step_ned_m: [2, 0, 0], rows: 200, "
+                                "row_step_ned_m: [0, 2, 0]}\n",
+                                limit),
+            "mem.yaml:3:5: objects[0].repeat: places 20000 objects where 10484 more fit in memory "
+            "(the memory limit of 12 MiB holds 10485 objects and vehicles of at least 1200 bytes "
+            "each once built; docs/limits.md)");
+  EXPECT_EQ(
+      LoadErrorWithMemory("generators:\n"
+                          "  - forest: {area: {size_ne_m: [600, 600]}, density_per_ha: 400}\n",
+                          limit),
+      "mem.yaml:2:5: generators[0].forest: the scene exceeds the 10485 objects that the "
+      "memory limit of 12 MiB holds (at least 1200 bytes each once built; docs/limits.md)");
+  EXPECT_NE(LoadErrorWithMemory("objects:\n"
+                                "  - primitive: box\n"
+                                "    repeat: {count: 65535, step_ned_m: [1, 0, 0], rows: 257, "
+                                "row_step_ned_m: [0, 1, 0]}\n",
+                                limit)
+                .find("places 16842495 objects where 16777214 instance ids are left"),
+            std::string::npos);
+  // Within the limit: 10,000 boxes and the ground load.
+  EXPECT_EQ(LoadErrorWithMemory("objects:\n"
+                                "  - primitive: box\n"
+                                "    repeat: {count: 100, step_ned_m: [2, 0, 0], rows: 100, "
+                                "row_step_ned_m: [0, 2, 0]}\n",
+                                limit),
+            "");
+}
+
 TEST(SceneLoaderTest, MoreObjectsThan16BitIdsNumberLoadWithDistinctIds) {
   SceneFiles f("past16bit");
   const std::string path = f.Write("s.yaml",
