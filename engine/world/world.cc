@@ -192,11 +192,19 @@ void World::SetSleepDelay(double dt_s) {
 
 void World::ReportEvents() {
   // The listeners hear of the new static contacts on this thread, in vehicle order.
+  bool heard = false;
   for (Slot& slot : slots_) {
     for (const CollisionEvent& event : slot.events) {
       for (const auto& listener : collision_listeners_) listener(event);
+      heard = true;
     }
     slot.events.clear();
+  }
+  if (!heard) return;
+  // A listener may have moved a sleeping vehicle (a reset from a callback): it wakes now, so that
+  // its sensors sample this tick where it is, not the rest they keep while it sleeps.
+  for (Slot& slot : slots_) {
+    if (slot.asleep && !IsRestState(slot)) Wake(slot);
   }
 }
 

@@ -146,6 +146,40 @@ TEST(SleepTest, MovingItFromOutsideWakesIt) {
   EXPECT_NEAR(rig->state(0).p_W.z(), -kHalfHeight_m, 1e-3);
 }
 
+TEST(SleepTest, MovingItFromACollisionListenerWakesItInThatTick) {
+  // GIVEN b asleep on the ground, a falling onto the ground 5 m away, and a collision listener
+  //       that lifts b 0.5 m when a lands (a reset done from a callback)
+  auto rig = MakeRig(2);
+  rig->state(1).p_W = Vec3(0.0, 0.0, -kHalfHeight_m);
+  rig->state(0).p_W = Vec3(5.0, 0.0, -1000.0);           // out of the way while b falls asleep
+  rig->bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -kG);  // hovering
+  StepUntilAsleep(*rig, 1);
+  rig->state(0).p_W = Vec3(5.0, 0.0, -kHalfHeight_m - 0.3);
+  rig->state(0).v_W = Vec3::Zero();
+  rig->bodies[0]->wrench.force_B = Vec3::Zero();
+  bool lifted = false;
+  rig->world().AddCollisionListener([&](const CollisionEvent& e) {
+    if (e.vehicle != 0 || lifted) return;
+    rig->state(1).p_W.z() -= 0.5;
+    lifted = true;
+  });
+  // WHEN a lands
+  std::uint64_t serial = 0;
+  while (!lifted) {
+    serial = rig->world().motion_serial(1);
+    EXPECT_TRUE(rig->world().asleep(1));
+    rig->sim->Step();
+    ASSERT_LT(rig->sim->clock().now_s(), 10.0);
+  }
+  // THEN b is awake at the end of that very step, and its sensors' truth of this tick is taken
+  //      anew (its motion serial changed), not the rest it slept in
+  EXPECT_FALSE(rig->world().asleep(1));
+  EXPECT_NE(rig->world().motion_serial(1), serial);
+  // AND it falls from where the listener put it
+  rig->sim->Step();
+  EXPECT_GT(rig->state(1).v_W.z(), 0.0);
+}
+
 TEST(SleepTest, VehicleLandingOnASleepingOneWakesItAndTheStackStaysAtRest) {
   // GIVEN b asleep on the ground and a dropped onto it from 0.3 m
   auto rig = MakeRig(2);
