@@ -34,6 +34,13 @@ struct RenderOutputs {
   }
 };
 
+/// How a camera moves at a frame's time, in its optical frame C (x right, y down, z forward): the
+/// velocity of its centre (m/s) and its angular velocity (rad/s), both relative to the world.
+struct CameraMotion {
+  Eigen::Vector3d v_C = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_C = Eigen::Vector3d::Zero();
+};
+
 /// Depth written where a pixel sees the sky.
 inline constexpr float kSkyDepthM = std::numeric_limits<float>::infinity();
 

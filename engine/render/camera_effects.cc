@@ -5,45 +5,15 @@
 
 #include "engine/core/error.h"
 #include "engine/core/standard_normal.h"
+#include "engine/render/srgb.h"
 
 namespace airis::engine {
 namespace {
 
-// Linear [0, 1] -> sRGB (IEC 61966-2-1), and back.
-double EncodeSrgb(double c) {
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
-double DecodeSrgb(double e) {
-  return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
-}
-
-// The linear value of each 8-bit sRGB code.
-const std::array<float, 256>& DecodeTable() {
-  static const std::array<float, 256> table = [] {
-    std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) t[i] = static_cast<float>(DecodeSrgb(i / 255.0));
-    return t;
-  }();
-  return table;
-}
-
-// The 8-bit sRGB code of linear value i / kEncodeSteps: fine enough that the darkest sRGB steps
-// (1/255/12.92 linear) are several entries apart.
-constexpr int kEncodeSteps = 65535;
-const std::vector<std::uint8_t>& EncodeTable() {
-  static const std::vector<std::uint8_t> table = [] {
-    std::vector<std::uint8_t> t(kEncodeSteps + 1);
-    for (int i = 0; i <= kEncodeSteps; ++i) {
-      t[i] = static_cast<std::uint8_t>(std::lround(255.0 * EncodeSrgb(double(i) / kEncodeSteps)));
-    }
-    return t;
-  }();
-  return table;
-}
-
-std::uint8_t EncodeLinear(const std::vector<std::uint8_t>& table, double c) {
-  return table[static_cast<std::size_t>(std::clamp(c, 0.0, 1.0) * kEncodeSteps + 0.5)];
-}
+using srgb::DecodeTable;
+using srgb::EncodeLinear;
+using srgb::EncodeTable;
+using srgb::kEncodeSteps;
 
 // Metered exposure is kept within this many stops of the renderer's (a black frame does not ask
 // for an infinite gain).
@@ -60,6 +30,7 @@ void CameraEffectsConfig::Validate() const {
   RequireInRange("full_well_e", full_well_e, 1.0, 1e7);
   RequireInRange("read_noise_e", read_noise_e, 0.0, full_well_e);
   RequireInRange("adc_bits", adc_bits, 8, 16);
+  RequireInRange("exposure_time_s", exposure_time_s, 1e-6, 1.0);
 }
 
 std::uint16_t SampleSensorDn(double mean_e, double full_well_e, double read_noise_e, int adc_bits,

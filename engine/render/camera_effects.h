@@ -30,6 +30,8 @@ struct CameraEffectsConfig {
   double full_well_e = 10000.0;
   double read_noise_e = 3.0;
   int adc_bits = 10;
+  bool motion_blur = false;
+  double exposure_time_s = 1.0 / 125.0;
 
   template <class V>
   void Visit(V& v) {
@@ -51,10 +53,16 @@ struct CameraEffectsConfig {
     v.Field("read_noise_e", read_noise_e, "read noise (electrons, 1 sigma)");
     v.Field("adc_bits", adc_bits,
             "ADC resolution (bits, 8 to 16): the full well maps to 2^bits - 1 digital numbers");
+    v.Field("motion_blur", motion_blur,
+            "blur the colour image by the camera's own motion during the exposure (the world "
+            "taken as still; depth and labels stay sharp)");
+    v.Field("exposure_time_s", exposure_time_s,
+            "time the shutter is open for motion blur (s), centred on the frame's time");
   }
   /// Throws InvalidField naming the field.
   void Validate() const;
-  /// True when some effect changes the image.
+  /// True when some effect of CameraEffects::Apply changes the image (motion blur, which needs
+  /// the depth and the camera's motion, is applied before it: ApplyMotionBlur).
   bool any() const { return exposure_ev != 0.0 || auto_exposure || vignetting || noise; }
 };
 

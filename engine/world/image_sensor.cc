@@ -21,6 +21,20 @@ Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBody
   return T_WC;
 }
 
+CameraMotion CalcImageStreamMotion(const ImageStream& stream, const RigidBodyState* state) {
+  if (stream.world_fixed) return {};
+  AIRIS_DEMAND(state != nullptr);
+  // T_BC of the optical frame, as CalcImageStreamPose composes it, with the body at the origin.
+  RigidBodyState at_origin;
+  const Eigen::Isometry3d T_BC = CalcImageStreamPose(stream, &at_origin);
+  const Eigen::Matrix3d R_WB = state->q_WB.normalized().toRotationMatrix();
+  const Eigen::Matrix3d R_CB = T_BC.linear().transpose();
+  CameraMotion m;
+  m.v_C = R_CB * (R_WB.transpose() * state->v_W + state->w_B.cross(T_BC.translation()));
+  m.w_C = R_CB * state->w_B;
+  return m;
+}
+
 std::vector<std::string> CalcDatasetNamePrefixes(std::span<const ImageSensorNames> sensors) {
   const auto names = [](const ImageSensorNames& s) {
     std::vector<std::string> all = s.streams;

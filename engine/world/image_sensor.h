@@ -45,6 +45,9 @@ struct ImageStream {
 /// mount, C the optical frame (x right, y down, z forward; CalcR_SC) and T_offset the eye's offset
 /// along C's x. Requires `state` unless the mount is world-fixed.
 Eigen::Isometry3d CalcImageStreamPose(const ImageStream& stream, const RigidBodyState* state);
+/// The motion of the stream's optical frame C with the body at `state` (rigidly mounted: its
+/// centre moves at v_W + w x r, r the mount's lever arm): zero for a world-fixed mount.
+CameraMotion CalcImageStreamMotion(const ImageStream& stream, const RigidBodyState* state);
 
 /// The names of one image sensor of a vehicle (for CalcDatasetNamePrefixes).
 struct ImageSensorNames {

@@ -1,6 +1,7 @@
 #include "sensors/camera/camera_sensor.h"
 
 #include "engine/core/error.h"
+#include "engine/render/motion_blur.h"
 #include "engine/world/world.h"
 
 namespace airis::sensors {
@@ -42,7 +43,7 @@ CameraSensor::CameraSensor(std::string name, const CameraConfig& config,
     : engine::ImageSensor(std::move(name), Validated(config).rate_hz),
       config_(config),
       scene_(std::move(scene)),
-      renderer_(scene_->context(), config_.CalcIntrinsics(), config_.outputs,
+      renderer_(scene_->context(), config_.CalcIntrinsics(), CalcRendererOutputs(config_),
                 config_.detail_tolerance_px),
       effects_(config_.effects, renderer_.intrinsics(), stream.Fork("noise").NextU64()),
       stream_(MakeImageStream(this->name(), config_, renderer_.intrinsics())) {}
@@ -69,6 +70,7 @@ void CameraSensor::Render(const engine::SensorContext& context, engine::CameraFr
   SetFrameLighting(scene_->gpu_scene().lighting(), conditions, renderer_);
   renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
                    context.now_ns, out, CalcBodyPoses(context, stream_, body_poses_W_));
+  ApplyCameraMotionBlur(config_, renderer_.intrinsics(), stream_, context, out);
   ApplyEffects(effects_, conditions, out);
 }
 
@@ -129,6 +131,22 @@ void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameCondi
                                                    conditions.read_noise_e};
   if (frame.rgba.empty() || !effects.active(adjustment)) return;
   effects.Apply(frame.rgba, frame.time_ns, adjustment);
+}
+
+engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config) {
+  engine::RenderOutputs outputs = config.outputs;
+  if (config.effects.motion_blur && outputs.rgb) outputs.depth_planar = true;
+  return outputs;
+}
+
+void ApplyCameraMotionBlur(const CameraConfig& config, const engine::CameraIntrinsics& intrinsics,
+                           const engine::ImageStream& stream, const engine::SensorContext& context,
+                           engine::CameraFrame& frame) {
+  if (!config.effects.motion_blur || frame.rgba.empty()) return;
+  engine::ApplyMotionBlur(frame.rgba, frame.depth_planar_m, intrinsics,
+                          engine::CalcImageStreamMotion(stream, context.state),
+                          config.effects.exposure_time_s);
+  if (!config.outputs.depth_planar) frame.depth_planar_m = {};
 }
 
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene) {

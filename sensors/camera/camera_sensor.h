@@ -70,6 +70,14 @@ void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameCon
 /// change it).
 void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameConditions& conditions,
                   engine::CameraFrame& frame);
+/// The outputs the renderer of a camera with `config` makes: the camera's, and planar depth when
+/// its motion blur needs it (ApplyCameraMotionBlur drops it again).
+engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config);
+/// With `config`'s motion blur on, blurs `frame`'s colour image by the motion of `stream`'s camera
+/// in `context` (engine::ApplyMotionBlur), then drops the depth the camera did not ask for.
+void ApplyCameraMotionBlur(const CameraConfig& config, const engine::CameraIntrinsics& intrinsics,
+                           const engine::ImageStream& stream, const engine::SensorContext& context,
+                           engine::CameraFrame& frame);
 /// The GL strings of `scene`'s context.
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene);
 

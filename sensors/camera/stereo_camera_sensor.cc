@@ -19,8 +19,8 @@ StereoCameraSensor::StereoCameraSensor(std::string name, const StereoCameraConfi
     : engine::ImageSensor(std::move(name), Validated(config).camera.rate_hz),
       config_(config),
       scene_(std::move(scene)),
-      renderer_(scene_->context(), config_.camera.CalcIntrinsics(), config_.camera.outputs,
-                config_.camera.detail_tolerance_px),
+      renderer_(scene_->context(), config_.camera.CalcIntrinsics(),
+                CalcRendererOutputs(config_.camera), config_.camera.detail_tolerance_px),
       effects_{engine::CameraEffects(config_.camera.effects, renderer_.intrinsics(),
                                      stream.Fork("noise_left").NextU64()),
                engine::CameraEffects(config_.camera.effects, renderer_.intrinsics(),
@@ -70,6 +70,8 @@ void StereoCameraSensor::Render(const engine::SensorContext& context, engine::Ca
   renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns, bodies);
   renderer_.Collect(left);
   renderer_.Collect(right);
+  ApplyCameraMotionBlur(config_.camera, renderer_.intrinsics(), streams_[0], context, left);
+  ApplyCameraMotionBlur(config_.camera, renderer_.intrinsics(), streams_[1], context, right);
   ApplyEffects(effects_[0], conditions, left);
   ApplyEffects(effects_[1], conditions, right);
 }

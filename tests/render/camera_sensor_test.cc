@@ -189,12 +189,14 @@ TEST(CameraConfigTest, ValidateNamesNestedFields) {
 
 // Every output of a camera at `p_W` looking north, rendered once at the first frame.
 engine::CameraFrame RenderAll(const CameraConfig& config,
-                              std::function<engine::FrameConditions(engine::TimeNs)> source = {}) {
+                              std::function<engine::FrameConditions(engine::TimeNs)> source = {},
+                              const Eigen::Vector3d& w_B = Eigen::Vector3d::Zero()) {
   static const auto scene = BoxesScene();
   CameraSensor camera("front", config, scene, engine::RandomStream(5));
   if (source) camera.set_conditions(std::move(source));
   RigidBodyState state;
   state.p_W = {-5.0, 1.0, -3.0};
+  state.w_B = w_B;
   SensorContext context;
   context.state = &state;
   context.now_ns = kFirstFrameDue;
@@ -225,6 +227,28 @@ TEST(CameraSensorTest, EffectsTouchColourOnly) {
   EXPECT_EQ(effected.normal_C.pixels, plain.normal_C.pixels);
   // Same seed and time: the same noise.
   EXPECT_EQ(RenderAll(config).rgba.pixels, effected.rgba.pixels);
+}
+
+// Motion blur changes the colour image of a turning camera only, leaves a still one's as it was,
+// and a camera that asks for no depth gets none (the blur's own depth is dropped).
+TEST(CameraSensorTest, MotionBlurTouchesColourOnly) {
+  const engine::CameraFrame plain = RenderAll(EveryOutput());
+  CameraConfig config = EveryOutput();
+  config.effects.motion_blur = true;
+  config.effects.exposure_time_s = 0.02;
+  EXPECT_EQ(RenderAll(config).rgba.pixels, plain.rgba.pixels);  // still
+  const Eigen::Vector3d yawing(0.0, 0.0, 2.0);  // 2 rad/s: 2.2 px over 0.02 s (fx 55.4 px)
+  const engine::CameraFrame turning_plain = RenderAll(EveryOutput(), {}, yawing);
+  EXPECT_EQ(turning_plain.rgba.pixels, plain.rgba.pixels);  // no blur asked: the same image
+  const engine::CameraFrame blurred = RenderAll(config, {}, yawing);
+  EXPECT_NE(blurred.rgba.pixels, plain.rgba.pixels);
+  EXPECT_EQ(blurred.depth_planar_m.pixels, plain.depth_planar_m.pixels);
+  EXPECT_EQ(blurred.instance_id.pixels, plain.instance_id.pixels);
+  EXPECT_EQ(blurred.class_id.pixels, plain.class_id.pixels);
+  config.outputs.depth_planar = false;
+  const engine::CameraFrame without_depth = RenderAll(config, {}, yawing);
+  EXPECT_EQ(without_depth.rgba.pixels, blurred.rgba.pixels);
+  EXPECT_TRUE(without_depth.depth_planar_m.empty());
 }
 
 // A frame's conditions replace the scene's sun: the scene's own sun given as a condition renders
@@ -260,6 +284,9 @@ TEST(CameraConfigTest, EffectsNeedAColourImage) {
   } catch (const engine::InvalidField& e) {
     EXPECT_EQ(e.field(), "effects");
   }
+  config.effects = {};
+  config.effects.motion_blur = true;
+  EXPECT_THROW(config.Validate(), engine::InvalidField);
   config.effects = {};
   config.effects.full_well_e = 0.0;
   try {

@@ -79,7 +79,8 @@ TEST(DatasetRealismTest, RealismChangesTheColourImagesOnly) {
                  Scene(",\n  lighting: {sky: clear, turbidity: 4, visibility_m: 400, fog_height_m: "
                        "30, rain_mm_per_h: 20,"
                        " shadows: {enabled: true}}",
-                       ",\n           effects: {vignetting: true, noise: true, full_well_e: 5000}"),
+                       ",\n           effects: {vignetting: true, noise: true, full_well_e: 5000,"
+                       " motion_blur: true, exposure_time_s: 0.02}"),
                  std::string("randomize: {sun_elevation_deg: [10, 60], sun_azimuth_deg: [0, 360],"
                              " exposure_ev: [-0.5, 0.5]}\n") +
                      kSteps);
