@@ -9,6 +9,7 @@
 
 #include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
+#include "engine/render/motion_blur.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tests/render/render_test_util.h"
 
@@ -156,6 +157,24 @@ TEST(GoldenImageTest, SensorEffectsMatchTheGoldenImage) {
   const CameraEffects effects(config, kGoldenCamera, 7);
   effects.Apply(frame.rgba, 0);
   ExpectMatchesGolden(frame, "sensor_effects");
+}
+
+TEST(GoldenImageTest, MotionBlurMatchesTheGoldenImage) {
+  // The lit scene from a camera flying forward at 8 m/s while yawing right at 180 deg/s (5 px in
+  // the exposure) and rolling, 1/60 s: edges smeared sideways (rotation) and outwards (forward
+  // flight), the sky by the rotation only.
+  EglContext& context = testing::SharedContext();
+  GpuScene gpu(MakeGoldenScene(WriteCheckerTexture()));
+  RenderOutputs outputs;
+  outputs.depth_planar = true;
+  CameraRenderer renderer(context, kGoldenCamera, outputs);
+  CameraFrame frame;
+  renderer.Render(gpu, kGoldenPose, 0, frame);
+  CameraMotion motion;
+  motion.v_C = Eigen::Vector3d(0.0, 0.0, 8.0);
+  motion.w_C = Eigen::Vector3d(0.0, M_PI, 1.0);
+  ApplyMotionBlur(frame.rgba, frame.depth_planar_m, kGoldenCamera, motion, 1.0 / 60.0);
+  ExpectMatchesGolden(frame, "motion_blur");
 }
 
 }  // namespace
