@@ -2,7 +2,8 @@
 // anywhere in a cube of side u_box_m that wraps around the camera (so the drops stay fixed in the world
 // as the camera moves), diameter D >= u_min_diameter_mm from the Marshall-Palmer tail
 // D = D_min - ln(1 - q) / lambda, falling at its terminal speed 9.65 - 10.3 exp(-0.6 D) m/s. Its streak is
-// the segment it falls along during the exposure, a quad one pixel wide, drawn as a triangle strip of
+// the segment it falls along during the exposure (centred on the frame's time, as the camera's motion
+// blur), a quad one pixel wide, drawn as a triangle strip of
 // four vertices per instance with the scene's depth test (a drop behind a wall is hidden).
 precision highp float;
 
@@ -14,7 +15,7 @@ uniform float u_time_s;          // time within the period (the drops are redraw
 uniform uint u_seed;             // the seed and the period
 uniform float u_min_diameter_mm;
 uniform float u_slope_per_mm;    // Marshall-Palmer lambda
-uniform float u_exposure_s;
+uniform float u_exposure_s;      // the camera's exposure time (CameraEffectsConfig::exposure_time_s)
 uniform vec2 u_pixel_ndc;        // one pixel in normalized device coordinates (2 / width, 2 / height)
 uniform float u_pixel_rad;       // one pixel's angle at the image centre
 
@@ -41,8 +42,9 @@ void main() {
   float speed = 9.65 - 10.3 * exp(-0.6 * diameter_mm);
   vec3 p = q * u_box_m + vec3(0.0, 0.0, speed * u_time_s) - u_camera_mod_m;
   p = mod(p + 0.5 * u_box_m, u_box_m) - 0.5 * u_box_m;  // relative to the camera, world axes
-  vec3 end_C = u_R_CW * p;
-  vec3 start_C = u_R_CW * (p - vec3(0.0, 0.0, speed * u_exposure_s));
+  vec3 half_fall = vec3(0.0, 0.0, 0.5 * speed * u_exposure_s);
+  vec3 end_C = u_R_CW * (p + half_fall);
+  vec3 start_C = u_R_CW * (p - half_fall);
   if (end_C.z < 0.2 || start_C.z < 0.2) {  // behind or at the lens: not drawn
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     v_alpha = 0.0;

@@ -57,7 +57,8 @@ struct CameraEffectsConfig {
             "blur the colour image by the camera's own motion during the exposure (the world "
             "taken as still; depth and labels stay sharp)");
     v.Field("exposure_time_s", exposure_time_s,
-            "time the shutter is open for motion blur (s), centred on the frame's time");
+            "time the shutter is open (s), centred on the frame's time: the length of the motion "
+            "blur and of the rain's streaks");
   }
   /// Throws InvalidField naming the field.
   void Validate() const;

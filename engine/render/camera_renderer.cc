@@ -384,7 +384,6 @@ void CameraRenderer::DrawRain(const SceneLighting& light, const SkyShading& sky,
   constexpr double kBox_m = 16.0;          // the cube of drops around the camera
   constexpr double kMinDiameter_mm = 2.5;  // the drops drawn as streaks
   constexpr double kMaxDrops = 30000.0;
-  constexpr double kExposure_s = 1.0 / 125.0;
   constexpr double kPeriod_s =
       60.0;  // the drops are drawn anew each period (float time stays exact)
   const double rate = light.rain_mm_per_h;
@@ -415,7 +414,7 @@ void CameraRenderer::DrawRain(const SceneLighting& light, const SkyShading& sky,
                static_cast<GLuint>(0x5EED0000u ^ static_cast<std::uint32_t>(period)));
   glUniform1f(p.Uniform("u_min_diameter_mm"), static_cast<float>(kMinDiameter_mm));
   glUniform1f(p.Uniform("u_slope_per_mm"), static_cast<float>(rain::CalcSlope_per_mm(rate)));
-  glUniform1f(p.Uniform("u_exposure_s"), static_cast<float>(kExposure_s));
+  glUniform1f(p.Uniform("u_exposure_s"), static_cast<float>(exposure_time_s_));
   glUniform2f(p.Uniform("u_pixel_ndc"), 2.0f / static_cast<float>(k.width_px),
               2.0f / static_cast<float>(k.height_px));
   glUniform1f(p.Uniform("u_pixel_rad"), static_cast<float>(1.0 / k.fx_px));

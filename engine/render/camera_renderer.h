@@ -72,6 +72,9 @@ class CameraRenderer {
   /// Lights the next frames with `lighting` instead of the scene's (a dataset's randomized sun and
   /// fog); nullopt returns to the scene's.
   void set_lighting(std::optional<SceneLighting> lighting) { lighting_ = std::move(lighting); }
+  /// The time the shutter is open (s; default 1/125 s): how long the rain's streaks are. A camera
+  /// sensor sets its CameraEffectsConfig::exposure_time_s.
+  void set_exposure_time_s(double exposure_s) { exposure_time_s_ = exposure_s; }
 
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
   /// Intrinsics of the undistorted image the geometry pass renders (equal to intrinsics() without
@@ -145,6 +148,7 @@ class CameraRenderer {
   const EglContext& context_;
   CameraIntrinsics intrinsics_;
   CameraIntrinsics render_intrinsics_;
+  double exposure_time_s_ = 1.0 / 125.0;
   RenderOutputs outputs_;
   double detail_tolerance_px_;
   std::optional<SceneLighting> lighting_;  // replaces the scene's when set

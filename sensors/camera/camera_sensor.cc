@@ -46,7 +46,9 @@ CameraSensor::CameraSensor(std::string name, const CameraConfig& config,
       renderer_(scene_->context(), config_.CalcIntrinsics(), CalcRendererOutputs(config_),
                 config_.detail_tolerance_px),
       effects_(config_.effects, renderer_.intrinsics(), stream.Fork("noise").NextU64()),
-      stream_(MakeImageStream(this->name(), config_, renderer_.intrinsics())) {}
+      stream_(MakeImageStream(this->name(), config_, renderer_.intrinsics())) {
+  renderer_.set_exposure_time_s(config_.effects.exposure_time_s);
+}
 
 const engine::CameraFrame& CameraSensor::latest(std::size_t index) const {
   AIRIS_DEMAND(index == 0);

@@ -25,6 +25,7 @@ StereoCameraSensor::StereoCameraSensor(std::string name, const StereoCameraConfi
                                      stream.Fork("noise_left").NextU64()),
                engine::CameraEffects(config_.camera.effects, renderer_.intrinsics(),
                                      stream.Fork("noise_right").NextU64())} {
+  renderer_.set_exposure_time_s(config_.camera.effects.exposure_time_s);
   const std::vector<std::string> names = StreamNames(this->name());
   for (std::size_t i = 0; i < 2; ++i) {
     const std::string side = i == 0 ? "left" : "right";

@@ -194,11 +194,12 @@ TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
   light.rain_mm_per_h = 50.0f;
   const auto camera = CameraIntrinsics::FromHorizontalFov(65, 49, 30.0, 0.1, 10000.0);
   const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 0.0);
-  const auto render = [&](TimeNs t) {
+  const auto render = [&](TimeNs t, double exposure_s = 0.0) {
     EglContext& context = testing::SharedContext();
     GpuScene gpu(scene);
     gpu.set_lighting(light);
     CameraRenderer renderer(context, camera, RenderOutputs{});
+    if (exposure_s > 0.0) renderer.set_exposure_time_s(exposure_s);
     CameraFrame frame;
     renderer.Render(gpu, T_WC, t, frame);
     return frame;
@@ -215,6 +216,10 @@ TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
   // AND the streaks are the same at the same time and move 10 ms later
   EXPECT_EQ(render(1'000'000'000).rgba.pixels, a.rgba.pixels);
   EXPECT_NE(render(1'010'000'000).rgba.pixels, a.rgba.pixels);
+  // AND the streaks are as long as the camera's exposure: 1/125 s unless set, and another one
+  // draws other streaks
+  EXPECT_EQ(render(1'000'000'000, 1.0 / 125.0).rgba.pixels, a.rgba.pixels);
+  EXPECT_NE(render(1'000'000'000, 1.0 / 30.0).rgba.pixels, a.rgba.pixels);
 }
 
 }  // namespace
