@@ -97,6 +97,16 @@ void CheckMissionInScene(const engine::Mission& mission, const Scene& scene,
                       starts_W.empty() ? scene.vehicles.at(v).start.p_W : starts_W[t]});
   }
   engine::CheckMission(mission, tracks, engine::LocalNedFrame(scene.origin));
+  // A drawn value that changes nothing would still be written with every frame, as if it had.
+  const engine::SkyModel sky = scene.static_scene.lighting.sky;
+  if (mission.randomize.turbidity && sky != engine::SkyModel::kClear) {
+    const std::string key = "randomize.turbidity";
+    throw engine::ConfigError(
+        mission.locate ? mission.locate(key) : engine::SourceLocation{mission.file, 0, 0}, key,
+        "turbidity shapes the clear sky only, and the scene's sky is '" +
+            std::string(engine::ToString(sky)) +
+            "': set scene.lighting.sky: clear, or draw no turbidity");
+  }
 }
 
 }  // namespace airis::scenes

@@ -90,6 +90,29 @@ TEST(LimitsDocTest, DocsListEveryLimitAsTheCodeHasIt) {
       << LimitsMarkdown();
 }
 
+// GIVEN a dataset mission drawing the clear sky's turbidity
+// THEN a scene whose sky is not clear refuses it at the mission's key (the drawn values would be
+//      written with every frame and change nothing); a clear sky takes it
+TEST(MissionInSceneTest, TurbidityIsDrawnForAClearSkyOnly) {
+  const auto scene_with = [](const std::string& sky) {
+    return LoadSceneFromString(
+        "scene:\n  lighting: {sky: " + sky + "}\nvehicles:\n  - name: d\n    preset: hexa_x\n",
+        "s.yaml");
+  };
+  const engine::Mission mission = ParseMission(
+      "vehicle: d\nsteps:\n  - hover: {duration_s: 1}\nrandomize: {turbidity: [2, 6]}\n", "m.yaml");
+  const std::vector<std::size_t> first(1, 0);
+  try {
+    CheckMissionInScene(mission, scene_with("overcast"), first);
+    FAIL() << "accepted";
+  } catch (const engine::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.yaml:4:13: randomize.turbidity: turbidity shapes the clear sky only, and the "
+              "scene's sky is 'overcast': set scene.lighting.sky: clear, or draw no turbidity");
+  }
+  EXPECT_NO_THROW(CheckMissionInScene(mission, scene_with("clear"), first));
+}
+
 struct ExampleFlight {
   const char* scene;
   const char* mission;
