@@ -1,7 +1,8 @@
 // Rain streaks (docs/rendering.md, "Rain"). Drop k is placed and sized by hashes of k and the period:
 // anywhere in a cube of side u_box_m that wraps around the camera (so the drops stay fixed in the world
 // as the camera moves), diameter D >= u_min_diameter_mm from the Marshall-Palmer tail
-// D = D_min - ln(1 - q) / lambda, falling at its terminal speed 9.65 - 10.3 exp(-0.6 D) m/s. Its streak is
+// D = D_min - ln(1 - q) / lambda, falling at its terminal speed 9.65 - 10.3 exp(-0.6 D) m/s through air
+// that moves with the wind (a drop keeps its terminal speed relative to the air). Its streak is
 // the segment it falls along during the exposure (centred on the frame's time, as the camera's motion
 // blur), a quad one pixel wide, drawn as a triangle strip of
 // four vertices per instance with the scene's depth test (a drop behind a wall is hidden).
@@ -16,6 +17,7 @@ uniform uint u_seed;             // the seed and the period
 uniform float u_min_diameter_mm;
 uniform float u_slope_per_mm;    // Marshall-Palmer lambda
 uniform float u_exposure_s;      // the camera's exposure time (CameraEffectsConfig::exposure_time_s)
+uniform vec3 u_wind_W;           // the air's velocity at the camera, world NED (m/s)
 uniform vec2 u_pixel_ndc;        // one pixel in normalized device coordinates (2 / width, 2 / height)
 uniform float u_pixel_rad;       // one pixel's angle at the image centre
 
@@ -40,9 +42,10 @@ void main() {
   vec3 q = vec3(Uniform01(state), Uniform01(state), Uniform01(state));
   float diameter_mm = u_min_diameter_mm - log(1.0 - Uniform01(state)) / u_slope_per_mm;
   float speed = 9.65 - 10.3 * exp(-0.6 * diameter_mm);
-  vec3 p = q * u_box_m + vec3(0.0, 0.0, speed * u_time_s) - u_camera_mod_m;
+  vec3 velocity_W = u_wind_W + vec3(0.0, 0.0, speed);
+  vec3 p = q * u_box_m + velocity_W * u_time_s - u_camera_mod_m;
   p = mod(p + 0.5 * u_box_m, u_box_m) - 0.5 * u_box_m;  // relative to the camera, world axes
-  vec3 half_fall = vec3(0.0, 0.0, 0.5 * speed * u_exposure_s);
+  vec3 half_fall = 0.5 * u_exposure_s * velocity_W;
   vec3 end_C = u_R_CW * (p + half_fall);
   vec3 start_C = u_R_CW * (p - half_fall);
   if (end_C.z < 0.2 || start_C.z < 0.2) {  // behind or at the lens: not drawn

@@ -415,6 +415,8 @@ void CameraRenderer::DrawRain(const SceneLighting& light, const SkyShading& sky,
   glUniform1f(p.Uniform("u_min_diameter_mm"), static_cast<float>(kMinDiameter_mm));
   glUniform1f(p.Uniform("u_slope_per_mm"), static_cast<float>(rain::CalcSlope_per_mm(rate)));
   glUniform1f(p.Uniform("u_exposure_s"), static_cast<float>(exposure_time_s_));
+  const Eigen::Vector3f wind_W = wind_W_.cast<float>();
+  glUniform3fv(p.Uniform("u_wind_W"), 1, wind_W.data());
   glUniform2f(p.Uniform("u_pixel_ndc"), 2.0f / static_cast<float>(k.width_px),
               2.0f / static_cast<float>(k.height_px));
   glUniform1f(p.Uniform("u_pixel_rad"), static_cast<float>(1.0 / k.fx_px));

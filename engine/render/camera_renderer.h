@@ -75,6 +75,9 @@ class CameraRenderer {
   /// The time the shutter is open (s; default 1/125 s): how long the rain's streaks are. A camera
   /// sensor sets its CameraEffectsConfig::exposure_time_s.
   void set_exposure_time_s(double exposure_s) { exposure_time_s_ = exposure_s; }
+  /// The air's velocity at the camera (world NED, m/s) for the next frames: the rain's drops
+  /// drift with it (zero by default). A camera sensor sets the environment's wind there.
+  void set_wind_W(const Eigen::Vector3d& wind_W) { wind_W_ = wind_W; }
 
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
   /// Intrinsics of the undistorted image the geometry pass renders (equal to intrinsics() without
@@ -149,6 +152,7 @@ class CameraRenderer {
   CameraIntrinsics intrinsics_;
   CameraIntrinsics render_intrinsics_;
   double exposure_time_s_ = 1.0 / 125.0;
+  Eigen::Vector3d wind_W_ = Eigen::Vector3d::Zero();
   RenderOutputs outputs_;
   double detail_tolerance_px_;
   std::optional<SceneLighting> lighting_;  // replaces the scene's when set

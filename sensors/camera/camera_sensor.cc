@@ -70,8 +70,10 @@ void CameraSensor::CopyLatestRow(std::span<double> out) const {
 void CameraSensor::Render(const engine::SensorContext& context, engine::CameraFrame& out) {
   const engine::FrameConditions conditions = CalcConditions(context.now_ns);
   SetFrameLighting(scene_->gpu_scene().lighting(), conditions, renderer_);
-  renderer_.Render(scene_->gpu_scene(), engine::CalcImageStreamPose(stream_, context.state),
-                   context.now_ns, out, CalcBodyPoses(context, stream_, body_poses_W_));
+  const Eigen::Isometry3d T_WC = engine::CalcImageStreamPose(stream_, context.state);
+  SetFrameWind(context, T_WC, renderer_);
+  renderer_.Render(scene_->gpu_scene(), T_WC, context.now_ns, out,
+                   CalcBodyPoses(context, stream_, body_poses_W_));
   ApplyCameraMotionBlur(config_, renderer_.intrinsics(), stream_, context, out);
   ApplyEffects(effects_, conditions, out);
 }
@@ -133,6 +135,12 @@ void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameCondi
                                                    conditions.read_noise_e};
   if (frame.rgba.empty() || !effects.active(adjustment)) return;
   effects.Apply(frame.rgba, frame.time_ns, adjustment);
+}
+
+void SetFrameWind(const engine::SensorContext& context, const Eigen::Isometry3d& T_WC,
+                  engine::CameraRenderer& renderer) {
+  if (context.environment == nullptr) return;
+  renderer.set_wind_W(context.environment->wind().CalcVelocity_W(T_WC.translation()));
 }
 
 engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config) {

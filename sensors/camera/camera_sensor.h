@@ -70,6 +70,10 @@ void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameCon
 /// change it).
 void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameConditions& conditions,
                   engine::CameraFrame& frame);
+/// Points `renderer` at the wind of `context`'s environment where the camera is (at T_WC): the
+/// rain drifts with it. Nothing without an environment.
+void SetFrameWind(const engine::SensorContext& context, const Eigen::Isometry3d& T_WC,
+                  engine::CameraRenderer& renderer);
 /// The outputs the renderer of a camera with `config` makes: the camera's, and planar depth when
 /// its motion blur needs it (ApplyCameraMotionBlur drops it again).
 engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config);

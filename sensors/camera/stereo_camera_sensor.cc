@@ -67,6 +67,7 @@ void StereoCameraSensor::Render(const engine::SensorContext& context, engine::Ca
   const engine::BodyPoses bodies = CalcBodyPoses(context, streams_[0], body_poses_W_);
   const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
   const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);
+  SetFrameWind(context, T_WL, renderer_);
   renderer_.Submit(scene_->gpu_scene(), T_WL, context.now_ns, bodies);
   renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns, bodies);
   renderer_.Collect(left);

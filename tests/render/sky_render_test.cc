@@ -222,5 +222,45 @@ TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
   EXPECT_NE(render(1'000'000'000, 1.0 / 30.0).rgba.pixels, a.rgba.pixels);
 }
 
+// GIVEN rain of 50 mm/h before a black wall, seen by a level camera looking north, 1/30 s exposure
+// WHEN still air, then a wind of 25 m/s blowing east (to the image's right)
+// THEN the streaks fall down the image in still air and drift sideways in the wind: the light they
+//      add changes mostly across image columns (vertical streaks) in still air and mostly across
+//      rows (streaks slanted 18 deg from the horizontal: 8 m/s down, 25 m/s across) in the wind
+TEST(SkyRenderTest, RainDriftsWithTheWind) {
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddBox(scene, {60.5, 0.0, -10.0}, {1.0, 4000.0, 4000.0}, 2, 2, Eigen::Vector3f::Zero());
+  scene.materials.back().metallic = 1.0f;
+  SceneLighting light;
+  light.rain_mm_per_h = 50.0f;
+  const auto camera = CameraIntrinsics::FromHorizontalFov(160, 120, 60.0, 0.1, 1000.0);
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 0.0);
+  // Sum over the image of |d/du| and |d/dv| of the green channel (the wall is uniform: streaks
+  // make every change).
+  const auto gradients = [&](const Eigen::Vector3d& wind_W) {
+    EglContext& context = testing::SharedContext();
+    GpuScene gpu(scene);
+    gpu.set_lighting(light);
+    CameraRenderer renderer(context, camera, RenderOutputs{});
+    renderer.set_wind_W(wind_W);
+    renderer.set_exposure_time_s(1.0 / 30.0);  // long streaks: their direction shows
+    CameraFrame frame;
+    renderer.Render(gpu, T_WC, 1'000'000'000, frame);
+    const auto green = [&](int u, int v) { return double(frame.rgba.at(u, v, 1)); };
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (int v = 1; v < camera.height_px; ++v) {
+      for (int u = 1; u < camera.width_px; ++u) {
+        sum += Eigen::Vector2d(std::abs(green(u, v) - green(u - 1, v)),
+                               std::abs(green(u, v) - green(u, v - 1)));
+      }
+    }
+    return sum;
+  };
+  const Eigen::Vector2d still = gradients(Eigen::Vector3d::Zero());
+  const Eigen::Vector2d windy = gradients(Eigen::Vector3d(0.0, 25.0, 0.0));
+  EXPECT_GT(still.x(), 2.0 * still.y()) << still.transpose();
+  EXPECT_GT(windy.y(), 1.5 * windy.x()) << windy.transpose();
+}
+
 }  // namespace
 }  // namespace airis::engine
