@@ -7,6 +7,7 @@
 #include <assimp/Importer.hpp>
 #include <filesystem>
 #include <initializer_list>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,19 +42,46 @@ Eigen::Matrix3f AxesRotation(MeshAxes axes) {
   return R;
 }
 
-// The absolute path of the first texture of `types` that material `in` (named `material`) of the
-// mesh file at `mesh_path` names, "" when it names none. Throws MeshLoadError when the file is
-// missing or no image the renderer reads.
-std::string TexturePath(const aiMaterial& in, std::initializer_list<aiTextureType> types,
-                        const std::string& material, const std::string& mesh_path) {
+// The image of embedded texture `name` ("*N") of `scene`: the bytes of the PNG or JPEG file the
+// mesh file holds (glTF's images always are), "" when there is none. Sets `raw` when the texture
+// is raw texels instead (assimp's mHeight > 0, from other formats).
+std::string EmbeddedImage(const aiScene& scene, const std::string& name, bool* raw) {
+  const aiTexture* t = scene.GetEmbeddedTexture(name.c_str());
+  *raw = t != nullptr && t->mHeight != 0;
+  if (t == nullptr || t->pcData == nullptr || *raw) return "";
+  return std::string(reinterpret_cast<const char*>(t->pcData), t->mWidth);
+}
+
+// The texture of the first of `types` that material `in` (named `material`) of the mesh file at
+// `mesh_path` names, "" when it names none: the absolute path of an image file, or for an image
+// embedded in the file (a GLB's, a data URI's) the name "MESH_PATH#*N" under which its bytes go
+// into `images`. Throws MeshLoadError when the file is missing or no image the renderer reads.
+std::string TexturePath(const aiScene& scene, const aiMaterial& in,
+                        std::initializer_list<aiTextureType> types, const std::string& material,
+                        const std::string& mesh_path, std::map<std::string, std::string>& images) {
   aiString texture;
   for (aiTextureType type : types) {
     if (in.GetTexture(type, 0, &texture) == AI_SUCCESS) break;
     texture.Clear();
   }
   const std::string t = texture.C_Str();
-  // "*N" names a texture embedded in the file (GLB); the renderer does not read those yet.
-  if (t.empty() || t[0] == '*') return "";
+  if (t.empty()) return "";
+  if (t[0] == '*') {
+    const std::string name = mesh_path + "#" + t;
+    if (images.count(name) != 0) return name;
+    bool raw = false;
+    std::string image = EmbeddedImage(scene, t, &raw);
+    const std::string problem =
+        raw ? "raw texels, not a PNG or JPEG image (airis reads embedded images of those two)"
+        : image.empty() ? "the file holds no such image"
+                        : engine::CheckTextureBytes(image);
+    if (!problem.empty()) {
+      throw MeshLoadError("embedded texture " + t + " (named by material '" + material +
+                          "'): " + problem);
+    }
+    images.emplace(name, std::move(image));
+    return name;
+  }
   const fs::path resolved = (fs::path(mesh_path).parent_path() / t).lexically_normal();
   if (!fs::is_regular_file(resolved)) {
     throw MeshLoadError("texture file not found: " + resolved.string() + " (named by material '" +
@@ -67,7 +95,9 @@ std::string TexturePath(const aiMaterial& in, std::initializer_list<aiTextureTyp
   return fs::absolute(resolved).string();
 }
 
-engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path) {
+engine::Material ReadMaterial(const aiScene& scene, const aiMaterial& in,
+                              const std::string& mesh_path,
+                              std::map<std::string, std::string>& images) {
   engine::Material out;
   aiString name;
   if (in.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
@@ -90,13 +120,14 @@ engine::Material ReadMaterial(const aiMaterial& in, const std::string& mesh_path
       out.metallic = std::clamp(factor, 0.0f, 1.0f);
     }
   }
-  out.texture_path =
-      TexturePath(in, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, out.name, mesh_path);
+  out.texture_path = TexturePath(scene, in, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE},
+                                 out.name, mesh_path, images);
   if (gltf) {
     // glTF 2.0's normal and metallic-roughness maps (assimp files the latter as metalness).
-    out.normal_texture_path = TexturePath(in, {aiTextureType_NORMALS}, out.name, mesh_path);
+    out.normal_texture_path =
+        TexturePath(scene, in, {aiTextureType_NORMALS}, out.name, mesh_path, images);
     out.metallic_roughness_texture_path =
-        TexturePath(in, {aiTextureType_METALNESS}, out.name, mesh_path);
+        TexturePath(scene, in, {aiTextureType_METALNESS}, out.name, mesh_path, images);
   }
   return out;
 }
@@ -149,7 +180,7 @@ MeshFile LoadMeshFile(const std::string& path, MeshAxes axes) {
   const Eigen::Matrix3f R = AxesRotation(axes);
   MeshFile out;
   for (unsigned m = 0; m < scene->mNumMaterials; ++m) {
-    out.materials.push_back(ReadMaterial(*scene->mMaterials[m], path));
+    out.materials.push_back(ReadMaterial(*scene, *scene->mMaterials[m], path, out.images));
   }
   if (out.materials.empty()) out.materials.emplace_back();
   std::size_t triangles = 0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct MeshFile {
   std::vector<engine::TriangleMesh> meshes;
   std::vector<engine::Material> materials;
   std::vector<Part> parts;
+  /// Texture images embedded in the file (StaticScene::embedded_images), by the names its
+  /// materials give them ("PATH#*N").
+  std::map<std::string, std::string> images;
 };
 
 /// Why a mesh file could not be used (unreadable, empty, a texture missing); the message is

@@ -214,7 +214,12 @@ class SceneAssembler {
     }
     NoteInput(resolved);
     for (const auto& m : file.materials) {
-      if (!m.texture_path.empty()) NoteInput(m.texture_path);
+      if (!m.texture_path.empty() && file.images.count(m.texture_path) == 0) {
+        NoteInput(m.texture_path);
+      }
+    }
+    for (auto& [name, image] : file.images) {
+      builder_.scene().embedded_images.emplace(name, std::move(image));
     }
     std::size_t triangles = 0;
     for (const auto& mesh : file.meshes) triangles += mesh.triangle_count();

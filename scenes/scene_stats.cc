@@ -27,6 +27,8 @@ std::size_t EstimateMemoryBytes(const engine::StaticScene& s) {
              VectorBytes(m.indices) + StringBytes(m.name);
   }
   for (const auto& m : s.materials) bytes += StringBytes(m.name) + StringBytes(m.texture_path);
+  for (const auto& [name, image] : s.embedded_images)
+    bytes += StringBytes(name) + StringBytes(image);
   for (const auto& m : s.models) bytes += VectorBytes(m.parts) + StringBytes(m.name);
   for (const auto& o : s.objects) bytes += StringBytes(o.name);
   for (const auto& b : s.vehicle_bodies) bytes += StringBytes(b.name);

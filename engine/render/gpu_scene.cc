@@ -28,9 +28,16 @@ struct Vertex {
 
 // Uploads the image at `path` (mipmapped, repeating): colour (`srgb`, decoded to linear by the
 // sampler) or data such as normals (linear).
-GLuint UploadTexture(const std::string& path, bool srgb) {
-  // Scene loading checked the file (CheckTextureFile); it may have changed since.
-  const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+GLuint UploadTexture(const StaticScene& scene, const std::string& path, bool srgb) {
+  // Scene loading checked the file or embedded image (CheckTextureFile, CheckTextureBytes); a
+  // file may have changed since.
+  cv::Mat bgr;
+  if (const auto it = scene.embedded_images.find(path); it != scene.embedded_images.end()) {
+    const std::vector<unsigned char> bytes(it->second.begin(), it->second.end());
+    bgr = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  } else {
+    bgr = cv::imread(path, cv::IMREAD_COLOR);
+  }
   if (bgr.empty()) throw ConfigError({path, 0, 0}, "", "cannot read the texture image");
   cv::Mat rgba;
   cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
@@ -130,11 +137,11 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     gpu.pattern = m.pattern;
     gpu.params.pattern_size_m[0] = m.pattern_size_m.x();
     gpu.params.pattern_size_m[1] = m.pattern_size_m.y();
-    gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(m.texture_path, true);
+    gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(scene, m.texture_path, true);
     if (!m.normal_texture_path.empty())
-      gpu.normal_map = UploadTexture(m.normal_texture_path, false);
+      gpu.normal_map = UploadTexture(scene, m.normal_texture_path, false);
     if (!m.metallic_roughness_texture_path.empty()) {
-      gpu.metallic_roughness_map = UploadTexture(m.metallic_roughness_texture_path, false);
+      gpu.metallic_roughness_map = UploadTexture(scene, m.metallic_roughness_texture_path, false);
     }
     materials_.push_back(gpu);
   }

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "engine/core/limits.h"
@@ -50,7 +52,7 @@ std::uint32_t Crc32(std::uint32_t crc, const unsigned char* data, std::size_t si
 /// Width and height from a PNG's IHDR chunk (PNG specification, 11.2.2), which must come first,
 /// after checking every chunk's length and CRC up to IEND: a truncated or damaged file is refused
 /// here, before the decoder (which would print its own complaint) sees it.
-std::optional<ImageSize> PngSize(std::ifstream& in, std::string* problem) {
+std::optional<ImageSize> PngSize(std::istream& in, std::string* problem) {
   in.seekg(8);
   std::optional<ImageSize> size;
   std::vector<unsigned char> chunk;
@@ -85,7 +87,7 @@ std::optional<ImageSize> PngSize(std::ifstream& in, std::string* problem) {
 
 /// Width and height from a JPEG's first start-of-frame segment (ITU T.81, B.2.2): markers are
 /// walked segment by segment from the start of the file.
-std::optional<ImageSize> JpegSize(std::ifstream& in) {
+std::optional<ImageSize> JpegSize(std::istream& in) {
   in.seekg(2);
   for (;;) {
     unsigned char marker[4];
@@ -106,7 +108,7 @@ std::optional<ImageSize> JpegSize(std::ifstream& in) {
 
 /// True when the file's last kilobyte holds an end-of-image marker (FF D9): a JPEG cut short has
 /// none.
-bool JpegHasEnd(std::ifstream& in, std::uintmax_t bytes) {
+bool JpegHasEnd(std::istream& in, std::uintmax_t bytes) {
   const std::uintmax_t tail = std::min<std::uintmax_t>(bytes, 1024);
   std::vector<char> buffer(tail);
   in.clear();
@@ -133,6 +135,18 @@ std::string CheckTextureFile(const std::string& path) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) return "cannot open the file";
+  std::string contents(bytes, '\0');
+  if (!in.read(contents.data(), static_cast<std::streamsize>(bytes))) return "cannot read the file";
+  return CheckTextureBytes(contents);
+}
+
+std::string CheckTextureBytes(const std::string& contents) {
+  const std::uintmax_t bytes = contents.size();
+  if (bytes > kMaxTextureFileBytes) {
+    return "the image has " + std::to_string(bytes) + " bytes, more than the limit of " +
+           std::to_string(kMaxTextureFileBytes) + " (docs/limits.md)";
+  }
+  std::istringstream in(contents);
   unsigned char magic[4] = {};
   in.read(reinterpret_cast<char*>(magic), 4);
   in.clear();
@@ -153,7 +167,8 @@ std::string CheckTextureFile(const std::string& path) {
            " px; each side must be 1 to " + std::to_string(kMaxTextureSide_px) +
            " px (docs/limits.md)";
   }
-  if (cv::imread(path, cv::IMREAD_COLOR).empty()) return "the image cannot be decoded";
+  const std::vector<unsigned char> buffer(contents.begin(), contents.end());
+  if (cv::imdecode(buffer, cv::IMREAD_COLOR).empty()) return "the image cannot be decoded";
   return "";
 }
 

@@ -9,5 +9,8 @@ namespace airis::engine {
 /// before decoding, so a small file cannot claim gigapixels), and that decodes. Needs no GL
 /// context: scene loading calls it so that a scene that loads renders.
 std::string CheckTextureFile(const std::string& path);
+/// The same checks of an image held in memory (`contents`: the bytes of a PNG or JPEG file; a
+/// texture embedded in a GLB).
+std::string CheckTextureBytes(const std::string& contents);
 
 }  // namespace airis::engine

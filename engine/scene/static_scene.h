@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
@@ -220,6 +221,9 @@ struct StaticTerrain {
 struct StaticScene {
   std::vector<TriangleMesh> meshes;
   std::vector<Material> materials;
+  /// Texture images embedded in mesh files (a GLB's, a glTF's data URIs): the bytes of each PNG or
+  /// JPEG by the name materials give it in place of a path ("MESH_PATH#*N").
+  std::map<std::string, std::string> embedded_images;
   std::vector<Model> models;
   std::vector<StaticObject> objects;
   /// Body k is the look of the world's vehicle k (a world built from a scene adds its vehicles in

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
@@ -191,6 +193,37 @@ TEST(MaterialRenderTest, TexturesAreUprightOnBoxes) {
   const Eigen::Vector3i bottom = rgb(32, 42);
   EXPECT_GT(top.x(), 4 * top.z()) << top.transpose();
   EXPECT_GT(bottom.z(), 4 * bottom.x()) << bottom.transpose();
+}
+
+// GIVEN the box of TexturesAreUprightOnBoxes with its texture once as a file and once as the same
+//       bytes embedded in the scene (StaticScene::embedded_images: a GLB's images)
+// THEN both render the same bytes
+TEST(MaterialRenderTest, EmbeddedTexturesRenderAsTheirFiles) {
+  const auto render = [](bool embedded) {
+    StaticScene scene = testing::MakeEmptyScene();
+    testing::AddBox(scene, {10.0, 0.0, -5.0}, {2.0, 8.0, 8.0}, 2, 2, Eigen::Vector3f::Ones());
+    const cv::Vec3b blue(0, 0, 255);
+    const std::string path = WritePng("embedded.png", {255, 0, 0}, 8, 8, &blue);
+    scene.materials.back().texture_path = path;
+    if (embedded) {
+      std::ifstream in(path, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+      scene.materials.back().texture_path = "model.glb#*0";
+      scene.embedded_images["model.glb#*0"] = bytes;
+    }
+    SceneLighting light;
+    light.sun_direction_W = Eigen::Vector3d(1.0, 0.0, 0.3).normalized();
+    const auto camera = CameraIntrinsics::FromHorizontalFov(64, 64, 60.0, 0.1, 100.0);
+    return testing::RenderColourDepthLabels(scene, light, camera,
+                                            testing::LookPose({0.0, 0.0, -5.0}, 0.0, 0.0));
+  };
+  const CameraFrame from_file = render(false);
+  const CameraFrame from_memory = render(true);
+  EXPECT_EQ(from_memory.rgba.pixels, from_file.rgba.pixels);
+  // AND the texture is drawn (the face's top is red)
+  const std::size_t i = 4 * (22 * 64 + 32);
+  EXPECT_GT(from_memory.rgba.pixels[i], 4 * from_memory.rgba.pixels[i + 2]);
 }
 
 // A wall face on to the camera, 10 m north of it, turned by R about its centre, seen under the sun

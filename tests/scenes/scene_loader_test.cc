@@ -257,6 +257,62 @@ TEST(SceneLoaderTest, GltfMaterialsBringTheirNormalAndMetallicRoughnessMaps) {
       << error;
 }
 
+/// A GLB of the quad whose base colour texture is `png`, embedded in its binary chunk.
+std::string GlbQuadWithEmbeddedTexture(const std::string& png) {
+  std::string bin = QuadBuffer() + png;  // the quad's 140 bytes, then the image
+  const std::size_t image_bytes = png.size();
+  while (bin.size() % 4 != 0) bin.push_back('\0');
+  std::string json = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2},
+                              "indices": 3, "material": 0}]}],
+  "materials": [{"name": "decal", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+  "textures": [{"source": 0}],
+  "images": [{"bufferView": 4, "mimeType": "image/png"}],
+  "buffers": [{"byteLength": )" +
+                     std::to_string(bin.size()) + R"(}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                  {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                  {"buffer": 0, "byteOffset": 96, "byteLength": 32},
+                  {"buffer": 0, "byteOffset": 128, "byteLength": 12},
+                  {"buffer": 0, "byteOffset": 140, "byteLength": )" +
+                     std::to_string(image_bytes) + R"(}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                 "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+                {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+  while (json.size() % 4 != 0) json.push_back(' ');
+  const auto u32 = [](std::uint32_t v) {
+    return std::string(reinterpret_cast<const char*>(&v), 4);
+  };
+  return "glTF" + u32(2) + u32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size())) +
+         u32(static_cast<std::uint32_t>(json.size())) + "JSON" + json +
+         u32(static_cast<std::uint32_t>(bin.size())) + std::string("BIN\0", 4) + bin;
+}
+
+// GIVEN a GLB whose base colour texture is a PNG embedded in the file (as most GLBs carry them)
+// THEN its material names the image "PATH#*0" and the scene holds the image's bytes (it was
+//      silently left out before); the image is no input file of the scene
+// AND an embedded image that is no PNG or JPEG is an error naming the texture and the material
+TEST(SceneLoaderTest, GlbTexturesEmbeddedInTheFileAreRead) {
+  SceneFiles f("glb_embedded");
+  f.Write("m/decal.glb", GlbQuadWithEmbeddedTexture(kPixelPng));
+  const Scene s = LoadScene(f.Write("good.yaml", "objects:\n  - mesh: m/decal.glb\n"));
+  const engine::Model& model = s.static_scene.models[s.static_scene.objects.back().model];
+  const engine::Material& m = s.static_scene.materials[model.parts.at(0).material];
+  const std::string name = f.Path("m/decal.glb") + "#*0";
+  EXPECT_EQ(m.texture_path, name);
+  ASSERT_EQ(s.static_scene.embedded_images.count(name), 1u);
+  EXPECT_EQ(s.static_scene.embedded_images.at(name), kPixelPng);
+  EXPECT_EQ(std::count(s.files.begin(), s.files.end(), name), 0);
+  f.Write("m/bad.glb", GlbQuadWithEmbeddedTexture("GIF89a not an image we read"));
+  const std::string error = LoadError(f.Write("bad.yaml", "objects:\n  - mesh: m/bad.glb\n"));
+  EXPECT_NE(error.find("embedded texture *0 (named by material 'decal'): not a PNG or JPEG image"),
+            std::string::npos)
+      << error;
+}
+
 TEST(SceneLoaderTest, IncludeCycleNamesTheChain) {
   SceneFiles f("cycle");
   const std::string a = f.Write("a.yaml", "include: [b.yaml]\n");
