@@ -54,7 +54,7 @@ std::string EmbeddedImage(const aiScene& scene, const std::string& name, bool* r
 
 // The texture of the first of `types` that material `in` (named `material`) of the mesh file at
 // `mesh_path` names, "" when it names none: the absolute path of an image file, or for an image
-// embedded in the file (a GLB's, a data URI's) the name "MESH_PATH#*N" under which its bytes go
+// embedded in the file (a GLB's) the name "MESH_PATH#*N" under which its bytes go
 // into `images`. Throws MeshLoadError when the file is missing or no image the renderer reads.
 std::string TexturePath(const aiScene& scene, const aiMaterial& in,
                         std::initializer_list<aiTextureType> types, const std::string& material,

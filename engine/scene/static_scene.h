@@ -221,7 +221,7 @@ struct StaticTerrain {
 struct StaticScene {
   std::vector<TriangleMesh> meshes;
   std::vector<Material> materials;
-  /// Texture images embedded in mesh files (a GLB's, a glTF's data URIs): the bytes of each PNG or
+  /// Texture images embedded in mesh files (a GLB's binary chunk): the bytes of each PNG or
   /// JPEG by the name materials give it in place of a path ("MESH_PATH#*N").
   std::map<std::string, std::string> embedded_images;
   std::vector<Model> models;
