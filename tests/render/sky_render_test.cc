@@ -185,25 +185,36 @@ TEST(SkyRenderTest, SkyAndWeatherChangeTheColourImageOnly) {
   }
 }
 
-TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
-  // GIVEN a black wall 300 m north (a perfect absorber) in rain of 50 mm/h, no fog
+/// A frame of rain of 50 mm/h before a black wall (a perfect absorber) `wall_m` north of a level
+/// camera looking north from 10 m up, no fog, at time `t`, with the renderer's exposure time
+/// (0: its default) and the wind at the camera.
+CameraFrame RenderRainBeforeABlackWall(double wall_m, const CameraIntrinsics& camera, TimeNs t,
+                                       double exposure_s = 0.0,
+                                       const Eigen::Vector3d& wind_W = Eigen::Vector3d::Zero()) {
   StaticScene scene = testing::MakeEmptyScene();
-  testing::AddBox(scene, {300.5, 0.0, -10.0}, {1.0, 4000.0, 4000.0}, 2, 2, Eigen::Vector3f::Zero());
+  testing::AddBox(scene, {wall_m + 0.5, 0.0, -10.0}, {1.0, 4000.0, 4000.0}, 2, 2,
+                  Eigen::Vector3f::Zero());
   scene.materials.back().metallic = 1.0f;
   SceneLighting light;
   light.rain_mm_per_h = 50.0f;
+  EglContext& context = testing::SharedContext();
+  GpuScene gpu(scene);
+  gpu.set_lighting(light);
+  CameraRenderer renderer(context, camera, RenderOutputs{});
+  if (exposure_s > 0.0) renderer.set_exposure_time_s(exposure_s);
+  renderer.set_wind_W(wind_W);
+  CameraFrame frame;
+  renderer.Render(gpu, testing::LookPose({0.0, 0.0, -10.0}, 0.0, 0.0), t, frame);
+  return frame;
+}
+
+TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
+  // GIVEN a black wall 300 m north (a perfect absorber) in rain of 50 mm/h, no fog
   const auto camera = CameraIntrinsics::FromHorizontalFov(65, 49, 30.0, 0.1, 10000.0);
-  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 0.0);
   const auto render = [&](TimeNs t, double exposure_s = 0.0) {
-    EglContext& context = testing::SharedContext();
-    GpuScene gpu(scene);
-    gpu.set_lighting(light);
-    CameraRenderer renderer(context, camera, RenderOutputs{});
-    if (exposure_s > 0.0) renderer.set_exposure_time_s(exposure_s);
-    CameraFrame frame;
-    renderer.Render(gpu, T_WC, t, frame);
-    return frame;
+    return RenderRainBeforeABlackWall(300.0, camera, t, exposure_s);
   };
+  const SceneLighting light;  // the horizon colour the wall fades to
   const CameraFrame a = render(1'000'000'000);
   // THEN its contrast against the horizon is exp(-sigma d), sigma = pi N0 / lambda^3: the median of
   // the image's green levels (streaks brighten few pixels), within one level of 255
@@ -228,24 +239,12 @@ TEST(SkyRenderTest, RainDimsAsItsExtinctionAndItsStreaksMoveWithTime) {
 //      add changes mostly across image columns (vertical streaks) in still air and mostly across
 //      rows (streaks slanted 18 deg from the horizontal: 8 m/s down, 25 m/s across) in the wind
 TEST(SkyRenderTest, RainDriftsWithTheWind) {
-  StaticScene scene = testing::MakeEmptyScene();
-  testing::AddBox(scene, {60.5, 0.0, -10.0}, {1.0, 4000.0, 4000.0}, 2, 2, Eigen::Vector3f::Zero());
-  scene.materials.back().metallic = 1.0f;
-  SceneLighting light;
-  light.rain_mm_per_h = 50.0f;
   const auto camera = CameraIntrinsics::FromHorizontalFov(160, 120, 60.0, 0.1, 1000.0);
-  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -10.0}, 0.0, 0.0);
   // Sum over the image of |d/du| and |d/dv| of the green channel (the wall is uniform: streaks
-  // make every change).
+  // make every change). Long streaks (1/30 s) show their direction.
   const auto gradients = [&](const Eigen::Vector3d& wind_W) {
-    EglContext& context = testing::SharedContext();
-    GpuScene gpu(scene);
-    gpu.set_lighting(light);
-    CameraRenderer renderer(context, camera, RenderOutputs{});
-    renderer.set_wind_W(wind_W);
-    renderer.set_exposure_time_s(1.0 / 30.0);  // long streaks: their direction shows
-    CameraFrame frame;
-    renderer.Render(gpu, T_WC, 1'000'000'000, frame);
+    const CameraFrame frame =
+        RenderRainBeforeABlackWall(60.0, camera, 1'000'000'000, 1.0 / 30.0, wind_W);
     const auto green = [&](int u, int v) { return double(frame.rgba.at(u, v, 1)); };
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     for (int v = 1; v < camera.height_px; ++v) {

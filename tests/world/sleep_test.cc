@@ -46,6 +46,18 @@ void StepUntilAsleep(Rig& rig, std::size_t i, double limit_s = 5.0) {
   }
 }
 
+// Puts b (vehicle 1) at `b_W` and lets it fall asleep while a (vehicle 0) hovers out of the way
+// above, then leaves a still at `a_W`, its wrench off, to fall.
+void SleepBThenDropA(Rig& rig, const Vec3& b_W, const Vec3& a_W) {
+  rig.state(1).p_W = b_W;
+  rig.state(0).p_W = Vec3(a_W.x(), a_W.y(), -1000.0);   // out of the way while b falls asleep
+  rig.bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -kG);  // hovering
+  StepUntilAsleep(rig, 1);
+  rig.state(0).p_W = a_W;
+  rig.state(0).v_W = Vec3::Zero();
+  rig.bodies[0]->wrench.force_B = Vec3::Zero();
+}
+
 TEST(SleepTest, BodyAtRestSleepsAfterTheDelayAndReadsAtRest) {
   // GIVEN a quad dropped from 0.2 m onto the ground (default sleep: below 5 mm/s and 0.01 rad/s for
   // 0.5 s)
@@ -150,13 +162,7 @@ TEST(SleepTest, MovingItFromACollisionListenerWakesItInThatTick) {
   // GIVEN b asleep on the ground, a falling onto the ground 5 m away, and a collision listener
   //       that lifts b 0.5 m when a lands (a reset done from a callback)
   auto rig = MakeRig(2);
-  rig->state(1).p_W = Vec3(0.0, 0.0, -kHalfHeight_m);
-  rig->state(0).p_W = Vec3(5.0, 0.0, -1000.0);           // out of the way while b falls asleep
-  rig->bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -kG);  // hovering
-  StepUntilAsleep(*rig, 1);
-  rig->state(0).p_W = Vec3(5.0, 0.0, -kHalfHeight_m - 0.3);
-  rig->state(0).v_W = Vec3::Zero();
-  rig->bodies[0]->wrench.force_B = Vec3::Zero();
+  SleepBThenDropA(*rig, Vec3(0.0, 0.0, -kHalfHeight_m), Vec3(5.0, 0.0, -kHalfHeight_m - 0.3));
   bool lifted = false;
   rig->world().AddCollisionListener([&](const CollisionEvent& e) {
     if (e.vehicle != 0 || lifted) return;
@@ -183,13 +189,7 @@ TEST(SleepTest, MovingItFromACollisionListenerWakesItInThatTick) {
 TEST(SleepTest, VehicleLandingOnASleepingOneWakesItAndTheStackStaysAtRest) {
   // GIVEN b asleep on the ground and a dropped onto it from 0.3 m
   auto rig = MakeRig(2);
-  rig->state(1).p_W = Vec3(2.0, 1.0, -kHalfHeight_m);
-  rig->state(0).p_W = Vec3(2.0, 1.0, -1000.0);           // out of the way while b falls asleep
-  rig->bodies[0]->wrench.force_B = Vec3(0.0, 0.0, -kG);  // hovering
-  StepUntilAsleep(*rig, 1);
-  rig->state(0).p_W = Vec3(2.0, 1.0, -3.0 * kHalfHeight_m - 0.3);
-  rig->state(0).v_W = Vec3::Zero();
-  rig->bodies[0]->wrench.force_B = Vec3::Zero();
+  SleepBThenDropA(*rig, Vec3(2.0, 1.0, -kHalfHeight_m), Vec3(2.0, 1.0, -3.0 * kHalfHeight_m - 0.3));
   // WHEN a lands on it THEN b wakes in that tick and carries a
   while (rig->world().vehicle_contacts().empty()) {
     EXPECT_TRUE(rig->world().asleep(1));
