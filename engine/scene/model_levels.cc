@@ -14,7 +14,7 @@
 namespace airis::engine {
 namespace {
 
-constexpr int kLevelSegments[] = {12, 6, 3};
+constexpr int kLevelSegments[] = {18, 14, 12, 10, 8, 6, 5, 4, 3};
 // A part narrower than this fraction of its model's largest extent is thin.
 constexpr double kThinFraction = 0.1;
 
@@ -63,6 +63,21 @@ double CalcTessellationError_m(const TriangleMesh& mesh, Primitive primitive, in
   return 0.5 - nearest_plane;
 }
 
+CoarsePrimitiveMesh MakeCoarsePrimitiveMesh(Primitive primitive, int segments) {
+  CoarsePrimitiveMesh coarse{MakePrimitiveMesh(primitive, segments), 0.0};
+  const double inscribed = CalcTessellationError_m(coarse.mesh, primitive, segments);
+  // Widened by s = 1 / (1 - e), the faces' nearest points are at (0.5 - e) s and the vertices at
+  // 0.5 s from the axis (the centre): both 0.5 e / (1 - e) off the radius 0.5.
+  const float s = static_cast<float>(1.0 / (1.0 - inscribed));
+  const Eigen::Vector3f widen(s, s, primitive == Primitive::kSphere ? s : 1.0f);
+  for (Eigen::Vector3f& p : coarse.mesh.positions) p = p.cwiseProduct(widen);
+  // Normals go with the inverse transpose (a cone's sides get steeper).
+  for (Eigen::Vector3f& n : coarse.mesh.normals) n = n.cwiseQuotient(widen).normalized();
+  UpdateBounds(coarse.mesh);
+  coarse.error_m = 0.5 * inscribed / (1.0 - inscribed);
+  return coarse;
+}
+
 void AddCoarserLevels(StaticScene& scene) {
   // The coarse tessellations, made once per (primitive, segments), and their errors.
   std::map<std::pair<Primitive, int>, std::pair<std::uint32_t, double>> coarse;
@@ -70,10 +85,9 @@ void AddCoarserLevels(StaticScene& scene) {
     if (p == Primitive::kSphere) segments = std::max(segments, 4);
     auto [it, inserted] = coarse.try_emplace({p, segments});
     if (inserted) {
-      TriangleMesh mesh = MakePrimitiveMesh(p, segments);
-      const double error = CalcTessellationError_m(mesh, p, segments);
-      it->second = {static_cast<std::uint32_t>(scene.meshes.size()), error};
-      scene.meshes.push_back(std::move(mesh));
+      CoarsePrimitiveMesh made = MakeCoarsePrimitiveMesh(p, segments);
+      it->second = {static_cast<std::uint32_t>(scene.meshes.size()), made.error_m};
+      scene.meshes.push_back(std::move(made.mesh));
     }
     return it->second;
   };
@@ -115,7 +129,12 @@ void AddCoarserLevels(StaticScene& scene) {
           parts[i].mesh = mesh;
           error_m = std::max(error_m, unit_error * ErrorScale(primitive, parts[i].T_MP));
         }
-        model.levels.push_back({parts, static_cast<float>(error_m)});
+        // A sphere's 3 segments are its 4: the same look again.
+        const bool same =
+            !model.levels.empty() &&
+            std::equal(parts.begin(), parts.end(), model.levels.back().parts.begin(),
+                       [](const ModelPart& a, const ModelPart& b) { return a.mesh == b.mesh; });
+        if (!same) model.levels.push_back({parts, static_cast<float>(error_m)});
       }
     }
     if (any_thin && any_thick) {

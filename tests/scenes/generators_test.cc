@@ -79,14 +79,15 @@ TEST(ForestGeneratorTest, DensitySpacingAndClearingsHold) {
 TEST(ForestGeneratorTest, TreesShareAHandfulOfModelsAndMeshes) {
   const ForestConfig c = SmallForest();
   const engine::StaticScene s = Forest(c, 1);
-  // Meshes: cylinder (trunks), cone, sphere (crowns and bushes), and for far views each at 12, 6
-  // and 3 segments around (the sphere at 4); models: variants per species + bush.
+  // Meshes: cylinder (trunks), cone, sphere (crowns and bushes), and for far views each at 18,
+  // 14, 12, 10, 8, 6, 5, 4 and 3 segments around (the sphere not below 4); models: variants per
+  // species + bush.
   std::set<std::uint32_t> own;
   for (const engine::Model& m : s.models) {
     for (const engine::ModelPart& part : m.parts) own.insert(part.mesh);
   }
   EXPECT_EQ(own.size(), 3u);
-  EXPECT_EQ(s.meshes.size(), 3u + 3u * 3u);
+  EXPECT_EQ(s.meshes.size(), 3u + 3u * 9u - 1u);
   EXPECT_EQ(s.models.size(), c.species.size() * c.variants_per_species + 1);
   EXPECT_GT(s.objects.size(), 500u);
 }

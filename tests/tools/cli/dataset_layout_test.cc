@@ -67,6 +67,9 @@ objects:
           height_px: 240
           hfov_deg: 90
           far_m: 60
+          # Full detail: a coarser look within a pixel would be off by more than the
+          # centimetres and tenths of a pixel the projection test checks.
+          detail_tolerance_px: 0
           outputs: {rgb: true, depth_planar: true, segmentation: true}
           mount: {position_frd_m: [0, 0, 0.1], pitch_deg: -90}
       - name: pair
