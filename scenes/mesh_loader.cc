@@ -1,10 +1,12 @@
 #include "scenes/mesh_loader.h"
 
+#include <assimp/GltfMaterial.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cmath>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -126,6 +128,14 @@ engine::Material ReadMaterial(const aiScene& scene, const aiMaterial& in,
     // glTF 2.0's normal and metallic-roughness maps (assimp files the latter as metalness).
     out.normal_texture_path =
         TexturePath(scene, in, {aiTextureType_NORMALS}, out.name, mesh_path, images);
+    float scale = 1.0f;
+    if (!out.normal_texture_path.empty() &&
+        in.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), scale) == AI_SUCCESS) {
+      if (!std::isfinite(scale)) {
+        throw MeshLoadError("normalTexture.scale of material '" + out.name + "' is not finite");
+      }
+      out.normal_scale = scale;
+    }
     out.metallic_roughness_texture_path =
         TexturePath(scene, in, {aiTextureType_METALNESS}, out.name, mesh_path, images);
   }

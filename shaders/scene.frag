@@ -44,6 +44,7 @@ uniform bool u_has_texture;
 uniform mediump sampler2D u_texture;     // sRGB texture, decoded to linear by the sampler
 uniform bool u_has_normal_map;
 uniform mediump sampler2D u_normal_map;  // tangent space, (n + 1) / 2
+uniform float u_normal_scale;             // glTF's normalTexture.scale: multiplies the map's x, y
 uniform bool u_has_metallic_roughness_map;
 uniform mediump sampler2D u_metallic_roughness_map;  // roughness in green, metalness in blue
 #endif
@@ -95,7 +96,8 @@ void main() {
     s.metallic *= mr.b;
   }
   if (u_has_normal_map) {
-    n = MappedNormal(n, v_p_C, v_uv, texture(u_normal_map, v_uv).xyz * 2.0 - 1.0);
+    vec3 mapped = texture(u_normal_map, v_uv).xyz * 2.0 - 1.0;
+    n = MappedNormal(n, v_p_C, v_uv, mapped * vec3(u_normal_scale, u_normal_scale, 1.0));
   }
 #endif
 #if PATTERN != 0

@@ -497,9 +497,10 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
       SetSceneUniforms(program, frame);
       ready[index] = true;
     }
-    scene.DrawBatch(d.batch, instance_buffer_, d.first, d.count,
-                    {program.Uniform("u_has_texture"), program.Uniform("u_has_normal_map"),
-                     program.Uniform("u_has_metallic_roughness_map")});
+    scene.DrawBatch(
+        d.batch, instance_buffer_, d.first, d.count,
+        {program.Uniform("u_has_texture"), program.Uniform("u_has_normal_map"),
+         program.Uniform("u_has_metallic_roughness_map"), program.Uniform("u_normal_scale")});
   }
   last_draw_calls_ = visible_.draws.size();
   last_triangles_ = visible_.triangles;

@@ -140,6 +140,7 @@ GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
     gpu.texture = m.texture_path.empty() ? 0u : UploadTexture(scene, m.texture_path, true);
     if (!m.normal_texture_path.empty())
       gpu.normal_map = UploadTexture(scene, m.normal_texture_path, false);
+    gpu.normal_scale = m.normal_scale;
     if (!m.metallic_roughness_texture_path.empty()) {
       gpu.metallic_roughness_map = UploadTexture(scene, m.metallic_roughness_texture_path, false);
     }
@@ -462,6 +463,7 @@ void GpuScene::DrawBatch(std::uint32_t b, GLuint instance_buffer, std::uint32_t 
     glBindTexture(GL_TEXTURE_2D, maps[i].second);
   }
   glActiveTexture(GL_TEXTURE0);
+  if (uniforms.normal_scale >= 0) glUniform1f(uniforms.normal_scale, m.normal_scale);
   glBindVertexArray(mesh.vao);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer);
   const std::size_t base = static_cast<std::size_t>(first) * sizeof(GpuInstance);

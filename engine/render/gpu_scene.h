@@ -115,6 +115,7 @@ class GpuScene {
     GLint has_texture = -1;
     GLint has_normal_map = -1;
     GLint has_metallic_roughness_map = -1;
+    GLint normal_scale = -1;  ///< the normal map's scale (glTF's normalTexture.scale)
   };
   /// Binds the vertex array of batch `b`'s mesh, points the per-instance attributes at
   /// `instance_buffer` from instance `first`, binds the batch's maps (colour on texture unit 0,
@@ -145,6 +146,7 @@ class GpuScene {
     SurfacePattern pattern = SurfacePattern::kPlain;
     GLuint texture = 0;
     GLuint normal_map = 0;
+    float normal_scale = 1.0f;
     GLuint metallic_roughness_map = 0;
   };
   // A part of a look: drawn in `batch`, placed in the model's frame, coloured by `material`.

@@ -75,6 +75,9 @@ struct Material {
   /// map (roughness times its green channel, metalness times its blue one).
   std::string normal_texture_path{};
   std::string metallic_roughness_texture_path{};
+  /// glTF 2.0's normalTexture.scale: the map's x and y are multiplied by it before the normal is
+  /// normalised (0 flattens the map, 1 keeps it, a negative value turns it the other way).
+  float normal_scale = 1.0f;
 };
 
 /// A dielectric of base colour `rgb` (linear) drawn with `pattern` of lengths `size_m` and

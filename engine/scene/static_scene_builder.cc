@@ -38,7 +38,7 @@ std::uint32_t StaticSceneBuilder::Material(const engine::Material& m) {
   const MaterialKey key(m.base_color_rgb.x(), m.base_color_rgb.y(), m.base_color_rgb.z(),
                         m.texture_path, m.restitution, m.friction, m.roughness, m.metallic,
                         m.pattern, m.pattern_size_m.x(), m.pattern_size_m.y(),
-                        m.normal_texture_path, m.metallic_roughness_texture_path);
+                        m.normal_texture_path, m.metallic_roughness_texture_path, m.normal_scale);
   const auto it = material_index_.find(key);
   if (it != material_index_.end()) return it->second;
   engine::Material named = m;

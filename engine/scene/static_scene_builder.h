@@ -76,7 +76,7 @@ class StaticSceneBuilder {
   std::int32_t primitive_model_[6] = {-1, -1, -1, -1, -1, -1};
   // Materials by every field but the name: equal materials are stored once.
   using MaterialKey = std::tuple<float, float, float, std::string, float, float, float, float,
-                                 SurfacePattern, float, float, std::string, std::string>;
+                                 SurfacePattern, float, float, std::string, std::string, float>;
   std::map<MaterialKey, std::uint32_t> material_index_;
 };
 

@@ -282,6 +282,35 @@ TEST(MaterialRenderTest, NormalMapTurnsTheShadingNormalAsTurningTheWallWould) {
   }
 }
 
+TEST(MaterialRenderTest, NormalScaleTurnsTheMappedNormalAsGltfSays) {
+  // GIVEN a flat wall face on whose normal map holds a normal turned 40 deg toward -y, with the
+  // scale tan 20 / tan 40: glTF multiplies the map's x and y by it, which turns the normal 20 deg
+  const double angle = 20.0 * M_PI / 180;
+  const double mapped_angle = 40.0 * M_PI / 180;
+  const Eigen::Vector3d sun_W(0.6, 0.8, 0.0);
+  const std::string map =
+      WritePng("turned_normal_40.png", {EncodeNormal(-std::sin(mapped_angle)), EncodeNormal(0.0),
+                                        EncodeNormal(std::cos(mapped_angle))});
+  const double turned =
+      WallCentre(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix(), sun_W,
+                 [](Material&) {});
+  const double scaled = WallCentre(Eigen::Matrix3d::Identity(), sun_W, [&](Material& m) {
+    m.normal_texture_path = map;
+    m.normal_scale = static_cast<float>(std::tan(angle) / std::tan(mapped_angle));
+  });
+  const double unscaled = WallCentre(Eigen::Matrix3d::Identity(), sun_W,
+                                     [&](Material& m) { m.normal_texture_path = map; });
+  const double flattened = WallCentre(Eigen::Matrix3d::Identity(), sun_W, [&](Material& m) {
+    m.normal_texture_path = map;
+    m.normal_scale = 0.0f;
+  });
+  const double flat = WallCentre(Eigen::Matrix3d::Identity(), sun_W, [](Material&) {});
+  // THEN the scaled map shades the wall as turning it 20 deg would, not 40; scale 0 as flat
+  EXPECT_NEAR(scaled, turned, 0.01 * turned) << "unscaled " << unscaled;
+  EXPECT_GT(std::abs(unscaled - turned), 0.05 * turned);
+  EXPECT_NEAR(flattened, flat, 0.01 * flat);
+}
+
 TEST(MaterialRenderTest, MetallicRoughnessMapScalesTheFactors) {
   const Eigen::Matrix3d kFaceOn = Eigen::Matrix3d::Identity();
   const Eigen::Vector3d kSunLevel(0.6, 0.8, 0.0);

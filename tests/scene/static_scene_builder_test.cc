@@ -49,5 +49,24 @@ TEST(StaticSceneBuilderTest, InstanceIdsRunPast16Bits) {
   EXPECT_EQ(builder.scene().vehicle_bodies.back().instance_id, kObjects + 1);
 }
 
+TEST(StaticSceneBuilderTest, MaterialsAreStoredOnceUnlessAFieldDiffers) {
+  // GIVEN a normal-mapped material, the same again under another name, and one with another
+  // normal scale
+  StaticSceneBuilder builder;
+  Material mapped;
+  mapped.name = "a";
+  mapped.normal_texture_path = "/maps/normal.png";
+  Material renamed = mapped;
+  renamed.name = "b";
+  Material flatter = mapped;
+  flatter.normal_scale = 0.5f;
+  // THEN the first two are one material, the third another
+  const std::size_t before = builder.scene().materials.size();  // the builder's default
+  const std::uint32_t a = builder.Material(mapped);
+  EXPECT_EQ(builder.Material(renamed), a);
+  EXPECT_NE(builder.Material(flatter), a);
+  EXPECT_EQ(builder.scene().materials.size(), before + 2);
+}
+
 }  // namespace
 }  // namespace airis::engine

@@ -187,8 +187,10 @@ TEST(SceneLoaderTest, MissingTexturesNameTheResolvedPath) {
 }
 
 // A glTF 2.0 quad (two triangles, positions, normals and texture coordinates in quad.bin) whose
-// material names a colour, a normal and a metallic-roughness texture.
-std::string GltfQuad(const std::string& normal_png, const std::string& metallic_roughness_png) {
+// material names a colour, a normal (of scale `normal_scale`, JSON) and a metallic-roughness
+// texture.
+std::string GltfQuad(const std::string& normal_png, const std::string& metallic_roughness_png,
+                     const std::string& normal_scale = "1") {
   return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
   "nodes": [{"mesh": 0}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2},
@@ -197,7 +199,8 @@ std::string GltfQuad(const std::string& normal_png, const std::string& metallic_
                  "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
                                           "metallicRoughnessTexture": {"index": 2},
                                           "metallicFactor": 1, "roughnessFactor": 0.5},
-                 "normalTexture": {"index": 1}}],
+                 "normalTexture": {"index": 1, "scale": )" +
+         normal_scale + R"(}}],
   "textures": [{"source": 0}, {"source": 1}, {"source": 2}],
   "images": [{"uri": "colour.png"}, {"uri": ")" +
          normal_png + R"("}, {"uri": ")" + metallic_roughness_png + R"("}],
@@ -247,6 +250,19 @@ TEST(SceneLoaderTest, GltfMaterialsBringTheirNormalAndMetallicRoughnessMaps) {
   EXPECT_EQ(m.metallic_roughness_texture_path, f.Path("m/mr.png"));
   EXPECT_EQ(m.metallic, 1.0f);
   EXPECT_EQ(m.roughness, 0.5f);
+  EXPECT_EQ(m.normal_scale, 1.0f);
+  // The normal map's scale is read
+  f.Write("m/flatter.gltf", GltfQuad("normal.png", "mr.png", "0.25"));
+  const Scene flatter = LoadScene(f.Write("flatter.yaml", "objects:\n  - mesh: m/flatter.gltf\n"));
+  const engine::Model& flat_model =
+      flatter.static_scene.models[flatter.static_scene.objects.back().model];
+  EXPECT_EQ(flatter.static_scene.materials[flat_model.parts.at(0).material].normal_scale, 0.25f);
+  f.Write("m/huge.gltf", GltfQuad("normal.png", "mr.png", "1e300"));
+  const std::string huge_error =
+      LoadError(f.Write("huge.yaml", "objects:\n  - mesh: m/huge.gltf\n"));
+  EXPECT_NE(huge_error.find("normalTexture.scale of material 'panel' is not finite"),
+            std::string::npos)
+      << huge_error;
   // A missing map is an error naming the resolved path and the material
   f.Write("m/missing.gltf", GltfQuad("no_such_normal.png", "mr.png"));
   const std::string bad = f.Write("bad.yaml", "objects:\n  - mesh: m/missing.gltf\n");
