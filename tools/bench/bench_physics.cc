@@ -55,8 +55,9 @@ struct WorldWrench {
   Vec3 torque_W;
 };
 
-template <class F>
-double TicksPerSecond(F&& tick, double min_seconds) {
+}  // namespace
+
+double TicksPerSecond(const std::function<void()>& tick, double min_seconds) {
   for (int i = 0; i < 1000; ++i) tick();  // warm-up: caches, pools, first contacts
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -69,8 +70,6 @@ double TicksPerSecond(F&& tick, double min_seconds) {
   } while (elapsed < min_seconds);
   return static_cast<double>(n) / elapsed;
 }
-
-}  // namespace
 
 engine::StaticScene MakeBoxFieldScene(int box_count, double extent_m, std::uint64_t seed) {
   engine::StaticScene scene;
@@ -151,11 +150,21 @@ void ParkOnSurface(const engine::StaticScene* hills, engine::RigidBodyState& sta
 }
 
 std::vector<engine::RigidBodyState> MakeRoute(int legs, double extent_m, std::uint64_t seed) {
+  const double half = 0.45 * extent_m;
+  return MakeRouteOver(
+      legs, Eigen::AlignedBox2d(Eigen::Vector2d(-half, -half), Eigen::Vector2d(half, half)),
+      [](double, double) { return 0.0; }, seed);
+}
+
+std::vector<engine::RigidBodyState> MakeRouteOver(
+    int legs, const Eigen::AlignedBox2d& area_ne,
+    const std::function<double(double, double)>& ground_m, std::uint64_t seed) {
   engine::RandomStream random(seed + 1000);
   std::vector<engine::RigidBodyState> route(static_cast<std::size_t>(legs));
   for (auto& s : route) {
-    s.p_W = Vec3(random.Uniform(-0.45, 0.45) * extent_m, random.Uniform(-0.45, 0.45) * extent_m,
-                 -random.Uniform(1.5, 4.0));
+    const double north = random.Uniform(area_ne.min().x(), area_ne.max().x());
+    const double east = random.Uniform(area_ne.min().y(), area_ne.max().y());
+    s.p_W = Vec3(north, east, -ground_m(north, east) - random.Uniform(1.5, 4.0));
     const double heading = random.Uniform(-std::numbers::pi, std::numbers::pi);
     const double speed = random.Uniform(4.0, 12.0);
     s.v_W = Vec3(speed * std::cos(heading), speed * std::sin(heading), 0.0);

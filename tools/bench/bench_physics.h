@@ -1,6 +1,8 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -22,9 +24,19 @@ struct PhysicsBenchOptions {
 /// spread uniformly over `extent_m` x `extent_m` about the origin (random yaw).
 engine::StaticScene MakeBoxFieldScene(int box_count, double extent_m, std::uint64_t seed);
 
-/// Start states of the legs the quad flies: 1.5-4 m up at random points of the field, 4-12 m/s
-/// level in a random direction, level attitude, so it passes near boxes and sometimes hits them.
+/// Start states of the legs the quad flies: 1.5-4 m up at random points of the field (the middle
+/// 90 % of it), 4-12 m/s level in a random direction, level attitude, so it passes near boxes and
+/// sometimes hits them.
 std::vector<engine::RigidBodyState> MakeRoute(int legs, double extent_m, std::uint64_t seed);
+
+/// The same over `area_ne` (north, east; m), 1.5-4 m above `ground_m(north, east)` (m, up).
+std::vector<engine::RigidBodyState> MakeRouteOver(
+    int legs, const Eigen::AlignedBox2d& area_ne,
+    const std::function<double(double, double)>& ground_m, std::uint64_t seed);
+
+/// Calls of `tick` per wall-clock second, in rounds of 1,000 after 1,000 for warming up, for at
+/// least `min_seconds`.
+double TicksPerSecond(const std::function<void()>& tick, double min_seconds);
 
 /// Rolling hills (up to 60 m of relief, slopes under 20 degrees) sampled every 10 m over
 /// `extent_m` x `extent_m` about the origin, as a scene's terrain (chunks, class 15, friction 0.8),

@@ -34,6 +34,13 @@ double ThreadCpuSeconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// The sensors' world: the default environment at the paper's site (47.64 N, 122.14 W, 122 m).
+engine::Environment MakeSensorBenchEnvironment(const engine::RandomStreams& streams) {
+  return engine::Environment(engine::EnvironmentConfig{},
+                             {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
+                             streams.Stream("env"));
+}
+
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -149,13 +156,48 @@ QuadTickRates MeasureReferenceQuadTicks(double seconds) {
   return rates;
 }
 
+LidarRate MeasureLidarRate(const engine::RayCaster& caster, const Eigen::AlignedBox2d& area_ne,
+                           const std::function<double(double, double)>& ground_m, int scans) {
+  const engine::RandomStreams streams(1);
+  const engine::Environment environment = MakeSensorBenchEnvironment(streams);
+  engine::RigidBodyState state;
+  state.v_W = Vec3(3, 1, 0);
+  state.w_B = Vec3(0.1, -0.2, 0.05);
+  engine::RigidBodyAccelerations accelerations;
+  accelerations.gravity_W = Vec3(0, 0, environment.CalcGravity_m_s2(Vec3(0, 0, -30)));
+  engine::SensorContext context;
+  context.state = &state;
+  context.accelerations = &accelerations;
+  context.environment = &environment;
+  context.rays = &caster;
+  sensors::Lidar lidar("lidar", {}, streams.Stream("lidar"));
+  engine::RandomStream poses(3);
+  const auto period_ns = static_cast<engine::TimeNs>(1e9 / lidar.schedule().rate_hz());
+  double cast_s = 0.0;
+  std::size_t rays = 0;
+  std::size_t hits = 0;
+  for (int scan = -2; scan < scans; ++scan) {  // two warm-up scans
+    const double north = poses.Uniform(area_ne.min().x(), area_ne.max().x());
+    const double east = poses.Uniform(area_ne.min().y(), area_ne.max().y());
+    state.p_W = Vec3(north, east, -ground_m(north, east) - poses.Uniform(20, 80));
+    state.q_WB = engine::QuatFromEuler({0.0, 0.0, poses.Uniform(-3.14, 3.14)});
+    context.now_ns += period_ns;
+    const double scan_start_s = ThreadCpuSeconds();
+    lidar.Update(context);
+    if (scan < 0) continue;
+    cast_s += ThreadCpuSeconds() - scan_start_s;
+    rays += lidar.latest().points.size();
+    hits += lidar.latest().hit_count;
+  }
+  return {static_cast<double>(rays) / cast_s,
+          static_cast<double>(hits) / static_cast<double>(std::max<std::size_t>(rays, 1)),
+          lidar.latest().points.size()};
+}
+
 nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options) {
   nlohmann::json out;
   const engine::RandomStreams streams(1);
-  engine::EnvironmentConfig env_config;
-  const engine::Environment environment(
-      env_config, {engine::DegToRad(47.641468), engine::DegToRad(-122.140165), 122.0},
-      streams.Stream("env"));
+  const engine::Environment environment = MakeSensorBenchEnvironment(streams);
   engine::RigidBodyState state;
   state.p_W = Vec3(0, 0, -30);
   state.v_W = Vec3(3, 1, 0);
@@ -173,31 +215,14 @@ nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options) {
   out["caster_build_s"] = SecondsSince(start);
   out["city_boxes"] = options.city_boxes;
   out["city_extent_m"] = options.city_extent_m;
-  sensors::Lidar lidar("lidar", {}, streams.Stream("lidar"));
-  context.rays = &caster;
-  engine::RandomStream poses(3);
-  const auto period_ns = static_cast<engine::TimeNs>(1e9 / lidar.schedule().rate_hz());
-  double cast_s = 0.0;
-  std::size_t rays = 0;
-  std::size_t hits = 0;
-  for (int scan = -2; scan < options.lidar_scans; ++scan) {  // two warm-up scans
-    state.p_W = Vec3(poses.Uniform(-400, 400), poses.Uniform(-400, 400), -poses.Uniform(20, 80));
-    state.q_WB = engine::QuatFromEuler({0.0, 0.0, poses.Uniform(-3.14, 3.14)});
-    context.now_ns += period_ns;
-    const double scan_start_s = ThreadCpuSeconds();
-    lidar.Update(context);
-    if (scan < 0) continue;
-    cast_s += ThreadCpuSeconds() - scan_start_s;
-    rays += lidar.latest().points.size();
-    hits += lidar.latest().hit_count;
-  }
-  out["lidar_rays_per_s"] = static_cast<double>(rays) / cast_s;
-  out["lidar_hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays);
-  out["lidar_points_per_scan"] = lidar.latest().points.size();
+  const LidarRate lidar = MeasureLidarRate(
+      caster, Eigen::AlignedBox2d(Eigen::Vector2d(-400, -400), Eigen::Vector2d(400, 400)),
+      [](double, double) { return 0.0; }, options.lidar_scans);
+  out["lidar_rays_per_s"] = lidar.rays_per_s;
+  out["lidar_hit_fraction"] = lidar.hit_fraction;
+  out["lidar_points_per_scan"] = lidar.points_per_scan;
 
-  state.p_W = Vec3(0, 0, -30);
-  state.q_WB = engine::Quat::Identity();
-  context.now_ns = 0;
+  context.rays = &caster;
   sensors::Rangefinder rangefinder("rangefinder", {}, streams.Stream("rangefinder"));
   out["rangefinder_ns"] = TimeSamples(rangefinder, context, 20000);
   context.rays = nullptr;

@@ -1,11 +1,15 @@
 #pragma once
 
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 namespace airis::engine {
+class RayCaster;
 class Simulation;
-}
+}  // namespace airis::engine
 
 namespace airis::tools {
 
@@ -46,5 +50,18 @@ QuadTickRates MeasureReferenceQuadTicks(double seconds = 20.0);
 /// MeasureReferenceQuadTicks over
 ///   `sensor_seconds`.
 nlohmann::json RunSensorBenchmarks(const SensorBenchOptions& options = {});
+
+/// What a lidar cast: rays per CPU second of the calling thread, the share that hit, points a scan.
+struct LidarRate {
+  double rays_per_s = 0.0;
+  double hit_fraction = 0.0;
+  std::size_t points_per_scan = 0;
+};
+
+/// Times `scans` scans (after two warm-up ones) of the default lidar (sensors::Lidar: a VLP-16)
+/// against `caster`, each from a pose drawn in `area_ne` (north, east; m) at 20 to 80 m above
+/// `ground_m(north, east)` (m, up), level, with a random heading.
+LidarRate MeasureLidarRate(const engine::RayCaster& caster, const Eigen::AlignedBox2d& area_ne,
+                           const std::function<double(double, double)>& ground_m, int scans);
 
 }  // namespace airis::tools

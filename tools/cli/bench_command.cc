@@ -1,8 +1,10 @@
-// `airis bench [physics|sensors|render|dataset] [--json]` and `airis bench vehicles [--count N]
-// [--resting M] [--threads T] [--json]`: the benchmark tables for users, measured on their machine.
+// `airis bench [physics|sensors|render|dataset] [--json]`, `airis bench vehicles [--count N]
+// [--resting M] [--threads T] [--json]` and `airis bench world --scene FILE [--set ...] [--json]`:
+// the benchmark tables for users, measured on their machine.
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/limits.h"
@@ -11,6 +13,7 @@
 #include "tools/bench/bench_render.h"
 #include "tools/bench/bench_sensors.h"
 #include "tools/bench/bench_vehicles.h"
+#include "tools/bench/bench_world.h"
 #include "tools/cli/cli_util.h"
 #include "tools/cli/commands.h"
 
@@ -117,6 +120,30 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
     };
   });
   add_entry(kEntries[2]);  // dataset
+
+  struct WorldArgs {
+    std::string scene;
+    std::vector<std::string> overrides;
+  };
+  auto world_args = std::make_shared<WorldArgs>();
+  CLI::App* world = cmd->add_subcommand(
+      "world",
+      "physics ticks per second of the reference quad flying low among a scene's objects, and "
+      "lidar rays per second in it (to compare worlds of different sizes)");
+  world->add_option("--scene", world_args->scene, "the scene to measure")
+      ->type_name("FILE")
+      ->required();
+  AddSceneOverrideOption(world, world_args->overrides);
+  world->add_flag("--json", *json, "one JSON object instead of a table");
+  SetCommandCallback(world, exit_code, [json, world_args]() -> std::function<int()> {
+    WorldBenchOptions options;
+    options.scene = world_args->scene;
+    options.overrides = world_args->overrides;
+    return [options, json] {
+      Print("airis bench world", RunWorldBench(options), *json);
+      return 0;
+    };
+  });
 
   struct VehicleArgs {
     std::string count = "100", resting = "0", threads = "1";

@@ -59,7 +59,7 @@ TEST(HelpTest, AnOptionBeforeAnyCommandOrNoCommandAtAllIsNamed) {
       << none.err;
   const Output bench = Airis({"bench"});
   EXPECT_NE(bench.err.find("airis bench: a command is required: physics, sensors, render, dataset, "
-                           "vehicles"),
+                           "world, vehicles"),
             std::string::npos)
       << bench.err;
 }
