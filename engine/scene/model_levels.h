@@ -5,9 +5,9 @@
 namespace airis::engine {
 
 /// Gives every model of `scene` that has no levels yet (Model::levels) the coarser looks a renderer
-/// draws from far away: its round primitive parts (sphere, cylinder, cone) at 12, 10, 8, 6, 5, 4
-/// and 3 segments around (a sphere at least 4; a look equal to the one before is left out), each
-/// a MakeCoarsePrimitiveMesh, then the coarsest of these without its thin parts (a part whose
+/// draws from far away: its round primitive parts (sphere, cylinder, cone) at 18, 14, 12, 10, 8, 6,
+/// 5, 4 and 3 segments around (a sphere at least 4; a look equal to the one before is left out),
+/// each a MakeCoarsePrimitiveMesh, then the coarsest of these without its thin parts (a part whose
 /// width, the middle of its three extents, is under a tenth of the model's largest extent: a
 /// trunk, a pole; kept when no wider part remains). A level's error is the largest of its parts'
 /// errors: for a round part, the coarse mesh's error times the part's largest scale (across the

@@ -57,20 +57,6 @@ struct WorldWrench {
 
 }  // namespace
 
-double TicksPerSecond(const std::function<void()>& tick, double min_seconds) {
-  for (int i = 0; i < 1000; ++i) tick();  // warm-up: caches, pools, first contacts
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  std::int64_t n = 0;
-  double elapsed = 0.0;
-  do {
-    for (int i = 0; i < 1000; ++i) tick();
-    n += 1000;
-    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-  } while (elapsed < min_seconds);
-  return static_cast<double>(n) / elapsed;
-}
-
 engine::StaticScene MakeBoxFieldScene(int box_count, double extent_m, std::uint64_t seed) {
   engine::StaticScene scene;
   scene.meshes = {PrimitiveMesh(engine::Primitive::kBox, "primitive:box"),
