@@ -105,6 +105,25 @@ std::optional<ShadowFrame> FitShadowFrame(const Eigen::Isometry3d& T_WC, const C
   const double z_offset = offset.z() + centre_L.z();  // z_L = row2 . p_C + z_offset
   frame.planes_C.emplace_back(n.x(), n.y(), n.z(), z_offset - z_near);
   frame.planes_C.emplace_back(-n.x(), -n.y(), -n.z(), z_far - z_offset);
+
+  // Casters: also inside the view volume's planes that the rays leave (moving along the rays does
+  // not bring a point back across them), each moved out by what a receiver's lookups reach.
+  frame.caster_planes_C = frame.planes_C;
+  const Eigen::Vector3d ray_C = T_WC.linear().transpose() * ray_W;
+  const double x_left = (-0.5 - k.cx_px) / k.fx_px;
+  const double x_right = (k.width_px - 0.5 - k.cx_px) / k.fx_px;
+  const double y_top = (-0.5 - k.cy_px) / k.fy_px;
+  const double y_bottom = (k.height_px - 0.5 - k.cy_px) / k.fy_px;
+  const Eigen::Vector4d view_planes[] = {{1.0, 0.0, -x_left, 0.0},   {-1.0, 0.0, x_right, 0.0},
+                                         {0.0, 1.0, -y_top, 0.0},    {0.0, -1.0, y_bottom, 0.0},
+                                         {0.0, 0.0, 1.0, -k.near_m}, {0.0, 0.0, -1.0, far_m}};
+  for (const Eigen::Vector4d& plane : view_planes) {
+    const double norm = plane.head<3>().norm();
+    const Eigen::Vector4d unit = plane / norm;
+    if (unit.head<3>().dot(ray_C) > 0.0) continue;  // rays cross it inward: a shadow may enter
+    frame.caster_planes_C.push_back(unit +
+                                    Eigen::Vector4d(0, 0, 0, kShadowLookupReachTexels * texel));
+  }
   return frame;
 }
 
@@ -153,7 +172,7 @@ void SunShadow::Render(const GpuScene& scene, const Eigen::Isometry3d& T_WC,
   // map's texels, which are wider than the camera's pixels over most of the shadowed view.
   DetailLimit caster_detail = detail;
   caster_detail.tolerance_px *= kCasterToleranceFactor;
-  scene.CollectVisible(T_WC, frame.planes_C, casters, visible_, caster_detail, true);
+  scene.CollectVisible(T_WC, frame.caster_planes_C, casters, visible_, caster_detail, true);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
   const std::size_t bytes = visible_.instances.size() * sizeof(GpuInstance);
   if (bytes > instance_capacity_) {

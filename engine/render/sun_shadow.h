@@ -24,6 +24,11 @@ struct ShadowFrame {
   /// The casters' volume as inward planes in the camera frame (n.dot(p) + d >= 0 inside): the map's
   /// four sides and its two depth limits.
   std::vector<Eigen::Vector4d> planes_C;
+  /// The volume a caster must meet to shade anything the camera sees, as planes_C: the map's
+  /// planes and those of the camera's view volume up to the shadow distance that the sun's rays
+  /// leave (a caster beyond such a plane stays beyond it all along its shadow), each moved out by
+  /// kShadowLookupReachTexels.
+  std::vector<Eigen::Vector4d> caster_planes_C;
   double texel_m = 0.0;   ///< the map's texel edge on the ground across the sun's rays (m)
   double radius_m = 0.0;  ///< half the map's width (m)
 };
@@ -31,6 +36,10 @@ struct ShadowFrame {
 /// How far toward the sun a caster may stand in front of the shadowed sphere and still be drawn
 /// into the map (m along the rays): towers and hills outside the view that shade it.
 inline constexpr double kShadowCasterReach_m = 1000.0;
+
+/// How far out of the view a receiver's map lookups reach (texels): its normal offset (1.5) and the
+/// filter's four bilinear lookups half a texel apart (1.5), rounded up.
+inline constexpr double kShadowLookupReachTexels = 4.0;
 
 /// The shadow map's placement for a camera at T_WC (optical frame -> world NED) with intrinsics
 /// `k`, the sun's rays travelling along `sun_direction_W` (unit, pointing down), shadows out to

@@ -76,6 +76,53 @@ TEST(FitShadowFrameTest, PlanesBoundExactlyTheMapsVolume) {
   }
 }
 
+TEST(FitShadowFrameTest, CasterPlanesDropOnlyCastersThatShadeNothingInView) {
+  // GIVEN a camera 30 m up looking north-east and 20 degrees down, the sun in the south-east 40
+  // degrees up, and 3,000 balls 1 to 6 m across anywhere within 400 m
+  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -30.0}, 0.8, -0.35);
+  const Eigen::Vector3d rays_W = SunRays_W(2.3, 0.7);
+  const double distance_m = 150.0;
+  const auto frame = FitShadowFrame(T_WC, kCamera, rays_W, distance_m, 1024);
+  ASSERT_TRUE(frame);
+  const Eigen::Vector3d rays_C = T_WC.linear().transpose() * rays_W;
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Eigen::Vector3d> seen_C;  // points the camera sees within the shadow distance
+  for (int i = 0; i < 400; ++i) {
+    const double z = kCamera.near_m + unit(rng) * (distance_m - kCamera.near_m);
+    const double u = -0.5 + unit(rng) * kCamera.width_px;
+    const double v = -0.5 + unit(rng) * kCamera.height_px;
+    seen_C.emplace_back((u - kCamera.cx_px) / kCamera.fx_px * z,
+                        (v - kCamera.cy_px) / kCamera.fy_px * z, z);
+  }
+  const auto outside = [](const std::vector<Eigen::Vector4d>& planes, const Eigen::Vector3d& c,
+                          double r) {
+    for (const Eigen::Vector4d& plane : planes) {
+      if (plane.head<3>().dot(c) + plane.w() < -r) return true;
+    }
+    return false;
+  };
+  int in_map = 0, dropped = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Eigen::Vector3d c_W(-400.0 + 800.0 * unit(rng), -400.0 + 800.0 * unit(rng),
+                              -100.0 * unit(rng));
+    const double r = 0.5 + 2.5 * unit(rng);
+    const Eigen::Vector3d c_C = T_WC.inverse() * c_W;
+    if (outside(frame->planes_C, c_C, r)) continue;  // outside the map: never drawn into it
+    ++in_map;
+    if (!outside(frame->caster_planes_C, c_C, r)) continue;
+    ++dropped;
+    // THEN a ball the caster planes drop blocks the sun from no point in view: the ray from the
+    // point toward the sun passes it by
+    for (const Eigen::Vector3d& p : seen_C) {
+      const double s = std::max(0.0, (p - c_C).dot(rays_C));  // back along the rays, toward the sun
+      ASSERT_GT((p - s * rays_C - c_C).norm(), r) << "ball " << c_W.transpose() << " r " << r;
+    }
+  }
+  // AND many balls inside the map are dropped
+  EXPECT_GT(dropped, in_map / 5) << in_map;
+}
+
 TEST(FitShadowFrameTest, TexelsStayOnOneWorldGridAsTheCameraMovesAndTurns) {
   const Eigen::Vector3d rays = SunRays_W(0.4, 0.7);
   const int map_px = 2048;
