@@ -156,7 +156,9 @@ void ApplyCameraMotionBlur(const CameraConfig& config, const engine::CameraIntri
   engine::ApplyMotionBlur(frame.rgba, frame.depth_planar_m, intrinsics,
                           engine::CalcImageStreamMotion(stream, context.state),
                           config.effects.exposure_time_s);
-  if (!config.outputs.depth_planar) frame.depth_planar_m = {};
+  // Depth not asked for: empty, its room kept for the next frame's (freeing it made the renderer
+  // allocate and fault in a whole image every frame).
+  if (!config.outputs.depth_planar) frame.depth_planar_m.Resize(0, 0, 1);
 }
 
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene) {

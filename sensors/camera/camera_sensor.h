@@ -78,7 +78,8 @@ void SetFrameWind(const engine::SensorContext& context, const Eigen::Isometry3d&
 /// its motion blur needs it (ApplyCameraMotionBlur drops it again).
 engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config);
 /// With `config`'s motion blur on, blurs `frame`'s colour image by the motion of `stream`'s camera
-/// in `context` (engine::ApplyMotionBlur), then drops the depth the camera did not ask for.
+/// in `context` (engine::ApplyMotionBlur), then empties the depth the camera did not ask for
+/// (keeping its memory for the next frame).
 void ApplyCameraMotionBlur(const CameraConfig& config, const engine::CameraIntrinsics& intrinsics,
                            const engine::ImageStream& stream, const engine::SensorContext& context,
                            engine::CameraFrame& frame);

@@ -249,6 +249,7 @@ TEST(CameraSensorTest, MotionBlurTouchesColourOnly) {
   const engine::CameraFrame without_depth = RenderAll(config, {}, yawing);
   EXPECT_EQ(without_depth.rgba.pixels, blurred.rgba.pixels);
   EXPECT_TRUE(without_depth.depth_planar_m.empty());
+  EXPECT_EQ(without_depth.depth_planar_m.width, 0);
 }
 
 // A frame's conditions replace the scene's sun: the scene's own sun given as a condition renders
