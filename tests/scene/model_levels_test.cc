@@ -36,25 +36,32 @@ double DistanceFromSurface(Primitive primitive, const Vec3& p) {
   }
 }
 
+// The largest distance from the unit `primitive`'s surface of 200 points drawn uniformly on each
+// face of `mesh`.
+double LargestDistanceOnFaces(const TriangleMesh& mesh, Primitive primitive, std::mt19937& random) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double largest = 0.0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const Vec3 a = mesh.positions[mesh.indices[3 * t]].cast<double>();
+    const Vec3 b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
+    const Vec3 c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
+    for (int k = 0; k < 200; ++k) {
+      double u = unit(random), v = unit(random);
+      if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
+      largest = std::max(largest, DistanceFromSurface(primitive, a + u * (b - a) + v * (c - a)));
+    }
+  }
+  return largest;
+}
+
 TEST(ModelLevelsTest, TessellationErrorBoundsEveryPointOfTheFacesAndIsReached) {
   std::mt19937 random(3);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (Primitive p : {Primitive::kSphere, Primitive::kCylinder, Primitive::kCone}) {
     for (int segments : {4, 6, 12, 24}) {
       const TriangleMesh mesh = MakePrimitiveMesh(p, segments);
       const double bound = CalcTessellationError_m(mesh, p, segments);
       // GIVEN points spread over every face
-      double largest = 0.0;
-      for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-        const Vec3 a = mesh.positions[mesh.indices[3 * t]].cast<double>();
-        const Vec3 b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
-        const Vec3 c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
-        for (int k = 0; k < 200; ++k) {
-          double u = unit(random), v = unit(random);
-          if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
-          largest = std::max(largest, DistanceFromSurface(p, a + u * (b - a) + v * (c - a)));
-        }
-      }
+      const double largest = LargestDistanceOnFaces(mesh, p, random);
       // THEN none is farther from the primitive than the bound, and the bound is close to the
       // farthest (the sides' closed form for cylinder and cone)
       EXPECT_LE(largest, bound + 1e-6) << static_cast<int>(p) << " " << segments;
@@ -105,17 +112,7 @@ TEST(ModelLevelsTest, AWidenedCoarseMeshIsWithinItsErrorOfThePrimitiveBothWays) 
       const TriangleMesh& mesh = coarse.mesh;
       const double inscribed = CalcTessellationError_m(MakePrimitiveMesh(p, segments), p, segments);
       // GIVEN points spread over every face
-      double from_faces = 0.0;
-      for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-        const Vec3 a = mesh.positions[mesh.indices[3 * t]].cast<double>();
-        const Vec3 b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
-        const Vec3 c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
-        for (int k = 0; k < 200; ++k) {
-          double u = unit(random), v = unit(random);
-          if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
-          from_faces = std::max(from_faces, DistanceFromSurface(p, a + u * (b - a) + v * (c - a)));
-        }
-      }
+      const double from_faces = LargestDistanceOnFaces(mesh, p, random);
       // AND points spread over the primitive's surface
       double from_surface = 0.0;
       for (int k = 0; k < 4000; ++k) {
