@@ -40,27 +40,63 @@ std::array<double, kLayers + 1> MakeEdgeDensities() {
 const std::array<double, kLayers + 1> kEdgeDensities = MakeEdgeDensities();
 }  // namespace
 
+namespace {
+// The tail beyond r (Marsaglia 1964): x = r + a, a exponential of rate r, accepted with
+// probability exp(-a^2/2).
+double SampleTail(RandomStream& stream) {
+  double a = 0.0;
+  double b = 0.0;
+  do {
+    a = -std::log1p(-stream.Uniform01()) / kR;
+    b = -std::log1p(-stream.Uniform01());
+  } while (b + b < a * a);
+  return kR + a;
+}
+
+// The wedge of layer i >= 1 between its rectangle and the curve: true when the point x of height
+// drawn uniformly within the layer falls under the curve.
+bool UnderCurveInWedge(RandomStream& stream, std::size_t i, double x) {
+  const double f_lo = kEdgeDensities[i];
+  const double f_hi = kEdgeDensities[i + 1];
+  return f_lo + stream.Uniform01() * (f_hi - f_lo) < Density(x);
+}
+
+std::array<std::uint32_t, kLayers> MakeMagnitudeBounds() {
+  std::array<std::uint32_t, kLayers> k{};
+  for (int i = 0; i < kLayers; ++i) {
+    k[i] =
+        static_cast<std::uint32_t>(std::ceil(std::ldexp(kLayerEdges[i + 1] / kLayerEdges[i], 23)));
+  }
+  return k;
+}
+
+std::array<double, kLayers> MakeMagnitudeScales() {
+  std::array<double, kLayers> w{};
+  for (int i = 0; i < kLayers; ++i) w[i] = std::ldexp(kLayerEdges[i], -23);
+  return w;
+}
+}  // namespace
+
+const std::array<std::uint32_t, 256> kMagnitudeBounds = MakeMagnitudeBounds();
+const std::array<double, 256> kMagnitudeScales = MakeMagnitudeScales();
+
+double SampleSlowPath32(RandomStream& stream, std::uint32_t h) {
+  const std::size_t i = h & 0xFF;
+  const double sign = (h & 0x100) != 0 ? -1.0 : 1.0;
+  if (i == 0) return sign * SampleTail(stream);  // past the base rectangle: beyond r
+  const double x = static_cast<double>(h >> 9) * kMagnitudeScales[i];
+  if (UnderCurveInWedge(stream, i, x)) return sign * x;
+  return StandardNormal(stream);
+}
+
 double SampleSlowPath(RandomStream& stream, std::uint64_t u) {
   for (;;) {
     const std::size_t i = u & 0xFF;
     const bool negative = ((u >> 8) & 1) != 0;
     const double x = static_cast<double>(u >> 11) * 0x1.0p-53 * kLayerEdges[i];
     if (x < kLayerEdges[i + 1]) return negative ? -x : x;
-    if (i == 0) {
-      // Tail beyond r (Marsaglia 1964): x = r + a, a exponential, accepted with probability
-      // exp(-a^2/2).
-      double a = 0.0;
-      double b = 0.0;
-      do {
-        a = -std::log1p(-stream.Uniform01()) / kR;
-        b = -std::log1p(-stream.Uniform01());
-      } while (b + b < a * a);
-      return negative ? -(kR + a) : kR + a;
-    }
-    // Wedge between the layer's rectangle and the curve.
-    const double f_lo = kEdgeDensities[i];
-    const double f_hi = kEdgeDensities[i + 1];
-    if (f_lo + stream.Uniform01() * (f_hi - f_lo) < Density(x)) return negative ? -x : x;
+    if (i == 0) return negative ? -SampleTail(stream) : SampleTail(stream);
+    if (UnderCurveInWedge(stream, i, x)) return negative ? -x : x;
     u = stream.NextU64();
   }
 }

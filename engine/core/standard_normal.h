@@ -24,6 +24,27 @@ inline bool TryFastPath(std::uint64_t u, double* x) {
   *x = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ ((u & 0x100) << 55));
   return true;
 }
+
+/// For 32-bit draws h (StandardNormals): layer i = bits 0-7, the sign bit 8 and a 23-bit magnitude
+/// m = h >> 9, whose point is x = m kMagnitudeScales[i] (= m 2^-23 x[i]). It lies under the curve's
+/// rectangle of its layer exactly when m < kMagnitudeBounds[i] (= ceil(2^23 x[i+1] / x[i])), an
+/// integer compare before any conversion.
+extern const std::array<std::uint32_t, 256> kMagnitudeBounds;
+extern const std::array<double, 256> kMagnitudeScales;
+/// The wedge or the tail of the 32-bit draw `h`; a rejected wedge point restarts with a fresh
+/// StandardNormal draw from `stream` (any exact draw may restart the method).
+double SampleSlowPath32(RandomStream& stream, std::uint32_t h);
+/// The common case (about 99%) of the 32-bit draw `h`: true with the normal in `x`; false when
+/// SampleSlowPath32 must decide.
+inline bool TryFastPath32(std::uint32_t h, double* x) {
+  const std::size_t i = h & 0xFF;
+  const std::uint32_t m = h >> 9;
+  if (m >= kMagnitudeBounds[i]) return false;
+  const double v = static_cast<double>(static_cast<std::int32_t>(m)) * kMagnitudeScales[i];
+  *x = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^
+                             (static_cast<std::uint64_t>(h & 0x100) << 55));
+  return true;
+}
 }  // namespace ziggurat
 
 /// A standard normal draw N(0, 1) from `stream` by the ziggurat method (Marsaglia and Tsang, "The
@@ -42,18 +63,30 @@ inline double StandardNormal(RandomStream& stream) {
   return ziggurat::SampleSlowPath(stream, u);
 }
 
-/// Fills `out` with standard normal draws from `stream`: the numbers out.size() StandardNormal
-/// calls give, in that order, with the generator's state kept in registers from one draw to the
-/// next instead of in the stream (an IMU draws twelve a sample at 1 kHz).
+/// Fills `out` with standard normal draws from `stream`, two from each 64-bit draw: its low 32 bits
+/// make out[0], its high 32 bits out[1], the next draw out[2] and out[3], and so on (an odd last
+/// element takes a low half; the high half is dropped). Each half is a ziggurat draw of its own
+/// (the same 256 layers, with a 23-bit uniform instead of StandardNormal's 53 bits: points 1.2e-7
+/// of a layer's width apart, far below any sensor's resolution), decided by an integer compare
+/// where StandardNormal converts and multiplies first. The generator's state stays in registers
+/// from one draw to the next. Half the generator steps and a cheaper test: an IMU draws twelve
+/// normals a sample at 1 kHz, asleep or not (docs/performance.md, "Many vehicles").
 inline void StandardNormals(RandomStream& stream, std::span<double> out) {
   RandomStream::State s = stream.state();
-  for (double& x : out) {
-    const std::uint64_t u = RandomStream::Next(s);
-    if (ziggurat::TryFastPath(u, &x)) continue;
+  const auto draw = [&](std::uint32_t h, double& x) {
+    if (ziggurat::TryFastPath32(h, &x)) [[likely]]
+      return;
     stream.set_state(s);
-    x = ziggurat::SampleSlowPath(stream, u);
+    x = ziggurat::SampleSlowPath32(stream, h);
     s = stream.state();
+  };
+  std::size_t k = 0;
+  for (; k + 1 < out.size(); k += 2) {
+    const std::uint64_t u = RandomStream::Next(s);
+    draw(static_cast<std::uint32_t>(u), out[k]);
+    draw(static_cast<std::uint32_t>(u >> 32), out[k + 1]);
   }
+  if (k < out.size()) draw(static_cast<std::uint32_t>(RandomStream::Next(s)), out[k]);
   stream.set_state(s);
 }
 
