@@ -79,6 +79,60 @@ TEST(EmbreeRayCasterTest, HitsReportTheReflectivityOfTheirMaterial) {
   EXPECT_EQ(CastOne(caster, MakeRay(Vec3::Zero(), Vec3::UnitZ())).reflectivity, 0.0f);  // none
 }
 
+TEST(EmbreeRayCasterTest, AnObjectOfSeveralPartsIsOneInstanceHitOnEachPart) {
+  // GIVEN a model of two boxes: part 0 the unit box 0.5 m above the model's origin (z up is -z),
+  // of the fixture's material (0.7); part 1 a 2 m box 2 m above it, red (0.4)
+  engine::StaticScene scene = MakeBoxScene({});
+  engine::Material red;
+  red.base_color_rgb = Eigen::Vector3f(0.9f, 0.2f, 0.1f);
+  scene.materials.push_back(red);
+  engine::Model two;
+  two.name = "two boxes";
+  two.parts.push_back({0, 0, Eigen::Affine3f(Eigen::Translation3f(0, 0, -0.5f))});
+  two.parts.push_back(
+      {0, 1, Eigen::Translation3f(0, 0, -2.0f) * Eigen::Affine3f(Eigen::Scaling(2.0f))});
+  scene.models.push_back(two);
+  // AND two objects of it, turned 90 degrees and scaled 1.5: one at x = 20 m (instance 5), one at
+  // x = -20 m (instance 6) with the red material over both parts
+  for (const double x : {20.0, -20.0}) {
+    engine::StaticObject o;
+    o.model = 1;
+    o.T_WO = Eigen::Translation3d(x, 0, 0) * Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()) *
+             Eigen::Scaling(1.5);
+    o.class_id = 3;
+    o.instance_id = x > 0 ? 5u : 6u;
+    o.material_override = x > 0 ? -1 : 1;
+    scene.objects.push_back(o);
+  }
+  const EmbreeRayCaster caster(scene);
+  // THEN each object is one instance of one BVH of both parts
+  EXPECT_EQ(caster.instance_count(), 2u);
+  EXPECT_EQ(caster.mesh_scene_count(), 1u);
+  // WHEN rays leave the origin along +x at the height of each part: part 0 spans z in [-1.5, 0]
+  // with its near face at x = 20 - 0.75, part 1 z in [-4.5, -1.5] with its face at 20 - 1.5
+  const RayHit low = CastOne(caster, MakeRay(Vec3(0, 0, -0.5), Vec3::UnitX()));
+  const RayHit high = CastOne(caster, MakeRay(Vec3(0, 0, -3.0), Vec3::UnitX()));
+  // THEN each reports its part's face, normal and material, and the object's labels
+  ASSERT_TRUE(low.hit() && high.hit());
+  EXPECT_NEAR(low.distance_m, 19.25, kFloatTolerance_m);
+  EXPECT_NEAR(high.distance_m, 18.5, kFloatTolerance_m);
+  EXPECT_FLOAT_EQ(low.reflectivity, 0.7f);
+  EXPECT_FLOAT_EQ(high.reflectivity, 0.4f);
+  for (const RayHit& hit : {low, high}) {
+    EXPECT_EQ(hit.class_id, 3);
+    EXPECT_EQ(hit.instance_id, 5u);
+    EXPECT_NEAR(hit.normal_W.x(), -1.0f, 1e-5f);
+  }
+  // AND the object with the override reports it on both parts, between their heights none
+  for (const double z : {-0.5, -3.0}) {
+    const RayHit hit = CastOne(caster, MakeRay(Vec3(0, 0, z), -Vec3::UnitX()));
+    ASSERT_TRUE(hit.hit()) << z;
+    EXPECT_EQ(hit.instance_id, 6u);
+    EXPECT_FLOAT_EQ(hit.reflectivity, 0.4f) << z;
+  }
+  EXPECT_FALSE(CastOne(caster, MakeRay(Vec3(0, 0, -5.0), Vec3::UnitX())).hit());
+}
+
 TEST(EmbreeRayCasterTest, GroundPlaneAtHeightAndTilt) {
   // GIVEN a 1 km ground slab whose top face is z = 0, pitched by 20 degrees about y through the
   // origin (box centre moved half its thickness along the tilted normal), and a point 30 m above

@@ -1,6 +1,9 @@
 #include "tools/bench/bench_world.h"
 
+#include <unistd.h>
+
 #include <chrono>
+#include <fstream>
 #include <memory>
 #include <utility>
 
@@ -18,6 +21,15 @@ using Clock = std::chrono::steady_clock;
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The process's resident memory (MB, /proc/self/statm); -1 where it cannot be read.
+double ResidentMegabytes() {
+  std::ifstream statm("/proc/self/statm");
+  long total_pages = 0;
+  long resident_pages = 0;
+  if (!(statm >> total_pages >> resident_pages)) return -1.0;
+  return static_cast<double>(resident_pages) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
 }
 
 // The horizontal extent of the scene's objects' origins (north, east), the middle 90 % of it.
@@ -40,6 +52,7 @@ nlohmann::json RunWorldBench(const WorldBenchOptions& options) {
   auto scene = std::make_shared<const engine::StaticScene>(
       scenes::LoadScene(options.scene, load_options).static_scene);
   out["load_s"] = SecondsSince(start);
+  out["resident_mb_after_load"] = ResidentMegabytes();
   out["objects"] = scene->objects.size();
   const Eigen::AlignedBox2d area = CalcObjectArea(*scene);
   out["area_ne_m"] = {area.sizes().x(), area.sizes().y()};
@@ -52,6 +65,7 @@ nlohmann::json RunWorldBench(const WorldBenchOptions& options) {
   start = Clock::now();
   PhysicsTickScenario physics(scene, MakeRouteOver(64, area, ground_m, options.seed), true);
   out["collision_world_build_s"] = SecondsSince(start);
+  out["resident_mb_after_collision_world"] = ResidentMegabytes();
   const double rate = TicksPerSecond([&] { physics.Tick(); }, options.min_seconds);
   out["ticks_per_s"] = rate;
   out["ns_per_tick"] = 1e9 / rate;
@@ -61,6 +75,7 @@ nlohmann::json RunWorldBench(const WorldBenchOptions& options) {
   start = Clock::now();
   const engine::EmbreeRayCaster caster(*scene);
   out["ray_caster_build_s"] = SecondsSince(start);
+  out["resident_mb_after_ray_caster"] = ResidentMegabytes();
   const LidarRate lidar = MeasureLidarRate(caster, area, ground_m, options.lidar_scans);
   out["lidar_rays_per_s"] = lidar.rays_per_s;
   out["lidar_hit_fraction"] = lidar.hit_fraction;
