@@ -10,6 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
+#include <utility>
+#include <variant>
 
 #include "engine/core/error.h"
 #include "engine/physics/static_collider_grid.h"
@@ -124,21 +128,31 @@ struct SweepCallback : btCollisionWorld::ClosestConvexResultCallback {
 // through six support queries over every point).
 class ScaledPointCloud final : public btConvexPointCloudShape {
  public:
-  ScaledPointCloud(std::vector<btVector3>& points, const btVector3& scaling, btScalar margin)
-      : btConvexPointCloudShape(points.data(), static_cast<int>(points.size()), scaling, false) {
+  // `lo` and `hi`: the points' bounds (PointBounds). Bullet's point cloud only reads its points
+  // (its constructor takes them non-const): many clouds, on several threads, share one mesh's.
+  ScaledPointCloud(const std::vector<btVector3>& points, const btVector3& lo, const btVector3& hi,
+                   const btVector3& scaling, btScalar margin)
+      : btConvexPointCloudShape(const_cast<btVector3*>(points.data()),
+                                static_cast<int>(points.size()), scaling, false) {
     setMargin(margin);
-    btVector3 lo(0, 0, 0), hi(0, 0, 0);  // an empty mesh: a point with the margin
-    if (!points.empty()) lo = hi = points.front();
-    for (const btVector3& p : points) {
-      lo.setMin(p);
-      hi.setMax(p);
-    }
     // As btPolyhedralConvexAabbCachingShape::recalcLocalAabb: the scaled points' bounds and the
     // margin (scales are positive: rotation and scale are separated before).
     const btVector3 m(margin, margin, margin);
     setCachedLocalAabb(lo * scaling - m, hi * scaling + m);
   }
 };
+
+// The bounds of `points`; a point at the origin when there are none (an empty mesh: a point with
+// the margin).
+std::pair<btVector3, btVector3> PointBounds(const std::vector<btVector3>& points) {
+  btVector3 lo(0, 0, 0), hi(0, 0, 0);
+  if (!points.empty()) lo = hi = points.front();
+  for (const btVector3& p : points) {
+    lo.setMin(p);
+    hi.setMax(p);
+  }
+  return {lo, hi};
+}
 
 // Bullet's default pools preallocate 4,096 contact manifolds and collision algorithms (about 4 MB
 // per world). Our dispatcher (below) never draws from them, so they are made as small as Bullet
@@ -182,6 +196,49 @@ class HeapDispatcher final : public btCollisionDispatcher {
   void freeCollisionAlgorithm(void* memory) override { btAlignedFree(memory); }
 };
 
+// A primitive collider's Bullet shape by its dimensions. Made again in its body's scratch for each
+// query that meets the collider (a few dozen instructions) rather than kept per collider: a Bullet
+// shape and its allocation take 112 bytes, 300 MB for a 10 km forest's trunks. Bullet's algorithms
+// read the shape through the wrappers of each call and keep nothing of it.
+struct PrimitiveShape {
+  enum class Kind : std::uint8_t { kBox, kSphere, kCylinderZ, kConeZ, kHull };
+  Kind kind = Kind::kBox;
+  std::uint32_t mesh = 0;  // kHull: the mesh whose vertices it spans (HullPoints)
+  // Box and cylinder: half extents; sphere: its radius in x; cone: radius in x, height in y; hull:
+  // the scale of the mesh's vertices.
+  btVector3 size{0, 0, 0};
+};
+
+// A mesh's vertices, unscaled, for the convex hulls over them, and their bounds.
+struct HullPoints {
+  std::vector<btVector3> points;
+  btVector3 lo{0, 0, 0}, hi{0, 0, 0};
+};
+
+// Holds the one primitive shape a body's query looks at.
+using PrimitiveScratch = std::variant<std::monostate, btBoxShape, btSphereShape, btCylinderShapeZ,
+                                      btConeShapeZ, ScaledPointCloud>;
+
+btCollisionShape* MakePrimitive(const PrimitiveShape& p, const std::vector<HullPoints>& hulls,
+                                PrimitiveScratch& scratch) {
+  switch (p.kind) {
+    case PrimitiveShape::Kind::kHull: {
+      const HullPoints& hull = hulls[p.mesh];
+      return &scratch.emplace<ScaledPointCloud>(hull.points, hull.lo, hull.hi, p.size,
+                                                btScalar(kHullMargin_m));
+    }
+    case PrimitiveShape::Kind::kBox:
+      return &scratch.emplace<btBoxShape>(p.size);
+    case PrimitiveShape::Kind::kSphere:
+      return &scratch.emplace<btSphereShape>(p.size.x());
+    case PrimitiveShape::Kind::kCylinderZ:
+      return &scratch.emplace<btCylinderShapeZ>(p.size);
+    case PrimitiveShape::Kind::kConeZ:
+      return &scratch.emplace<btConeShapeZ>(p.size.x(), p.size.y());
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 struct CollisionWorld::Bullet {
@@ -194,29 +251,29 @@ struct CollisionWorld::Bullet {
   std::vector<std::vector<btScalar>> mesh_vertices;
   std::vector<btBvhTriangleMeshShape*>
       mesh_shapes;  // per scene mesh, built on first use (owned above)
-  // Convex hulls: each mesh's vertices once (unscaled, built on first use), and per placed part a
-  // shape over them that scales them as it goes (Bullet's point cloud, 136 bytes: a hull of its own
-  // copied every vertex, 9 GB for a million trees whose crowns are each scaled their own way).
-  // Sharing shapes between parts of equal scale (a city's cars) saved 12 MB on a 10 km city and
-  // cost a second in a 10 km forest's hash lookups: not done.
-  std::vector<std::vector<btVector3>> hull_points;
+  // Convex hulls: each mesh's vertices once (unscaled, built on first use); a placed part is a
+  // PrimitiveShape of kind kHull, whose shape (Bullet's point cloud scaling them as it goes) is
+  // made for each query. A hull of its own copied every vertex: 9 GB for a million trees whose
+  // crowns are each scaled their own way; a point cloud kept per part took 170 bytes.
+  std::vector<HullPoints> hull_points;
 
-  btCollisionShape* HullShape(const StaticScene& scene, std::uint32_t mesh_index,
-                              const Vec3& scale) {
-    std::vector<btVector3>& points = hull_points[mesh_index];
-    if (points.empty()) {
+  PrimitiveShape HullShape(const StaticScene& scene, std::uint32_t mesh_index, const Vec3& scale) {
+    HullPoints& hull = hull_points[mesh_index];
+    if (hull.points.empty()) {
       for (const auto& p : scene.meshes[mesh_index].positions)
-        points.push_back(ToBt(p.cast<double>()));
+        hull.points.push_back(ToBt(p.cast<double>()));
+      std::tie(hull.lo, hull.hi) = PointBounds(hull.points);
     }
-    return Own(new ScaledPointCloud(points, ToBt(scale), btScalar(kHullMargin_m)));
+    return PrimitiveShape{PrimitiveShape::Kind::kHull, mesh_index, ToBt(scale)};
   }
   // A static collider as Bullet's algorithms see it. Not a btCollisionObject each (376 bytes and an
   // allocation: 300 MB for a 10 km city's 800,000 colliders): a query hands each to Bullet through
   // its body's stand-in object (Body::other), set to the collider's shape and place.
   struct Static {
     btTransform T_WC;
-    btCollisionShape* shape;  // owned by `shapes`
-    int terrain_chunk;        // index into terrain_chunks, -1 for other colliders
+    btCollisionShape* shape;   // owned by `shapes`; null for a primitive
+    PrimitiveShape primitive;  // when `shape` is null
+    int terrain_chunk;         // index into terrain_chunks, -1 for other colliders
   };
   std::vector<Static> statics;
   std::vector<std::vector<float>> heightfield_data;  // per terrain chunk, Bullet's layout
@@ -248,6 +305,7 @@ struct CollisionWorld::Bullet {
     // set before each test); the body's own, so bodies on different threads share nothing.
     std::unique_ptr<btCollisionObject> other;
     Vec3 half_m = Vec3::Zero();
+    PrimitiveScratch primitive;       // the shape of the primitive collider it is tested against
     std::vector<std::uint32_t> near;  // colliders of the current query
     struct Algorithm {
       std::uint32_t collider;
@@ -340,13 +398,20 @@ struct CollisionWorld::Bullet {
     return found;
   }
 
+  void AddStatic(const PrimitiveShape& primitive, const btTransform& T_WC, int collider_index) {
+    PrimitiveScratch scratch;
+    AddStatic(nullptr, T_WC, collider_index, nullptr, primitive,
+              MakePrimitive(primitive, hull_points, scratch));
+  }
+  // `bounds_shape`: the shape whose bounds the collider has (`shape`, or its primitive's).
   void AddStatic(btCollisionShape* shape, const btTransform& T_WC, int collider_index,
-                 const TerrainChunk* chunk = nullptr) {
-    statics.push_back(
-        Static{T_WC, shape, chunk != nullptr ? static_cast<int>(terrain_chunks.size()) : -1});
+                 const TerrainChunk* chunk = nullptr, const PrimitiveShape& primitive = {},
+                 const btCollisionShape* bounds_shape = nullptr) {
+    statics.push_back(Static{T_WC, shape, primitive,
+                             chunk != nullptr ? static_cast<int>(terrain_chunks.size()) : -1});
     if (chunk != nullptr) terrain_chunks.push_back(*chunk);
     btVector3 lo, hi;
-    shape->getAabb(btTransform::getIdentity(), lo, hi);
+    (bounds_shape != nullptr ? bounds_shape : shape)->getAabb(btTransform::getIdentity(), lo, hi);
     const btMatrix3x3& basis = T_WC.getBasis();
     Mat3 R;
     for (int i = 0; i < 3; ++i) {
@@ -367,7 +432,8 @@ struct CollisionWorld::Bullet {
   btCollisionObject& StandIn(Body& body, std::uint32_t collider) const {
     const Static& s = statics[collider];
     btCollisionObject& other = *body.other;
-    other.setCollisionShape(s.shape);
+    other.setCollisionShape(
+        s.shape != nullptr ? s.shape : MakePrimitive(s.primitive, hull_points, body.primitive));
     other.setWorldTransform(s.T_WC);
     other.setUserIndex(static_cast<int>(collider));
     return other;
@@ -403,7 +469,6 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
               "index outside the scene's materials");
       Collider c;
       c.object_index = static_cast<std::uint32_t>(oi);
-      c.name = object.name;
       c.class_id = object.class_id;
       c.instance_id = object.instance_id;
       c.restitution = scene.materials[m].restitution;
@@ -428,7 +493,8 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       const Vec3 half = 0.5 * S.diagonal().cwiseProduct(model.bounds.sizes().cast<double>());
       const Vec3 centre = object.T_WO * model.bounds.center().cast<double>();
       const std::uint32_t mat = model.parts.empty() ? 0 : model.parts.front().material;
-      b.AddStatic(b.Own(new btBoxShape(ToBt(half))), ToBt(R, centre), make_collider(mat));
+      b.AddStatic(PrimitiveShape{PrimitiveShape::Kind::kBox, 0, ToBt(half)}, ToBt(R, centre),
+                  make_collider(mat));
       continue;
     }
 
@@ -440,6 +506,7 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       T.computeRotationScaling(&R, &S);
       const Vec3 scale = S.diagonal();
       Vec3 centre = T.translation();
+      std::optional<PrimitiveShape> primitive;
       btCollisionShape* shape = nullptr;
       CollisionShape kind = object.collision;
       if (kind == CollisionShape::kAuto) {
@@ -451,18 +518,19 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
       if (kind == CollisionShape::kAuto) {
         switch (mesh.primitive) {
           case Primitive::kBox:
-            shape = new btBoxShape(ToBt(0.5 * scale));
+            primitive = PrimitiveShape{PrimitiveShape::Kind::kBox, 0, ToBt(0.5 * scale)};
             break;
           case Primitive::kSphere:
             if (uniform_xy && std::abs(scale.x() - scale.z()) <= 1e-9 * scale.x()) {
-              shape = new btSphereShape(btScalar(0.5 * scale.x()));
+              primitive = PrimitiveShape{PrimitiveShape::Kind::kSphere, 0,
+                                         btVector3(btScalar(0.5 * scale.x()), 0, 0)};
             } else {
               kind = CollisionShape::kConvexHull;
             }
             break;
           case Primitive::kCylinder:
             if (uniform_xy) {
-              shape = new btCylinderShapeZ(ToBt(0.5 * scale));
+              primitive = PrimitiveShape{PrimitiveShape::Kind::kCylinderZ, 0, ToBt(0.5 * scale)};
             } else {
               kind = CollisionShape::kConvexHull;
             }
@@ -470,26 +538,33 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
           case Primitive::kCone:
             if (uniform_xy) {
               // Bullet's cone points to +z; ours has its apex at z = -0.5: turn it over about x.
-              shape = new btConeShapeZ(btScalar(0.5 * scale.x()), btScalar(scale.z()));
+              primitive =
+                  PrimitiveShape{PrimitiveShape::Kind::kConeZ, 0,
+                                 btVector3(btScalar(0.5 * scale.x()), btScalar(scale.z()), 0)};
               R = R * Eigen::AngleAxisd(M_PI, Vec3::UnitX()).toRotationMatrix();
             } else {
               kind = CollisionShape::kConvexHull;
             }
             break;
           case Primitive::kPlane:
-            shape = new btBoxShape(
-                ToBt(Vec3(0.5 * scale.x(), 0.5 * scale.y(), 0.5 * kPlaneSlabThickness_m)));
+            primitive = PrimitiveShape{
+                PrimitiveShape::Kind::kBox, 0,
+                ToBt(Vec3(0.5 * scale.x(), 0.5 * scale.y(), 0.5 * kPlaneSlabThickness_m))};
             centre += R * Vec3(0.0, 0.0, 0.5 * kPlaneSlabThickness_m);
             break;
           case Primitive::kNone:
             break;
         }
       }
-      if (shape == nullptr && kind == CollisionShape::kConvexHull) {
+      if (primitive) {
+        b.AddStatic(*primitive, ToBt(R, centre), make_collider(part.material));
+        continue;
+      }
+      if (kind == CollisionShape::kConvexHull) {
         b.AddStatic(b.HullShape(scene, part.mesh, scale), ToBt(R, centre),
                     make_collider(part.material));
         continue;
-      } else if (shape == nullptr) {
+      } else {
         btBvhTriangleMeshShape* unscaled = b.MeshShape(scene, part.mesh);
         if ((scale - Vec3::Ones()).cwiseAbs().maxCoeff() <= 1e-9) {
           b.AddStatic(unscaled, ToBt(R, centre), make_collider(part.material));

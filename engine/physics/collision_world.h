@@ -13,10 +13,10 @@ namespace airis::engine {
 
 /// One static collision object: a part of a StaticObject (or the whole object for
 /// CollisionShape::kBox), with the labels and contact material the contact solver and collision
-/// events need.
+/// events need. Its name is its object's (StaticScene::objects[object_index].name), not copied:
+/// a 10 km forest has millions of colliders.
 struct Collider {
   std::uint32_t object_index = 0;  ///< into StaticScene::objects
-  std::string name;                ///< the object's name
   std::uint8_t class_id = kNoClass;
   std::uint32_t instance_id = kNoInstance;
   double restitution = 0.3;  ///< of the part's material (or the object's override)

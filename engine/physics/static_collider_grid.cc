@@ -6,19 +6,47 @@
 
 namespace airis::engine {
 
-StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds)
-    : bounds_(std::move(bounds)) {
-  const std::size_t n = bounds_.size();
+namespace {
+
+// The float nearest below (above) v.
+float RoundDown(double v) {
+  const auto f = static_cast<float>(v);
+  return static_cast<double>(f) <= v ? f
+                                     : std::nextafter(f, -std::numeric_limits<float>::infinity());
+}
+float RoundUp(double v) {
+  const auto f = static_cast<float>(v);
+  return static_cast<double>(f) >= v ? f
+                                     : std::nextafter(f, std::numeric_limits<float>::infinity());
+}
+
+}  // namespace
+
+double StaticColliderGrid::Padding_m(const ColliderBounds& bounds) {
+  return 1e-6 * (bounds.half_m.maxCoeff() + 1.0);
+}
+
+StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds) {
+  const std::size_t n = bounds.size();
+  placed_.resize(n);
   aabbs_.resize(n);
   first_cell_x_.assign(n, 0);
   first_cell_y_.assign(n, 0);
-  std::vector<double> widths;
+  std::vector<double> widths(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 reach = bounds_[i].R_WL.cwiseAbs() * bounds_[i].half_m;
-    aabbs_[i] = Aabb{bounds_[i].centre_W - reach, bounds_[i].centre_W + reach};
-    widths.push_back(2.0 * reach.head<2>().maxCoeff());
-    top_z_ = std::min(top_z_, aabbs_[i].lo.z());
+    const ColliderBounds& b = bounds[i];
+    const double pad = Padding_m(b);
+    const Vec3 half = b.half_m + Vec3::Constant(pad);
+    placed_[i] = Placed{b.centre_W, b.R_WL.transpose().cast<float>(),
+                        Eigen::Vector3f(RoundUp(half.x()), RoundUp(half.y()), RoundUp(half.z()))};
+    const Vec3 reach = b.R_WL.cwiseAbs() * half + Vec3::Constant(pad);
+    const Vec3 lo = b.centre_W - reach, hi = b.centre_W + reach;
+    aabbs_[i] = Aabb{Eigen::Vector3f(RoundDown(lo.x()), RoundDown(lo.y()), RoundDown(lo.z())),
+                     Eigen::Vector3f(RoundUp(hi.x()), RoundUp(hi.y()), RoundUp(hi.z()))};
+    widths[i] = 2.0 * reach.head<2>().maxCoeff();
+    top_z_ = std::min(top_z_, static_cast<double>(aabbs_[i].lo.z()));
   }
+  bounds = {};
   if (n == 0) return;
   std::vector<double> sorted = widths;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
@@ -28,20 +56,20 @@ StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds)
   // grid, where a query sees only the cells around the vehicle.
   Eigen::AlignedBox2d everything;
   for (std::size_t i = 0; i < n; ++i) {
-    everything.extend(aabbs_[i].lo.head<2>());
-    everything.extend(aabbs_[i].hi.head<2>());
+    everything.extend(aabbs_[i].lo.head<2>().cast<double>());
+    everything.extend(aabbs_[i].hi.head<2>().cast<double>());
   }
   const double everything_area = everything.sizes().prod();
   std::vector<std::uint32_t> gridded;
   Eigen::AlignedBox2d plan;
   for (std::size_t i = 0; i < n; ++i) {
-    const double area = (aabbs_[i].hi - aabbs_[i].lo).head<2>().prod();
+    const double area = (aabbs_[i].hi - aabbs_[i].lo).head<2>().cast<double>().prod();
     if (area > 0.25 * everything_area) {
       large_.push_back(static_cast<std::uint32_t>(i));
     } else {
       gridded.push_back(static_cast<std::uint32_t>(i));
-      plan.extend(aabbs_[i].lo.head<2>());
-      plan.extend(aabbs_[i].hi.head<2>());
+      plan.extend(aabbs_[i].lo.head<2>().cast<double>());
+      plan.extend(aabbs_[i].hi.head<2>().cast<double>());
     }
   }
   if (gridded.empty()) return;
@@ -65,7 +93,7 @@ StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds)
       fill.assign(cell_start_.begin(), cell_start_.end() - 1);
     }
     for (std::uint32_t i : gridded) {
-      const CellRange r = CellsOf(aabbs_[i].lo, aabbs_[i].hi);
+      const CellRange r = CellsOf(aabbs_[i].lo.cast<double>(), aabbs_[i].hi.cast<double>());
       first_cell_x_[i] = r.x0;
       first_cell_y_[i] = r.y0;
       for (int y = r.y0; y <= r.y1; ++y) {
@@ -74,8 +102,9 @@ StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds)
                                 static_cast<std::size_t>(x);
           if (pass == 0) {
             ++cell_start_[c + 1];
-            cell_top_z_[c] = std::min(cell_top_z_[c], aabbs_[i].lo.z());
-            grid_top_z_ = std::min(grid_top_z_, aabbs_[i].lo.z());
+            const double top = aabbs_[i].lo.z();
+            cell_top_z_[c] = std::min(cell_top_z_[c], top);
+            grid_top_z_ = std::min(grid_top_z_, top);
           } else {
             cell_items_[fill[c]++] = i;
           }
@@ -98,7 +127,9 @@ StaticColliderGrid::CellRange StaticColliderGrid::CellsOf(const Vec3& lo, const 
 void StaticColliderGrid::FindNear(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius,
                                   std::vector<std::uint32_t>& out) const {
   out.clear();
-  const double r2 = radius * radius;
+  // The radius padded as the bounds are: the float offset's rounding grows with the distance.
+  const double padded = radius * (1.0 + 1e-6) + 1e-6;
+  const double r2 = padded * padded;
   // The AABBs, then the exact distance from the centre to the collider's oriented bounds: a
   // collider merely AABB-near is dropped before any narrowphase.
   auto consider = [&](std::uint32_t i) {
@@ -107,9 +138,9 @@ void StaticColliderGrid::FindNear(const Vec3& lo, const Vec3& hi, const Vec3& ce
         hi.y() < box.lo.y() || hi.z() < box.lo.z()) {
       return;
     }
-    const ColliderBounds& b = bounds_[i];
-    const Vec3 d = b.R_WL.transpose() * (centre - b.centre_W);
-    const Vec3 outside = (d.cwiseAbs() - b.half_m).cwiseMax(0.0);
+    const Placed& b = placed_[i];
+    const Eigen::Vector3f d = b.R_LW * (centre - b.centre_W).cast<float>();
+    const Eigen::Vector3f outside = (d.cwiseAbs() - b.half_m).cwiseMax(0.0f);
     if (outside.squaredNorm() <= r2) out.push_back(i);
   };
   for (std::uint32_t i : large_) consider(i);

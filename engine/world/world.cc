@@ -100,7 +100,8 @@ std::optional<World::Overlap> World::FindOverlap(std::size_t i, double tolerance
         std::find(slot.touching.begin(), slot.touching.end(), c.collider) != slot.touching.end();
     if (rests_on || c.depth_m <= tolerance_m) continue;
     if (!deepest || c.depth_m > deepest->depth_m) {
-      deepest = Overlap{collision_.colliders()[c.collider].name, false, c.depth_m};
+      deepest = Overlap{scene_->objects[collision_.colliders()[c.collider].object_index].name,
+                        false, c.depth_m};
     }
   }
   for (std::size_t j = 0; j < slots_.size(); ++j) {
@@ -459,7 +460,7 @@ void World::ReportNewContacts(Slot& slot, std::size_t index, TimeNs end_ns,
       event.time_ns = end_ns;
       event.vehicle = index;
       event.vehicle_name = slot.vehicle->name();
-      event.object_name = info.name;
+      event.object_name = scene_->objects[info.object_index].name;
       event.class_id = info.class_id;
       event.instance_id = info.instance_id;
       event.point_W = best->point_W;

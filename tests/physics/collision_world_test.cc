@@ -33,7 +33,7 @@ TEST(CollisionWorldTest, BoxOnGroundHasFourFaceContacts) {
     EXPECT_NEAR(c.normal_W.z(), -1.0, 1e-6);
     EXPECT_NEAR(c.depth_m, 0.001, 1e-5);
     EXPECT_NEAR(std::abs(c.point_W.x() - 3.0), 0.09, 1e-4);
-    EXPECT_EQ(world.colliders()[c.collider].name, "ground");
+    EXPECT_EQ(b.scene().objects[world.colliders()[c.collider].object_index].name, "ground");
   }
   // 1 cm above: nothing.
   world.FindContacts(body, Vec3(3.0, -2.0, -0.03), Quat::Identity(), 0.0, contacts);
@@ -49,7 +49,7 @@ TEST(CollisionWorldTest, LabelsAndMaterialsComeFromTheScene) {
   ASSERT_EQ(world.colliders().size(), 1u);
   EXPECT_EQ(world.skipped_object_count(), 1u);
   const Collider& crate = world.colliders()[0];
-  EXPECT_EQ(crate.name, "crate");
+  EXPECT_EQ(b.scene().objects[crate.object_index].name, "crate");
   EXPECT_EQ(crate.instance_id, 1u);
   EXPECT_NEAR(crate.restitution, 0.9, 1e-6);
   EXPECT_NEAR(crate.friction, 0.1, 1e-6);
@@ -102,7 +102,7 @@ TEST(CollisionWorldTest, SweepStopsAtAThinWall) {
       world.Sweep(body, Quat::Identity(), Vec3(0.0, 0.0, -2.0), Vec3(10.0, 0.0, -2.0), &hit);
   EXPECT_NEAR(fraction, (5.0 - 0.09) / 10.0, 1e-3);
   EXPECT_NEAR(hit.normal_W.x(), -1.0, 1e-3);
-  EXPECT_EQ(world.colliders()[hit.collider].name, "wall");
+  EXPECT_EQ(b.scene().objects[world.colliders()[hit.collider].object_index].name, "wall");
   // Sliding along the ground it rests on (touching, moving parallel) is not a hit.
   EXPECT_EQ(world.Sweep(body, Quat::Identity(), Vec3(0.0, 0.0, -0.02), Vec3(3.0, 0.0, -0.02), &hit),
             1.0);
