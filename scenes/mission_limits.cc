@@ -63,7 +63,7 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
                           engine::Vec3(extent.max().x() + margin.x(), extent.max().y() + margin.y(),
                                        std::max(extent.max().z(), 0.0)));
   limits.has_ground = scene.has_ground;
-  limits.terrain = scene.static_scene.terrain.heightfield;
+  limits.terrain = scene.static_scene->terrain.heightfield;
   limits.max_speed_m_s = scene.vehicles.at(vehicle).spec->CalcMaxSpeed_m_s();
   limits.physics_rate_hz = scene.physics.rate_hz;
   limits.vehicle = scene.vehicles.at(vehicle).name;
@@ -76,7 +76,7 @@ engine::MissionLimits CalcMissionLimits(const Scene& scene, std::size_t vehicle)
     }
     for (std::string& name : streams) limits.cameras.push_back(std::move(name));
   }
-  const engine::StaticScene* statics = &scene.static_scene;
+  const engine::StaticScene* statics = scene.static_scene.get();
   limits.inside_object = [statics](const Eigen::AlignedBox3d& box) {
     for (const engine::StaticObject& o : statics->objects) {
       if (BoxInsideObject(*statics, o, box)) return true;
@@ -98,7 +98,7 @@ void CheckMissionInScene(const engine::Mission& mission, const Scene& scene,
   }
   engine::CheckMission(mission, tracks, engine::LocalNedFrame(scene.origin));
   // A drawn value that changes nothing would still be written with every frame, as if it had.
-  const engine::SkyModel sky = scene.static_scene.lighting.sky;
+  const engine::SkyModel sky = scene.static_scene->lighting.sky;
   if (mission.randomize.turbidity && sky != engine::SkyModel::kClear) {
     const std::string key = "randomize.turbidity";
     throw engine::ConfigError(

@@ -84,7 +84,9 @@ struct Scene {
   engine::EnvironmentConfig environment;
   engine::PhysicsConfig physics;  ///< tick rate and contact solver (the `physics:` block)
   SunPosition sun;                ///< as lighting.sun_direction_W of the static scene
-  engine::StaticScene static_scene;
+  /// Shared with the worlds built from it (WorldResources), not copied: a 10 km forest's static
+  /// scene takes 440 MB.
+  std::shared_ptr<const engine::StaticScene> static_scene;
   bool has_ground = false;  ///< a ground plane at z = 0 (`ground.enabled`)
   /// The `terrain` block's settings as `key=value` pairs (scenes::DescribeTerrain; empty without
   /// terrain): the provenance an exported DEM carries.

@@ -109,7 +109,7 @@ class SceneAssembler {
     // The vehicles' looks take the instance ids after every object's, in vehicle order.
     for (std::size_t i = 0; i < s.vehicles.size(); ++i)
       AddVehicleBody(doc_.vehicles[i], s.vehicles[i]);
-    s.static_scene = builder_.Finish();
+    s.static_scene = std::make_shared<const engine::StaticScene>(builder_.Finish());
     s.files.insert(s.files.end(), inputs_.begin(), inputs_.end());
     return s;
   }

@@ -37,7 +37,7 @@ std::size_t EstimateMemoryBytes(const engine::StaticScene& s) {
 }
 
 SceneStats CalcSceneStats(const Scene& scene) {
-  const engine::StaticScene& s = scene.static_scene;
+  const engine::StaticScene& s = *scene.static_scene;
   SceneStats out;
   std::map<std::uint8_t, std::size_t> per_class;
   out.bounds_W.setEmpty();

@@ -61,8 +61,8 @@ void AddVehicle(const Scene& scene, const VehicleDescription& v,
     try {
       // A sensor cannot sample faster than the physics ticks, and some need its period.
       s.spec->ValidateForPhysicsRate(scene.physics.rate_hz);
-      s.spec->ValidateForInstances(scene.static_scene.objects.size() +
-                                   scene.static_scene.vehicle_bodies.size());
+      s.spec->ValidateForInstances(scene.static_scene->objects.size() +
+                                   scene.static_scene->vehicle_bodies.size());
       if (!cameras && s.spec->renders()) continue;
       SensorBuildContext context{streams.Stream("vehicles/" + v.name + "/" + s.name), render_scene};
       world.AddSensor(index, s.spec->Build(s.name, context));
@@ -75,9 +75,7 @@ void AddVehicle(const Scene& scene, const VehicleDescription& v,
 std::unique_ptr<engine::World> Build(const Scene& scene, std::uint64_t seed, WorldResources& shared,
                                      bool cameras) {
   const engine::RandomStreams streams(seed);
-  if (!shared.static_scene) {
-    shared.static_scene = std::make_shared<const engine::StaticScene>(scene.static_scene);
-  }
+  if (!shared.static_scene) shared.static_scene = scene.static_scene;
   if (!shared.ray_caster) {
     shared.ray_caster = std::make_shared<const engine::EmbreeRayCaster>(*shared.static_scene);
   }

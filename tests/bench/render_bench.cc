@@ -114,7 +114,7 @@ const GpuScene& SceneFile(const char* name) {
     const std::string path = std::string(AIRIS_BENCH_SCENES_DIR) + "/" + name;
     const scenes::Scene scene = scenes::LoadScene(path);
     Context();
-    slot = std::make_unique<GpuScene>(scene.static_scene);
+    slot = std::make_unique<GpuScene>(*scene.static_scene);
   }
   return *slot;
 }

@@ -186,11 +186,11 @@ void BM_LoadForestScene10k(benchmark::State& state) {
   const Scene warm = LoadSceneFromString(text, "bench.yaml");
   for (auto _ : state) {
     Scene s = LoadSceneFromString(text, "bench.yaml");
-    benchmark::DoNotOptimize(s.static_scene.objects.data());
+    benchmark::DoNotOptimize(s.static_scene->objects.data());
   }
   state.SetItemsProcessed(state.iterations() *
-                          static_cast<std::int64_t>(warm.static_scene.objects.size()));
-  ReportScene(state, warm.static_scene);
+                          static_cast<std::int64_t>(warm.static_scene->objects.size()));
+  ReportScene(state, *warm.static_scene);
 }
 BENCHMARK(BM_LoadForestScene10k)->Unit(benchmark::kMillisecond);
 
@@ -206,11 +206,11 @@ void BM_LoadObjectsListedOneByOne(benchmark::State& state) {
   const Scene warm = LoadSceneFromString(text, "bench.yaml");
   for (auto _ : state) {
     Scene s = LoadSceneFromString(text, "bench.yaml");
-    benchmark::DoNotOptimize(s.static_scene.objects.data());
+    benchmark::DoNotOptimize(s.static_scene->objects.data());
   }
   state.SetItemsProcessed(state.iterations() * objects);
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(text.size()));
-  ReportScene(state, warm.static_scene);
+  ReportScene(state, *warm.static_scene);
 }
 BENCHMARK(BM_LoadObjectsListedOneByOne)
     ->Arg(10'000)

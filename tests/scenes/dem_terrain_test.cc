@@ -58,7 +58,7 @@ std::string SceneOver(const std::string& dem_path, const std::string& more = "",
          more;
 }
 
-const engine::Heightfield& FieldOf(const Scene& s) { return *s.static_scene.terrain.heightfield; }
+const engine::Heightfield& FieldOf(const Scene& s) { return *s.static_scene->terrain.heightfield; }
 
 engine::LocalNedFrame Frame() {
   return engine::LocalNedFrame({engine::DegToRad(kLat_deg), engine::DegToRad(kLon_deg), kAlt_m});

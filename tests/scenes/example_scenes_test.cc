@@ -23,8 +23,8 @@ std::map<std::string, std::size_t> CountByClass(const Scene& s) {
 TEST(ExampleScenesTest, EmptyIsGroundOnly) {
   const Scene s = LoadScene("scenes/empty.yaml");
   EXPECT_EQ(s.name, "empty");
-  ASSERT_EQ(s.static_scene.objects.size(), 1u);
-  EXPECT_EQ(s.static_scene.objects[0].name, "ground");
+  ASSERT_EQ(s.static_scene->objects.size(), 1u);
+  EXPECT_EQ(s.static_scene->objects[0].name, "ground");
   ASSERT_EQ(s.vehicles.size(), 1u);
 }
 
@@ -54,8 +54,8 @@ TEST(ExampleScenesTest, CityHasHundredsOfBuildingsStreetsCarsAndLamps) {
   const SceneStats stats = CalcSceneStats(s);
   // About 1 km x 1 km of city (the ground plane, object 0, is larger).
   Eigen::AlignedBox3d city;
-  for (std::size_t i = 1; i < s.static_scene.objects.size(); ++i)
-    city.extend(s.static_scene.ObjectBounds(i));
+  for (std::size_t i = 1; i < s.static_scene->objects.size(); ++i)
+    city.extend(s.static_scene->ObjectBounds(i));
   EXPECT_NEAR(city.sizes().x(), 1000.0, 100.0);
   EXPECT_NEAR(city.sizes().y(), 1000.0, 100.0);
   EXPECT_LT(stats.models, 40u);
@@ -73,17 +73,17 @@ TEST(ExampleScenesTest, ForestHasThousandsOfTreesOnAFewMeshes) {
   // meshes of the models' own parts; the coarser looks add nine tessellations per round one, the
   // sphere eight).
   std::set<std::uint32_t> own;
-  for (const engine::Model& m : s.static_scene.models) {
+  for (const engine::Model& m : s.static_scene->models) {
     for (const engine::ModelPart& part : m.parts) own.insert(part.mesh);
   }
   EXPECT_LE(own.size(), 5u);
-  EXPECT_LE(s.static_scene.meshes.size(), 5u + 3u * 9u - 1u);
+  EXPECT_LE(s.static_scene->meshes.size(), 5u + 3u * 9u - 1u);
 }
 
 TEST(ExampleScenesTest, ValleyHasHillsAForestOnThemAndATownOnATerrace) {
   const Scene s = LoadScene("scenes/valley.yaml");
-  ASSERT_NE(s.static_scene.terrain.heightfield, nullptr);
-  const engine::Heightfield& f = *s.static_scene.terrain.heightfield;
+  ASSERT_NE(s.static_scene->terrain.heightfield, nullptr);
+  const engine::Heightfield& f = *s.static_scene->terrain.heightfield;
   EXPECT_EQ(f.rows(), 301);
   // relief_m, less the little the town's terrace raised the lowest ground by.
   EXPECT_NEAR(f.max_height_m() - f.min_height_m(), 260.0, 0.1);
@@ -98,8 +98,8 @@ TEST(ExampleScenesTest, ValleyHasHillsAForestOnThemAndATownOnATerrace) {
 
 TEST(ExampleScenesTest, DemHillsStandOnTheShippedElevationModelTile) {
   const Scene s = LoadScene("scenes/dem_hills.yaml");
-  ASSERT_NE(s.static_scene.terrain.heightfield, nullptr);
-  const engine::Heightfield& f = *s.static_scene.terrain.heightfield;
+  ASSERT_NE(s.static_scene->terrain.heightfield, nullptr);
+  const engine::Heightfield& f = *s.static_scene->terrain.heightfield;
   // 1.6 km at 10 m, centred on the origin.
   EXPECT_EQ(f.rows(), 161);
   EXPECT_EQ(f.cols(), 161);
@@ -121,10 +121,10 @@ TEST(ExampleScenesTest, DemHillsStandOnTheShippedElevationModelTile) {
 
 TEST(ExampleScenesTest, LandingPadLoadsTheMeshAssetThroughAssimp) {
   const Scene s = LoadScene("scenes/landing_pad.yaml");
-  const auto& objects = s.static_scene.objects;
+  const auto& objects = s.static_scene->objects;
   ASSERT_GE(objects.size(), 2u);
   EXPECT_EQ(objects[1].name, "pad");
-  const engine::Model& pad = s.static_scene.models[objects[1].model];
+  const engine::Model& pad = s.static_scene->models[objects[1].model];
   EXPECT_EQ(pad.parts.size(), 3u);  // pad, marking, ring materials
   // 4 m across, 0.11 m tall, lying on the ground (z from -0.11 to 0) after the y-up conversion.
   EXPECT_NEAR(pad.bounds.sizes().x(), 4.0 * std::cos(3.14159265 / 8), 1e-3);

@@ -124,7 +124,7 @@ Sample HighestSample(const engine::Heightfield& ground) {
 // the check names the step's key, the point and the surface's height there; the same targets at
 // above_ground_m pass.
 TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
-  const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
+  const engine::Heightfield& ground = *Hills().static_scene->terrain.heightfield;
   // The highest sample: there the surface is relief_m up.
   const auto [n, e, top_m] = HighestSample(ground);
   const std::string ne = engine::FormatNumber(n) + ", " + engine::FormatNumber(e);
@@ -155,7 +155,7 @@ TEST(MissionHeightsTest, TargetsUnderTheTerrainAreRefusedNamingTheStep) {
 // gives the deepest point (the top sample, exactly: the check is not sampled). 2 m over the top
 // it passes.
 TEST(MissionHeightsTest, WaysThatRunUnderAHillAreRefusedNamingTheStep) {
-  const engine::Heightfield& ground = *Hills().static_scene.terrain.heightfield;
+  const engine::Heightfield& ground = *Hills().static_scene->terrain.heightfield;
   const auto [n, e, top_m] = HighestSample(ground);
   const double low_m = std::max(ground.CalcHeight_m(n - 200, e), ground.CalcHeight_m(n + 200, e));
   ASSERT_LT(low_m + 4.0, top_m);

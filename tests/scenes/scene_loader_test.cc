@@ -100,9 +100,9 @@ TEST(SceneLoaderTest, MaterialShadingKeysReachTheSceneAndBadOnesNameTheKey) {
       "  - primitive: box\n"
       "    material: {roughness: 0.25, metallic: 1, pattern: facade, pattern_size_m: [3.5, 2]}\n");
   const Scene s = LoadScene(good);
-  const engine::StaticObject& box = s.static_scene.objects.back();
+  const engine::StaticObject& box = s.static_scene->objects.back();
   ASSERT_GE(box.material_override, 0);
-  const engine::Material& m = s.static_scene.materials[box.material_override];
+  const engine::Material& m = s.static_scene->materials[box.material_override];
   EXPECT_EQ(m.roughness, 0.25f);
   EXPECT_EQ(m.metallic, 1.0f);
   EXPECT_EQ(m.pattern, engine::SurfacePattern::kFacade);
@@ -243,8 +243,8 @@ TEST(SceneLoaderTest, GltfMaterialsBringTheirNormalAndMetallicRoughnessMaps) {
   f.Write("m/quad.gltf", GltfQuad("normal.png", "mr.png"));
   const std::string good = f.Write("good.yaml", "objects:\n  - mesh: m/quad.gltf\n");
   const Scene s = LoadScene(good);
-  const engine::Model& model = s.static_scene.models[s.static_scene.objects.back().model];
-  const engine::Material& m = s.static_scene.materials[model.parts.at(0).material];
+  const engine::Model& model = s.static_scene->models[s.static_scene->objects.back().model];
+  const engine::Material& m = s.static_scene->materials[model.parts.at(0).material];
   EXPECT_EQ(m.texture_path, f.Path("m/colour.png"));
   EXPECT_EQ(m.normal_texture_path, f.Path("m/normal.png"));
   EXPECT_EQ(m.metallic_roughness_texture_path, f.Path("m/mr.png"));
@@ -255,8 +255,8 @@ TEST(SceneLoaderTest, GltfMaterialsBringTheirNormalAndMetallicRoughnessMaps) {
   f.Write("m/flatter.gltf", GltfQuad("normal.png", "mr.png", "0.25"));
   const Scene flatter = LoadScene(f.Write("flatter.yaml", "objects:\n  - mesh: m/flatter.gltf\n"));
   const engine::Model& flat_model =
-      flatter.static_scene.models[flatter.static_scene.objects.back().model];
-  EXPECT_EQ(flatter.static_scene.materials[flat_model.parts.at(0).material].normal_scale, 0.25f);
+      flatter.static_scene->models[flatter.static_scene->objects.back().model];
+  EXPECT_EQ(flatter.static_scene->materials[flat_model.parts.at(0).material].normal_scale, 0.25f);
   f.Write("m/huge.gltf", GltfQuad("normal.png", "mr.png", "1e300"));
   const std::string huge_error =
       LoadError(f.Write("huge.yaml", "objects:\n  - mesh: m/huge.gltf\n"));
@@ -315,12 +315,12 @@ TEST(SceneLoaderTest, GlbTexturesEmbeddedInTheFileAreRead) {
   SceneFiles f("glb_embedded");
   f.Write("m/decal.glb", GlbQuadWithEmbeddedTexture(kPixelPng));
   const Scene s = LoadScene(f.Write("good.yaml", "objects:\n  - mesh: m/decal.glb\n"));
-  const engine::Model& model = s.static_scene.models[s.static_scene.objects.back().model];
-  const engine::Material& m = s.static_scene.materials[model.parts.at(0).material];
+  const engine::Model& model = s.static_scene->models[s.static_scene->objects.back().model];
+  const engine::Material& m = s.static_scene->materials[model.parts.at(0).material];
   const std::string name = f.Path("m/decal.glb") + "#*0";
   EXPECT_EQ(m.texture_path, name);
-  ASSERT_EQ(s.static_scene.embedded_images.count(name), 1u);
-  EXPECT_EQ(s.static_scene.embedded_images.at(name), kPixelPng);
+  ASSERT_EQ(s.static_scene->embedded_images.count(name), 1u);
+  EXPECT_EQ(s.static_scene->embedded_images.at(name), kPixelPng);
   EXPECT_EQ(std::count(s.files.begin(), s.files.end(), name), 0);
   f.Write("m/bad.glb", GlbQuadWithEmbeddedTexture("GIF89a not an image we read"));
   const std::string error = LoadError(f.Write("bad.yaml", "objects:\n  - mesh: m/bad.glb\n"));
@@ -465,7 +465,7 @@ TEST(SceneLoaderTest, MoreObjectsThan16BitIdsNumberLoadWithDistinctIds) {
                                    "row_step_ned_m: [0, 2, 0]}\n");
   const Scene s = LoadScene(path);
   // 69,000 boxes and the ground: ids 1..69001 in order, so past 65,535 and none repeated.
-  const auto& objects = s.static_scene.objects;
+  const auto& objects = s.static_scene->objects;
   ASSERT_EQ(objects.size(), 69'001u);
   for (std::size_t i = 0; i < objects.size(); ++i) {
     ASSERT_EQ(objects[i].instance_id, i + 1) << i;
@@ -483,20 +483,20 @@ TEST(SceneLoaderTest, ObjectsRepeatShareOneModelAndGetUniqueIds) {
       "  - {name: d, mesh: cube.obj, mesh_axes: ned, position_ned_m: [9, 9, -1]}\n"
       "  - {primitive: cone, position_ned_m: [20, 0, -1], material: {color: [1, 0, 0]}}\n");
   const Scene s = LoadScene(path);
-  ASSERT_EQ(s.static_scene.objects.size(), 1u + 6u + 1u + 1u);  // ground, 6 copies, d, cone
+  ASSERT_EQ(s.static_scene->objects.size(), 1u + 6u + 1u + 1u);  // ground, 6 copies, d, cone
   std::set<std::uint32_t> ids;
-  for (const auto& o : s.static_scene.objects) ids.insert(o.instance_id);
-  EXPECT_EQ(ids.size(), s.static_scene.objects.size());
+  for (const auto& o : s.static_scene->objects) ids.insert(o.instance_id);
+  EXPECT_EQ(ids.size(), s.static_scene->objects.size());
   EXPECT_EQ(*ids.begin(), 1u);
   EXPECT_EQ(*ids.rbegin(), 9u);
-  const auto& objects = s.static_scene.objects;
+  const auto& objects = s.static_scene->objects;
   EXPECT_EQ(objects[1].name, "c_0_0");
   EXPECT_EQ(objects[6].name, "c_1_2");
   EXPECT_TRUE(objects[6].T_WO.translation().isApprox(Eigen::Vector3d(4, 2, -1)));
   EXPECT_EQ(objects[1].model, objects[7].model);  // one mesh file, one model
   EXPECT_EQ(objects[8].name, "cone");
   EXPECT_GE(objects[8].material_override, 0);
-  EXPECT_EQ(s.static_scene.materials[objects[8].material_override].base_color_rgb,
+  EXPECT_EQ(s.static_scene->materials[objects[8].material_override].base_color_rgb,
             Eigen::Vector3f(1, 0, 0));
 }
 
@@ -516,11 +516,11 @@ TEST(SceneLoaderTest, IncludesConcatenateAndTheIncluderWins) {
   const Scene s = LoadScene(top);
   EXPECT_EQ(s.name, "top");
   EXPECT_EQ(s.seed, 1u);  // the includer's scene block replaces the tile's as a whole
-  ASSERT_EQ(s.static_scene.objects.size(), 4u);
-  EXPECT_EQ(s.static_scene.objects[0].T_WO.linear().col(0).norm(), 10.0);  // tile's ground kept
-  EXPECT_EQ(s.static_scene.objects[1].name, "from_a");
-  EXPECT_EQ(s.static_scene.objects[2].name, "from_b");
-  EXPECT_EQ(s.static_scene.objects[3].name, "own");
+  ASSERT_EQ(s.static_scene->objects.size(), 4u);
+  EXPECT_EQ(s.static_scene->objects[0].T_WO.linear().col(0).norm(), 10.0);  // tile's ground kept
+  EXPECT_EQ(s.static_scene->objects[1].name, "from_a");
+  EXPECT_EQ(s.static_scene->objects[2].name, "from_b");
+  EXPECT_EQ(s.static_scene->objects[3].name, "own");
   EXPECT_EQ(s.files.size(), 3u);
 }
 
@@ -531,11 +531,12 @@ TEST(SceneLoaderTest, SameSceneLoadsIdentically) {
       "  - forest: {area: {size_ne_m: [100, 100]}, density_per_ha: 200}\n";
   const Scene a = LoadSceneFromString(text, "mem.yaml");
   const Scene b = LoadSceneFromString(text, "mem.yaml");
-  ASSERT_EQ(a.static_scene.objects.size(), b.static_scene.objects.size());
-  for (std::size_t i = 0; i < a.static_scene.objects.size(); ++i) {
-    EXPECT_EQ(a.static_scene.objects[i].instance_id, b.static_scene.objects[i].instance_id);
-    EXPECT_EQ(a.static_scene.objects[i].name, b.static_scene.objects[i].name);
-    EXPECT_TRUE(a.static_scene.objects[i].T_WO.matrix() == b.static_scene.objects[i].T_WO.matrix());
+  ASSERT_EQ(a.static_scene->objects.size(), b.static_scene->objects.size());
+  for (std::size_t i = 0; i < a.static_scene->objects.size(); ++i) {
+    EXPECT_EQ(a.static_scene->objects[i].instance_id, b.static_scene->objects[i].instance_id);
+    EXPECT_EQ(a.static_scene->objects[i].name, b.static_scene->objects[i].name);
+    EXPECT_TRUE(a.static_scene->objects[i].T_WO.matrix() ==
+                b.static_scene->objects[i].T_WO.matrix());
   }
   ASSERT_EQ(a.generated.size(), 1u);
   EXPECT_EQ(a.generated[0].name, "mem/forest0");
@@ -546,9 +547,9 @@ TEST(SceneLoaderTest, CustomClassesGetIdsAndClashesAreErrors) {
       "classes: [{name: crate}, {name: drone_dock, id: 200, color: [0, 1, 0]}]\n"
       "objects: [{primitive: box, class: drone_dock, position_ned_m: [5, 5, -1]}]\n",
       "mem.yaml");
-  EXPECT_EQ(s.static_scene.objects.back().class_id, 200);
-  ASSERT_NE(s.static_scene.FindClass(200), nullptr);
-  EXPECT_EQ(s.static_scene.FindClass(200)->name, "drone_dock");
+  EXPECT_EQ(s.static_scene->objects.back().class_id, 200);
+  ASSERT_NE(s.static_scene->FindClass(200), nullptr);
+  EXPECT_EQ(s.static_scene->FindClass(200)->name, "drone_dock");
   try {
     LoadSceneFromString("classes:\n  - {name: crate, id: 4}\n", "mem.yaml");
     FAIL() << "expected ConfigError";

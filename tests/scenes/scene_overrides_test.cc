@@ -106,9 +106,9 @@ TEST(SceneOverridesTest, EveryBlockOfTheSceneFileCanBeOverridden) {
   const Scene s = LoadWith(
       path, {"terrain.extent_ne_m=[200, 300]", "terrain.resolution_m=10", "terrain.relief_m=1"});
   // THEN the scene has it: 21 x 31 samples
-  ASSERT_NE(s.static_scene.terrain.heightfield, nullptr);
-  EXPECT_EQ(s.static_scene.terrain.heightfield->rows(), 21);
-  EXPECT_EQ(s.static_scene.terrain.heightfield->cols(), 31);
+  ASSERT_NE(s.static_scene->terrain.heightfield, nullptr);
+  EXPECT_EQ(s.static_scene->terrain.heightfield->rows(), 21);
+  EXPECT_EQ(s.static_scene->terrain.heightfield->cols(), 31);
   // AND every top-level key of the file but `include` is a block an override reaches: the error
   // for a key inside it is about that key, never "unknown key".
   const std::vector<std::string> keys = SceneFileKeys();
@@ -129,7 +129,7 @@ TEST(SceneOverridesTest, ValuesValidOnlyTogetherPassTogether) {
                                           "generators[0].forest.density_per_ha=1"};
   // THEN together they load (keys are applied in order, the blocks read once they all are)
   const Scene s = LoadWith("scenes/forest.yaml", wider);
-  EXPECT_GT(s.static_scene.objects.size(), 5000u);
+  EXPECT_GT(s.static_scene->objects.size(), 5000u);
   // AND the area alone is refused, naming it
   try {
     LoadWith("scenes/forest.yaml", {wider[0]});

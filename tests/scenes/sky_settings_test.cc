@@ -15,7 +15,7 @@ TEST(SkySettingsTest, ReachTheRenderersLighting) {
   const Scene scene = LoadSceneFromString(
       "scene:\n  lighting: {sky: clear, turbidity: 4.5, visibility_m: 1000, fog_height_m: 80}\n",
       "scenes/v.yaml");
-  const engine::SceneLighting& light = scene.static_scene.lighting;
+  const engine::SceneLighting& light = scene.static_scene->lighting;
   // THEN the renderer gets them, the visibility as the fog distance V / 3.912 (Koschmieder)
   EXPECT_EQ(light.sky, engine::SkyModel::kClear);
   EXPECT_FLOAT_EQ(light.turbidity, 4.5f);
@@ -23,8 +23,8 @@ TEST(SkySettingsTest, ReachTheRenderersLighting) {
   EXPECT_FLOAT_EQ(light.fog_height_m, 80.0f);
   // AND without them the sky is the gradient one, without fog
   const Scene plain = LoadSceneFromString("ground: {enabled: false}\n", "scenes/v.yaml");
-  EXPECT_EQ(plain.static_scene.lighting.sky, engine::SkyModel::kGradient);
-  EXPECT_EQ(plain.static_scene.lighting.fog_distance_m, 0.0f);
+  EXPECT_EQ(plain.static_scene->lighting.sky, engine::SkyModel::kGradient);
+  EXPECT_EQ(plain.static_scene->lighting.fog_distance_m, 0.0f);
 }
 
 TEST(SkySettingsTest, BadValuesAreRefusedNamingTheKey) {

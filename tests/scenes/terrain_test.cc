@@ -20,7 +20,7 @@ namespace {
 using ::testing::HasSubstr;
 
 const engine::Heightfield& FieldOf(const Scene& scene) {
-  return *scene.static_scene.terrain.heightfield;
+  return *scene.static_scene->terrain.heightfield;
 }
 
 Scene LoadTerrain(const std::string& terrain_keys, int seed = 3) {
@@ -94,7 +94,7 @@ TEST(TerrainTest, ChunksAreTerrainStuffWithRockOnSteepGroundAndSoilUpHigh) {
   const Scene s = LoadTerrain(
       "extent_ne_m: [700, 500], resolution_m: 5, relief_m: 150, feature_size_m: 300, "
       "rock_slope_deg: 30, soil_above_fraction: 0.7, friction: 0.9");
-  const engine::StaticScene& scene = s.static_scene;
+  const engine::StaticScene& scene = *s.static_scene;
   const engine::SemanticClass* terrain = nullptr;
   for (const auto& c : scene.classes) {
     if (c.name == "terrain") terrain = &c;
@@ -215,7 +215,7 @@ TEST(TerrainTest, TreesStandOnTheSurfaceThinnedBySlopeAndNoneOnCliffs) {
       factor_area_m2[bin] += 1.0 - slope / max_slope;
     }
   }
-  for (const engine::StaticObject& o : s.static_scene.objects) {
+  for (const engine::StaticObject& o : s.static_scene->objects) {
     if (o.class_id != 5) continue;  // trees
     const Eigen::Vector3d p = o.T_WO.translation();
     const double slope = slope_at(p.x(), p.y());
@@ -268,10 +268,10 @@ TEST(TerrainTest, ACityStandsOnALevelledTerraceOrIsRefusedOnSteepGround) {
   // and the city stands on it: nothing reaches below it, and streets, buildings, lamps and cars
   // have their lowest point on it (roofs stand on their buildings).
   std::size_t on_terrace = 0;
-  for (std::size_t i = 0; i < s.static_scene.objects.size(); ++i) {
-    if (s.static_scene.objects[i].class_id == 15) continue;  // the terrain's chunks
-    const double lowest_z = s.static_scene.ObjectBounds(i).max().z();
-    EXPECT_LE(lowest_z, -level + 1e-3) << s.static_scene.objects[i].name;
+  for (std::size_t i = 0; i < s.static_scene->objects.size(); ++i) {
+    if (s.static_scene->objects[i].class_id == 15) continue;  // the terrain's chunks
+    const double lowest_z = s.static_scene->ObjectBounds(i).max().z();
+    EXPECT_LE(lowest_z, -level + 1e-3) << s.static_scene->objects[i].name;
     if (std::abs(lowest_z + level) < 1e-3) ++on_terrace;
   }
   const std::size_t city_objects = on_terrace;
@@ -292,7 +292,7 @@ TEST(TerrainTest, ObjectsOnTerrainTakeTheirHeightFromTheSurface) {
       "mem.yaml");
   const engine::Heightfield& f = FieldOf(s);
   int masts = 0;
-  for (const engine::StaticObject& o : s.static_scene.objects) {
+  for (const engine::StaticObject& o : s.static_scene->objects) {
     if (o.name.rfind("mast", 0) != 0) continue;
     const Eigen::Vector3d p = o.T_WO.translation();
     // 2 m above the surface at each copy's own north, east.

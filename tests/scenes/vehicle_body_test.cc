@@ -28,7 +28,7 @@ TEST(VehicleBodyTest, DefaultBodyIsGeneratedFromTheAirframe) {
   const Scene s = LoadSceneFromString(
       "vehicles:\n  - {name: hexa, preset: hexa_x, start: {position_ned_m: [0, 0, -5]}}\n",
       "scenes/v.yaml");
-  const engine::StaticScene& scene = s.static_scene;
+  const engine::StaticScene& scene = *s.static_scene;
   ASSERT_EQ(scene.vehicle_bodies.size(), 1u);
   const engine::VehicleBody& body = scene.vehicle_bodies[0];
   EXPECT_EQ(body.name, "hexa");
@@ -80,12 +80,12 @@ TEST(VehicleBodyTest, VehiclesTakeTheInstanceIdsAfterTheObjects) {
       "  - {name: a, preset: quad_x}\n"
       "  - {name: b, preset: quad_x, start: {position_ned_m: [3, 0, -0.2]}}\n",
       "scenes/v.yaml");
-  ASSERT_EQ(s.static_scene.objects.size(), 3u);  // ground + 2
-  ASSERT_EQ(s.static_scene.vehicle_bodies.size(), 2u);
-  EXPECT_EQ(s.static_scene.objects.back().instance_id, 3u);
-  EXPECT_EQ(s.static_scene.vehicle_bodies[0].instance_id, 4u);
-  EXPECT_EQ(s.static_scene.vehicle_bodies[1].instance_id, 5u);
-  EXPECT_EQ(s.static_scene.vehicle_bodies[1].name, "b");
+  ASSERT_EQ(s.static_scene->objects.size(), 3u);  // ground + 2
+  ASSERT_EQ(s.static_scene->vehicle_bodies.size(), 2u);
+  EXPECT_EQ(s.static_scene->objects.back().instance_id, 3u);
+  EXPECT_EQ(s.static_scene->vehicle_bodies[0].instance_id, 4u);
+  EXPECT_EQ(s.static_scene->vehicle_bodies[1].instance_id, 5u);
+  EXPECT_EQ(s.static_scene->vehicle_bodies[1].name, "b");
 }
 
 // GIVEN a body from a mesh file, placed, scaled, recoloured and of a class of the scene's own
@@ -106,7 +106,7 @@ TEST(VehicleBodyTest, MeshBodyIsPlacedInTheBodyFrame) {
       "      color: [0.9, 0.1, 0.1]\n"
       "      class: intruder\n",
       "scenes/v.yaml");
-  const engine::StaticScene& scene = s.static_scene;
+  const engine::StaticScene& scene = *s.static_scene;
   const engine::VehicleBody& body = scene.vehicle_bodies.at(0);
   EXPECT_EQ(scene.models[body.model].name, "scenes/assets/landing_pad.obj");
   EXPECT_EQ(scene.FindClass(body.class_id)->name, "intruder");

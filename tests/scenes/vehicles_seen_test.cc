@@ -96,7 +96,7 @@ Pixel Centre(const engine::CameraFrame& f) {
 TEST(VehiclesSeenTest, CameraOnADroneSeesAnotherAtItsHullDistance) {
   const Scene scene = LoadSceneFromString(ChaseScene(false), "tests/chase.yaml");
   const auto sim = FlyToFirstFrame(scene);
-  const engine::VehicleBody& target = scene.static_scene.vehicle_bodies.at(1);
+  const engine::VehicleBody& target = scene.static_scene->vehicle_bodies.at(1);
   const engine::CameraFrame& front = Frame(*sim, "front");
   ASSERT_EQ(front.time_ns, 10'000'000);  // the first frame of 100 Hz
 
@@ -104,7 +104,7 @@ TEST(VehiclesSeenTest, CameraOnADroneSeesAnotherAtItsHullDistance) {
   const double expected_m = 6.0 - kHalfLength_m;
   EXPECT_NEAR(c.depth_m, expected_m, expected_m * kFloatRelTolerance);
   EXPECT_EQ(c.instance_id, static_cast<int>(target.instance_id));
-  EXPECT_EQ(scene.static_scene.FindClass(static_cast<std::uint8_t>(c.class_id))->name, "drone");
+  EXPECT_EQ(scene.static_scene->FindClass(static_cast<std::uint8_t>(c.class_id))->name, "drone");
 
   engine::AnnotationRules rules;
   rules.min_area_px = 1;
@@ -137,7 +137,7 @@ TEST(VehiclesSeenTest, FixedCameraSeesTheVehicleItIsListedUnder) {
   const Pixel c = Centre(Frame(*sim, "tower"));
   const double expected_m = 5.0 - kHalfHeight_m;
   EXPECT_NEAR(c.depth_m, expected_m, expected_m * kFloatRelTolerance);
-  EXPECT_EQ(c.instance_id, static_cast<int>(scene.static_scene.vehicle_bodies[1].instance_id));
+  EXPECT_EQ(c.instance_id, static_cast<int>(scene.static_scene->vehicle_bodies[1].instance_id));
 }
 
 // GIVEN a camera 0.5 m under its drone's centre of mass looking up
@@ -154,7 +154,7 @@ TEST(VehiclesSeenTest, OwnBodyOnlyWhenTheMountSeesIt) {
   const Pixel c = Centre(Frame(*FlyToFirstFrame(scene), "up"));
   const double expected_m = 0.5 - kHalfHeight_m;
   EXPECT_NEAR(c.depth_m, expected_m, expected_m * kFloatRelTolerance);
-  EXPECT_EQ(c.instance_id, static_cast<int>(scene.static_scene.vehicle_bodies[0].instance_id));
+  EXPECT_EQ(c.instance_id, static_cast<int>(scene.static_scene->vehicle_bodies[0].instance_id));
 }
 
 // GIVEN the target moved 2 m further north between two frames

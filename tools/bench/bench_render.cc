@@ -131,7 +131,7 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   };
   std::vector<SceneCase> cases;
   auto load = [](const std::string& path, scenes::SceneLoadOptions load_options = {}) {
-    return [path, load_options] { return scenes::LoadScene(path, load_options).static_scene; };
+    return [path, load_options] { return *scenes::LoadScene(path, load_options).static_scene; };
   };
   // City: from the central crossing north along the street at 30 m, 15 degrees down (towers both
   // sides, the street and its cars below). Forest: from the central clearing east at 30 m over the

@@ -49,8 +49,8 @@ nlohmann::json RunWorldBench(const WorldBenchOptions& options) {
   scenes::SceneLoadOptions load_options;
   load_options.overrides = scenes::ParseSceneOverrides(options.overrides);
   auto start = Clock::now();
-  auto scene = std::make_shared<const engine::StaticScene>(
-      scenes::LoadScene(options.scene, load_options).static_scene);
+  const std::shared_ptr<const engine::StaticScene> scene =
+      scenes::LoadScene(options.scene, load_options).static_scene;
   out["load_s"] = SecondsSince(start);
   out["resident_mb_after_load"] = ResidentMegabytes();
   out["objects"] = scene->objects.size();

@@ -151,7 +151,7 @@ int RunStats(const SceneOptions& options) {
   out["seed"] = loaded.scene.seed;
   out["overrides"] = scenes::SceneOverrideTexts(loaded.scene.overrides);
   out["objects"] = stats.objects;
-  out["instances"] = stats.objects + loaded.scene.static_scene.vehicle_bodies.size();
+  out["instances"] = stats.objects + loaded.scene.static_scene->vehicle_bodies.size();
   out["models"] = stats.models;
   out["meshes"] = stats.meshes;
   out["materials"] = stats.materials;

@@ -12,7 +12,7 @@ namespace airis::tools {
 TerrainExport ExportTerrain(const SceneSource& source, double pixel_m, const std::string& date,
                             const std::string& out) {
   const scenes::Scene scene = LoadSceneSource(source);
-  const engine::Heightfield* field = scene.static_scene.terrain.heightfield.get();
+  const engine::Heightfield* field = scene.static_scene->terrain.heightfield.get();
   if (field == nullptr) {
     throw engine::ConfigError({scene.path, 0, 0}, "terrain",
                               "the scene has no `terrain` block to export");

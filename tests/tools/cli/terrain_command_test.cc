@@ -44,8 +44,8 @@ TEST(TerrainCommandTest, ExportWritesADemThatASceneReadsBack) {
       std::string(kOrigin) + "terrain: {dem: " + tif +
           ", heights: ellipsoid, extent_ne_m: [300, 300], resolution_m: 10}\n",
       "mem.yaml");
-  const engine::Heightfield& a = *original.static_scene.terrain.heightfield;
-  const engine::Heightfield& b = *back.static_scene.terrain.heightfield;
+  const engine::Heightfield& a = *original.static_scene->terrain.heightfield;
+  const engine::Heightfield& b = *back.static_scene->terrain.heightfield;
   for (int r2 = 0; r2 < b.rows(); ++r2) {
     for (int c = 0; c < b.cols(); ++c) {
       const double n = b.origin_ne_m().x() + r2 * 10.0, e = b.origin_ne_m().y() + c * 10.0;

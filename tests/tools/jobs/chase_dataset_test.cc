@@ -40,7 +40,7 @@ std::string FrameFile(const char* kind, std::int64_t index) {
 
 // The radius of the sphere about the centre of mass that holds vehicle `name`'s body (m).
 double BodyRadius_m(const scenes::Scene& scene, const std::string& name) {
-  const engine::StaticScene& s = scene.static_scene;
+  const engine::StaticScene& s = *scene.static_scene;
   const auto body = std::find_if(s.vehicle_bodies.begin(), s.vehicle_bodies.end(),
                                  [&](const engine::VehicleBody& b) { return b.name == name; });
   EXPECT_NE(body, s.vehicle_bodies.end()) << name;
