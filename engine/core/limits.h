@@ -13,11 +13,12 @@ namespace airis::engine {
 /// has an instance id, and instance images store ids in 24 bits (RGB, instance_image_format.h).
 inline constexpr std::uint32_t kMaxInstances = 16'777'215;
 /// The least memory one placed object takes once the world is built (its record, collider and
-/// ray-casting instance): 1.25 kB a box measured (`airis scene check` of 200,000 boxes placed by
-/// `repeat`: 313 MB peak against 64 MB for 1,000; 2026-12-06), 2.35 kB an object of the 10 km city
-/// (docs/performance.md). A scene whose objects would need more than the machine's memory at this
-/// rate is refused before they are placed (docs/limits.md).
-inline constexpr std::uint64_t kMinBuiltObjectBytes = 1'200;
+/// ray-casting instance), below the least measured (`airis scene check`, peak, 2026-12-07): a box
+/// placed by `repeat` 1.02 kB (200,000 boxes: 262 MB against 64 MB for 1,000), a generated bush
+/// 1.06 kB, a tree 1.49 kB, an object of the 10 km city 1.8 kB (docs/limits.md). A scene whose
+/// objects would need more than the machine's memory at this rate is refused before they are
+/// placed.
+inline constexpr std::uint64_t kMinBuiltObjectBytes = 900;
 /// Objects of a scene whose cameras write 16-bit grey instance images (`instance_format: gray16`).
 inline constexpr std::uint32_t kMaxGray16Instances = 65'535;
 /// Largest scene, mission or campaign YAML file (bytes).

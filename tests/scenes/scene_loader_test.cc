@@ -420,7 +420,7 @@ std::string LoadErrorWithMemory(const std::string& text, std::uint64_t memory_by
   return "";
 }
 
-// GIVEN objects that may take 12 MiB: 10,485 objects at the least a built object takes (1,200 B)
+// GIVEN objects that may take 12 MiB: 13,981 objects at the least a built object takes (900 B)
 // WHEN a repeat places 20,000 boxes, or a forest grows past that, or a repeat passes the ids too
 // THEN the repeat is refused before anything is placed, naming what is left and why; the forest
 //      stops at the limit and says so; the ids are checked first (the same words on any machine)
@@ -431,15 +431,15 @@ TEST(SceneLoaderTest, ObjectsBeyondTheMemoryLimitAreRefused) {
                                 "    repeat: {count: 100, step_ned_m: [2, 0, 0], rows: 200, "
                                 "row_step_ned_m: [0, 2, 0]}\n",
                                 limit),
-            "mem.yaml:3:5: objects[0].repeat: places 20000 objects where 10484 more fit in memory "
-            "(the memory limit of 12 MiB holds 10485 objects and vehicles of at least 1200 bytes "
+            "mem.yaml:3:5: objects[0].repeat: places 20000 objects where 13980 more fit in memory "
+            "(the memory limit of 12 MiB holds 13981 objects and vehicles of at least 900 bytes "
             "each once built; docs/limits.md)");
   EXPECT_EQ(
       LoadErrorWithMemory("generators:\n"
                           "  - forest: {area: {size_ne_m: [600, 600]}, density_per_ha: 400}\n",
                           limit),
-      "mem.yaml:2:5: generators[0].forest: the scene exceeds the 10485 objects that the "
-      "memory limit of 12 MiB holds (at least 1200 bytes each once built; docs/limits.md)");
+      "mem.yaml:2:5: generators[0].forest: the scene exceeds the 13981 objects that the "
+      "memory limit of 12 MiB holds (at least 900 bytes each once built; docs/limits.md)");
   EXPECT_NE(LoadErrorWithMemory("objects:\n"
                                 "  - primitive: box\n"
                                 "    repeat: {count: 65535, step_ned_m: [1, 0, 0], rows: 257, "
