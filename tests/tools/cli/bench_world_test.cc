@@ -39,6 +39,12 @@ TEST(BenchWorldTest, MeasuresTheTickAndTheLidarAmongTheScenesObjects) {
   EXPECT_GT(r["lidar_hit_fraction"].get<double>(), 0.0);
   EXPECT_LT(r["lidar_hit_fraction"].get<double>(), 1.0);
   EXPECT_GT(r["lidar_rays_per_s"].get<double>(), 0.0);
+  // The resident memory after each stage, read from /proc: at least a process's worth.
+  for (const char* key : {"resident_mb_after_load", "resident_mb_after_collision_world",
+                          "resident_mb_after_ray_caster"}) {
+    EXPECT_GT(r[key].get<double>(), 1.0) << key;
+    EXPECT_LT(r[key].get<double>(), 1e6) << key;
+  }
   // AND --set reaches the scene
   options.overrides = {"objects[0].repeat.rows=5"};
   EXPECT_EQ(RunWorldBench(options)["objects"].get<int>(), 101);
