@@ -48,14 +48,12 @@ struct ShadowConfig {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("enabled", enabled,
-            "the sun casts shadows (RGB only; off by default: they cost about half of "
-            "llvmpipe's frame rate)");
+    v.Field("enabled", enabled, "the sun casts shadows (RGB only; docs/rendering.md, \"Shadows\")");
     v.Field("distance_m", distance_m,
             "shadows are drawn out to this distance from the camera (m); farther surfaces are lit");
     v.Field("map_size_px", map_size_px,
-            "side of the shadow map (texels, 64 to 8192): its texel is 2.4 x distance_m / "
-            "map_size_px wide for a 90 degree camera");
+            "side of the shadow map (texels, 64 to 8192): its texel is 2.13 x distance_m / "
+            "map_size_px wide");
   }
   void Validate() const;
 };

@@ -291,13 +291,15 @@ void CameraRenderer::DrawShadow(const GpuScene& scene, const Eigen::Isometry3d& 
   last_shadow_triangles_ = 0;
   // Under an overcast sky there is no direct sun to cast them.
   if (!outputs_.rgb || !light.shadows.enabled || light.sky == SkyModel::kOvercast) return;
-  shadow_ = FitShadowFrame(T_WC, render_intrinsics_, light.sun_direction_W,
-                           light.shadows.distance_m, light.shadows.map_size_px);
-  if (!shadow_) return;
+  const std::optional<ShadowPlacement> placement =
+      PlaceShadowMap(T_WC.translation(), light.sun_direction_W, light.shadows.distance_m,
+                     light.shadows.map_size_px);
+  if (!placement) return;
   if (!sun_shadow_ || sun_shadow_->map_size_px() != light.shadows.map_size_px) {
     sun_shadow_ = std::make_unique<SunShadow>(light.shadows.map_size_px);
   }
-  sun_shadow_->Render(scene, T_WC, *shadow_, bodies, detail);
+  sun_shadow_->Render(scene, *placement, bodies, detail);
+  shadow_ = ShadowFrame{placement->CalcClipFromC(T_WC), placement->texel_m};
   last_shadow_triangles_ = sun_shadow_->last_triangles();
 }
 

@@ -87,8 +87,12 @@ class CameraRenderer {
   /// Draw calls and triangles submitted by the last frame (after culling).
   std::size_t last_draw_calls() const { return last_draw_calls_; }
   std::size_t last_triangles() const { return last_triangles_; }
-  /// Triangles the last frame drew into the sun's shadow map (0 without shadows).
+  /// Triangles the last frame drew into the sun's shadow map (0 without shadows): the bodies', and
+  /// the static casters' in a frame that drew them again (SunShadow keeps their map).
   std::size_t last_shadow_triangles() const { return last_shadow_triangles_; }
+  /// Whether the last frame drew the static casters into the sun's map (false without shadows, or
+  /// when it kept the map of an earlier frame).
+  bool last_shadow_map_redrawn() const { return shadow_ && sun_shadow_->last_drew_static(); }
 
  private:
   static constexpr int kTargets = 6;  // attachment index = fragment output location in the shaders

@@ -1,6 +1,7 @@
 #include "engine/render/gpu_scene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -77,6 +78,8 @@ Eigen::Vector4d CalcBoundingSphere(const Eigen::AlignedBox3f& box, const Eigen::
 }  // namespace
 
 GpuScene::GpuScene(const StaticScene& scene) : lighting_(scene.lighting) {
+  static std::atomic<std::uint64_t> made{0};
+  id_ = ++made;
   meshes_.reserve(scene.meshes.size());
   for (const TriangleMesh& m : scene.meshes) {
     std::vector<Vertex> vertices(m.positions.size());
@@ -354,13 +357,20 @@ GpuInstance MakeInstance(const Eigen::Matrix4d& T_CP, std::uint32_t class_id,
 
 void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
                               const std::vector<Eigen::Vector4d>& planes_C, const BodyPoses& bodies,
-                              VisibleSet& out, const DetailLimit& detail,
-                              bool shadow_casters) const {
+                              VisibleSet& out, const DetailLimit& detail, Collect what) const {
   out.instances.clear();
   out.draws.clear();
   out.triangles = 0;
+  out.bodies_bounds_C.setEmpty();
   const Eigen::Isometry3d T_CW = T_WC.inverse();
-  // Static objects: clusters first, then the objects of a cluster that crosses the view's edge.
+  if (what != Collect::kBodies) CollectStatic(T_CW, planes_C, out, detail, what);
+  CollectBodies(T_CW, planes_C, bodies, out);
+}
+
+void GpuScene::CollectStatic(const Eigen::Isometry3d& T_CW,
+                             const std::vector<Eigen::Vector4d>& planes_C, VisibleSet& out,
+                             const DetailLimit& detail, Collect what) const {
+  // Clusters first, then the objects of a cluster that crosses the view's edge.
   std::vector<std::vector<Entry>> entries(batches_.size());
   // Pixels per metre of error at 1 m distance, per pixel of tolerance (0: levels off).
   const double pixels_per_m =
@@ -381,7 +391,7 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
       const Shape& shape = shapes_[item.shape];
       const Look* look = &looks_[shape.first_look];
       if (shape.look_count > 1 && pixels_per_m > 0.0) {
-        const double distance_m = centre_C.norm() - item.sphere_W.w();
+        const double distance_m = centre_C.norm() - item.sphere_W.w() - detail.eye_slack_m;
         for (std::uint32_t l = shape.look_count - 1; l > 0; --l) {
           const Look& coarser = looks_[shape.first_look + l];
           if (pixels_per_m * item.scale * coarser.error_m <= distance_m) {
@@ -392,7 +402,7 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
       }
       for (std::uint32_t p = look->first; p < look->first + look->count; ++p) {
         const std::uint32_t b = shape_parts_[p].batch;
-        if (shadow_casters && !meshes_[batches_[b].mesh].casts_shadow) continue;
+        if (what == Collect::kStaticCasters && !meshes_[batches_[b].mesh].casts_shadow) continue;
         entries[b].push_back({centre_C.z(), i, p});
       }
     }
@@ -414,9 +424,12 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
     out.draws.push_back({b, first, count});
     out.triangles += static_cast<std::size_t>(count) * meshes_[batches_[b].mesh].index_count / 3;
   }
+}
 
-  // Vehicle bodies: each part culled on its own, the camera's own body and bodies without a pose
-  // left out.
+void GpuScene::CollectBodies(const Eigen::Isometry3d& T_CW,
+                             const std::vector<Eigen::Vector4d>& planes_C, const BodyPoses& bodies,
+                             VisibleSet& out) const {
+  // Each part culled on its own, the camera's own body and bodies without a pose left out.
   const std::size_t posed = std::min(bodies.T_WB.size(), body_count_);
   std::vector<std::pair<double, std::uint32_t>> order;
   for (std::uint32_t b = 0; b < batches_.size(); ++b) {
@@ -427,8 +440,11 @@ void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
       const std::uint32_t k = batch.body[i];
       if (k >= posed || static_cast<int>(k) == bodies.hidden) continue;
       const Eigen::Vector3d centre_C = T_CW * (bodies.T_WB[k] * batch.sphere_F[i].head<3>());
-      if (Classify(centre_C, batch.sphere_F[i].w(), planes_C) == Side::kOutside) continue;
+      const double radius = batch.sphere_F[i].w();
+      if (Classify(centre_C, radius, planes_C) == Side::kOutside) continue;
       order.emplace_back(centre_C.z(), i);
+      out.bodies_bounds_C.extend(centre_C - Eigen::Vector3d::Constant(radius));
+      out.bodies_bounds_C.extend(centre_C + Eigen::Vector3d::Constant(radius));
     }
     if (order.empty()) continue;
     std::sort(order.begin(), order.end());

@@ -51,15 +51,26 @@ struct VisibleSet {
   std::vector<GpuInstance> instances;
   std::vector<Draw> draws;
   std::size_t triangles = 0;  ///< submitted this frame
+  /// Bounds of the vehicle bodies' parts collected (their bounding spheres), in the frame the
+  /// collection was made for; empty without bodies.
+  Eigen::AlignedBox3d bodies_bounds_C;
 };
+
+/// What a collection gathers: a camera's view (static objects and vehicle bodies), or the shadow
+/// casters among the static objects (flat planes, such as the ground, shade nothing else and are
+/// left out), or the vehicle bodies alone (all of them cast).
+enum class Collect { kView, kStaticCasters, kBodies };
 
 /// How far the parts a frame draws may be from the scene's own surfaces: a model's coarser looks
 /// (Model::levels) are drawn while their error projects to at most `tolerance_px` pixels at the
 /// object's nearest distance from the camera (focal length `focal_px`). focal_px or tolerance_px
-/// 0 draws every object's own parts.
+/// 0 draws every object's own parts. `eye_slack_m`: the camera may stand this far from the origin
+/// of the frame the collection is made for (a map drawn once for every camera near it), so each
+/// object's distance is taken that much shorter.
 struct DetailLimit {
   double focal_px = 0.0;
   double tolerance_px = 0.5;
+  double eye_slack_m = 0.0;
 };
 
 /// The static scene on the GPU: every mesh uploaded once (vertex array + index buffer), materials
@@ -102,13 +113,12 @@ class GpuScene {
 
   /// Visible parts for a camera at T_WC whose view is bounded by `planes_C` (inward unit normals n
   /// and offsets d in the camera frame: a point p is inside when n.dot(p) + d >= 0), with the
-  /// vehicle bodies at `bodies`, static objects at the looks `detail` allows. Sorted front to back
-  /// within each batch (cheap early depth rejection); batches of large parts after the other static
-  /// ones, body batches last. `shadow_casters`: only what can shade something else (flat planes,
-  /// such as the ground, are left out).
+  /// vehicle bodies at `bodies`, static objects at the looks `detail` allows; `what` says which of
+  /// them. Sorted front to back within each batch (cheap early depth rejection); batches of large
+  /// parts after the other static ones, body batches last.
   void CollectVisible(const Eigen::Isometry3d& T_WC, const std::vector<Eigen::Vector4d>& planes_C,
                       const BodyPoses& bodies, VisibleSet& out, const DetailLimit& detail = {},
-                      bool shadow_casters = false) const;
+                      Collect what = Collect::kView) const;
 
   /// Where the program in use takes which of a material's maps it has.
   struct MaterialUniforms {
@@ -132,8 +142,14 @@ class GpuScene {
   std::size_t part_count() const { return part_count_; }
   /// Number of vehicle bodies (StaticScene::vehicle_bodies).
   std::size_t body_count() const { return body_count_; }
+  /// Different for every GpuScene made in this process (what a map drawn from a scene is kept for).
+  std::uint64_t id() const { return id_; }
 
  private:
+  void CollectStatic(const Eigen::Isometry3d& T_CW, const std::vector<Eigen::Vector4d>& planes_C,
+                     VisibleSet& out, const DetailLimit& detail, Collect what) const;
+  void CollectBodies(const Eigen::Isometry3d& T_CW, const std::vector<Eigen::Vector4d>& planes_C,
+                     const BodyPoses& bodies, VisibleSet& out) const;
   struct Mesh {
     GLuint vao = 0;
     GLuint vertex_buffer = 0;
@@ -209,6 +225,7 @@ class GpuScene {
   SceneLighting lighting_;
   std::size_t part_count_ = 0;
   std::size_t body_count_ = 0;
+  std::uint64_t id_ = 0;
 };
 
 }  // namespace airis::engine

@@ -37,20 +37,23 @@ const GpuScene& Forest() {
   return scene;
 }
 
-// A drone's straight flight at constant altitude; frame k of 200, then repeating.
+// A drone's straight flight at constant altitude, back and forth over its length, `step_m` between
+// frames.
 struct Flight {
   double yaw_deg;
   double altitude_m;
   double pitch_deg;
   double length_m;
+  double step_m;
 };
 // City: north along the street from the central crossing; forest: east over the crowns (as
 // tools/bench/bench_render).
-constexpr Flight kCityFlight{0.0, 30.0, -15.0, 300.0};
-constexpr Flight kForestFlight{90.0, 30.0, -20.0, 150.0};
+constexpr Flight kCityFlight{0.0, 30.0, -15.0, 300.0, 1.5};
+constexpr Flight kForestFlight{90.0, 30.0, -20.0, 150.0, 0.75};
 
 Eigen::Isometry3d DronePose(int k, const Flight& f) {
-  const double s = f.length_m * static_cast<double>(k % 200) / 200.0;
+  const double flown = std::fmod(f.step_m * static_cast<double>(k), 2.0 * f.length_m);
+  const double s = flown <= f.length_m ? flown : 2.0 * f.length_m - flown;
   const double yaw_rad = f.yaw_deg * M_PI / 180.0;
   const Eigen::Matrix3d R_WS =
       (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
@@ -62,7 +65,9 @@ Eigen::Isometry3d DronePose(int k, const Flight& f) {
   return T_WC;
 }
 
-void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& flight) {
+// `shadows`: the sun casts them (as the scene's lighting with shadows enabled).
+void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& flight,
+               bool shadows = false) {
   RenderOutputs outputs;
   outputs.rgb = outputs.depth_planar = outputs.segmentation = true;
   CameraRenderer renderer(
@@ -70,6 +75,12 @@ void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& fli
       CameraIntrinsics::FromHorizontalFov(static_cast<int>(state.range(0)),
                                           static_cast<int>(state.range(1)), 90.0, 0.1, 2000.0),
       outputs);
+  if (shadows) {
+    SceneLighting light = scene.lighting();
+    light.shadows.enabled = true;
+    renderer.set_lighting(light);
+  }
+  int redraws = 0;
   CameraFrame frame;
   std::vector<Eigen::Isometry3d> T_WB;
   // The scene's vehicles fly ahead of the camera in every frame (as airis bench render).
@@ -82,9 +93,14 @@ void RunRender(benchmark::State& state, const GpuScene& scene, const Flight& fli
   int k = 0;
   for (auto _ : state) {
     render(k++);
+    redraws += renderer.last_shadow_map_redrawn() ? 1 : 0;
     benchmark::DoNotOptimize(frame.rgba.pixels.data());
   }
   state.SetItemsProcessed(state.iterations());
+  if (shadows) {
+    state.counters["shadow_map_redraws"] =
+        static_cast<double>(redraws) / static_cast<double>(state.iterations());
+  }
   state.counters["fps"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["triangles"] = static_cast<double>(renderer.last_triangles());
@@ -134,6 +150,34 @@ void BM_RenderForest(benchmark::State& state) {
 BENCHMARK(BM_RenderForest)
     ->Args({640, 480})
     ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// With the sun's shadows, the flight's step between frames in centimetres as the third argument:
+// the built-in flight's, and 30 m (the shadow map of the static casters drawn again every frame,
+// its cell being 26.7 m at the default 200 m and 2048 texels).
+void RunRenderShadows(benchmark::State& state, const char* scene, Flight flight) {
+  flight.step_m = 0.01 * static_cast<double>(state.range(2));
+  RunRender(state, SceneFile(scene), flight, true);
+}
+
+void BM_RenderCityShadows(benchmark::State& state) {
+  RunRenderShadows(state, "city.yaml", kCityFlight);
+}
+BENCHMARK(BM_RenderCityShadows)
+    ->Args({640, 480, 150})
+    ->Args({640, 480, 3000})
+    ->Args({1280, 720, 150})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_RenderForestShadows(benchmark::State& state) {
+  RunRenderShadows(state, "forest.yaml", kForestFlight);
+}
+BENCHMARK(BM_RenderForestShadows)
+    ->Args({640, 480, 75})
+    ->Args({640, 480, 3000})
+    ->Args({1280, 720, 75})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 #endif

@@ -19,128 +19,138 @@ Eigen::Vector3d SunRays_W(double azimuth_rad, double elevation_rad) {
                          -std::sin(azimuth_rad) * std::cos(elevation_rad), std::sin(elevation_rad));
 }
 
-// The map texel coordinates of world point p_W for a frame fitted at T_WC.
-Eigen::Vector2d TexelOf(const ShadowFrame& frame, const Eigen::Isometry3d& T_WC,
-                        const Eigen::Vector3d& p_W, int map_px) {
-  const Eigen::Vector3d p_C = T_WC.inverse() * p_W;
-  const Eigen::Vector4d s = frame.shadow_from_C * p_C.homogeneous();
-  return (s.head<2>() * 0.5 + Eigen::Vector2d::Constant(0.5)) * map_px;
+// Where world point p_W falls in the map: texel coordinates across it and clip-space depth.
+Eigen::Vector3d MapPointOf(const ShadowPlacement& placement, const Eigen::Vector3d& p_W,
+                           int map_px) {
+  const Eigen::Vector4d s = placement.clip_from_M * (placement.T_WM.inverse() * p_W).homogeneous();
+  return {(0.5 * s.x() + 0.5) * map_px, (0.5 * s.y() + 0.5) * map_px, s.z()};
 }
 
-const CameraIntrinsics kCamera = CameraIntrinsics::FromHorizontalFov(160, 120, 60.0, 0.1, 1000.0);
-
-TEST(FitShadowFrameTest, NoFrameWhenTheSunIsAtOrBelowTheHorizon) {
-  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -50.0}, 0.3, -0.4);
-  EXPECT_FALSE(FitShadowFrame(T_WC, kCamera, SunRays_W(1.0, 0.0), 200.0, 1024));
-  EXPECT_FALSE(FitShadowFrame(T_WC, kCamera, SunRays_W(1.0, -0.2), 200.0, 1024));
-  EXPECT_TRUE(FitShadowFrame(T_WC, kCamera, SunRays_W(1.0, 0.05), 200.0, 1024));
+bool InsidePlanes(const ShadowPlacement& placement, const Eigen::Vector3d& p_W) {
+  const Eigen::Vector3d p_M = placement.T_WM.inverse() * p_W;
+  for (const Eigen::Vector4d& plane : placement.planes_M) {
+    if (plane.head<3>().dot(p_M) + plane.w() < 0.0) return false;
+  }
+  return true;
 }
 
-TEST(FitShadowFrameTest, TheViewUpToTheShadowDistanceLiesInsideTheMap) {
-  const Eigen::Isometry3d T_WC = testing::LookPose({1234.5, -4321.0, -80.0}, 2.1, -0.3);
-  const double distance_m = 150.0;
-  const auto frame = FitShadowFrame(T_WC, kCamera, SunRays_W(0.7, 0.5), distance_m, 2048);
-  ASSERT_TRUE(frame);
+TEST(PlaceShadowMapTest, NoMapWhenTheSunIsAtOrBelowTheHorizon) {
+  const Eigen::Vector3d camera_W(0.0, 0.0, -50.0);
+  EXPECT_FALSE(PlaceShadowMap(camera_W, SunRays_W(1.0, 0.0), 200.0, 1024));
+  EXPECT_FALSE(PlaceShadowMap(camera_W, SunRays_W(1.0, -0.2), 200.0, 1024));
+  EXPECT_TRUE(PlaceShadowMap(camera_W, SunRays_W(1.0, 0.05), 200.0, 1024));
+}
+
+TEST(PlaceShadowMapTest, EveryPointWithinTheShadowDistanceOfTheCameraLiesInsideTheMap) {
+  // Cameras anywhere in their cells (far from the origin, where precision is tested), and points
+  // in every direction up to the shadow distance from them.
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (int i = 0; i < 2000; ++i) {
-    // A point of the view volume between the near plane and the shadow distance.
-    const double z = kCamera.near_m + unit(rng) * (distance_m - kCamera.near_m);
-    const double u = -0.5 + unit(rng) * kCamera.width_px;
-    const double v = -0.5 + unit(rng) * kCamera.height_px;
-    const Eigen::Vector3d p_C((u - kCamera.cx_px) / kCamera.fx_px * z,
-                              (v - kCamera.cy_px) / kCamera.fy_px * z, z);
-    const Eigen::Vector4d s = frame->shadow_from_C * p_C.homogeneous();
-    EXPECT_LE(s.head<3>().cwiseAbs().maxCoeff(), 1.0) << p_C.transpose();
-    for (const Eigen::Vector4d& plane : frame->planes_C) {
-      EXPECT_GE(plane.head<3>().dot(p_C) + plane.w(), 0.0);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double distance_m = 150.0;
+  for (int c = 0; c < 50; ++c) {
+    const Eigen::Vector3d camera_W(12345.5 + 40.0 * unit(rng), -54321.0 + 40.0 * unit(rng),
+                                   -80.0 + 30.0 * unit(rng));
+    const Eigen::Vector3d rays = SunRays_W(3.0 * unit(rng), 0.9 + 0.6 * unit(rng));
+    const auto placement = PlaceShadowMap(camera_W, rays, distance_m, 2048);
+    ASSERT_TRUE(placement);
+    for (int i = 0; i < 200; ++i) {
+      Eigen::Vector3d d(unit(rng), unit(rng), unit(rng));
+      d *= (i % 2 == 0 ? distance_m : distance_m * std::abs(unit(rng))) / d.norm();
+      const Eigen::Vector3d p_W = camera_W + d;
+      const Eigen::Vector3d q = MapPointOf(*placement, p_W, 2048);
+      EXPECT_GE(q.x(), 0.0);
+      EXPECT_LE(q.x(), 2048.0);
+      EXPECT_GE(q.y(), 0.0);
+      EXPECT_LE(q.y(), 2048.0);
+      EXPECT_LE(std::abs(q.z()), 1.0);
+      EXPECT_TRUE(InsidePlanes(*placement, p_W)) << p_W.transpose();
     }
+    // AND the map reaches at most a tenth beyond the distance (its texels are not wasted)
+    EXPECT_LE(placement->radius_m, 1.1 * distance_m);
   }
 }
 
-TEST(FitShadowFrameTest, PlanesBoundExactlyTheMapsVolume) {
-  const Eigen::Isometry3d T_WC = testing::LookPose({10.0, 20.0, -30.0}, -0.8, -0.6);
-  const auto frame = FitShadowFrame(T_WC, kCamera, SunRays_W(2.5, 1.1), 200.0, 1024);
-  ASSERT_TRUE(frame);
-  const Eigen::Matrix4d C_from_shadow = frame->shadow_from_C.inverse();
+TEST(PlaceShadowMapTest, PlanesBoundExactlyTheMapsVolume) {
+  const auto placement =
+      PlaceShadowMap(Eigen::Vector3d(10.0, 20.0, -30.0), SunRays_W(2.5, 1.1), 200.0, 1024);
+  ASSERT_TRUE(placement);
+  const Eigen::Matrix4d M_from_clip = placement->clip_from_M.inverse();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> clip(-1.2, 1.2);
   for (int i = 0; i < 2000; ++i) {
     const Eigen::Vector3d s(clip(rng), clip(rng), clip(rng));
-    const Eigen::Vector3d p_C = (C_from_shadow * s.homogeneous()).head<3>();
-    bool inside_planes = true;
-    for (const Eigen::Vector4d& plane : frame->planes_C) {
-      inside_planes = inside_planes && plane.head<3>().dot(p_C) + plane.w() >= 0.0;
-    }
-    EXPECT_EQ(inside_planes, s.cwiseAbs().maxCoeff() <= 1.0) << s.transpose();
+    const Eigen::Vector3d p_M = (M_from_clip * s.homogeneous()).head<3>();
+    EXPECT_EQ(InsidePlanes(*placement, placement->T_WM * p_M), s.cwiseAbs().maxCoeff() <= 1.0)
+        << s.transpose();
   }
 }
 
-TEST(FitShadowFrameTest, CasterPlanesDropOnlyCastersThatShadeNothingInView) {
-  // GIVEN a camera 30 m up looking north-east and 20 degrees down, the sun in the south-east 40
-  // degrees up, and 3,000 balls 1 to 6 m across anywhere within 400 m
-  const Eigen::Isometry3d T_WC = testing::LookPose({0.0, 0.0, -30.0}, 0.8, -0.35);
-  const Eigen::Vector3d rays_W = SunRays_W(2.3, 0.7);
-  const double distance_m = 150.0;
-  const auto frame = FitShadowFrame(T_WC, kCamera, rays_W, distance_m, 1024);
-  ASSERT_TRUE(frame);
-  const Eigen::Vector3d rays_C = T_WC.linear().transpose() * rays_W;
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Eigen::Vector3d> seen_C;  // points the camera sees within the shadow distance
-  for (int i = 0; i < 400; ++i) {
-    const double z = kCamera.near_m + unit(rng) * (distance_m - kCamera.near_m);
-    const double u = -0.5 + unit(rng) * kCamera.width_px;
-    const double v = -0.5 + unit(rng) * kCamera.height_px;
-    seen_C.emplace_back((u - kCamera.cx_px) / kCamera.fx_px * z,
-                        (v - kCamera.cy_px) / kCamera.fy_px * z, z);
-  }
-  const auto outside = [](const std::vector<Eigen::Vector4d>& planes, const Eigen::Vector3d& c,
-                          double r) {
-    for (const Eigen::Vector4d& plane : planes) {
-      if (plane.head<3>().dot(c) + plane.w() < -r) return true;
-    }
-    return false;
-  };
-  int in_map = 0, dropped = 0;
-  for (int i = 0; i < 3000; ++i) {
-    const Eigen::Vector3d c_W(-400.0 + 800.0 * unit(rng), -400.0 + 800.0 * unit(rng),
-                              -100.0 * unit(rng));
-    const double r = 0.5 + 2.5 * unit(rng);
-    const Eigen::Vector3d c_C = T_WC.inverse() * c_W;
-    if (outside(frame->planes_C, c_C, r)) continue;  // outside the map: never drawn into it
-    ++in_map;
-    if (!outside(frame->caster_planes_C, c_C, r)) continue;
-    ++dropped;
-    // THEN a ball the caster planes drop blocks the sun from no point in view: the ray from the
-    // point toward the sun passes it by
-    for (const Eigen::Vector3d& p : seen_C) {
-      const double s = std::max(0.0, (p - c_C).dot(rays_C));  // back along the rays, toward the sun
-      ASSERT_GT((p - s * rays_C - c_C).norm(), r) << "ball " << c_W.transpose() << " r " << r;
-    }
-  }
-  // AND many balls inside the map are dropped
-  EXPECT_GT(dropped, in_map / 5) << in_map;
-}
-
-TEST(FitShadowFrameTest, TexelsStayOnOneWorldGridAsTheCameraMovesAndTurns) {
+TEST(PlaceShadowMapTest, CamerasOfOneCellShareTheMapAndTexelsStayOnOneWorldGrid) {
   const Eigen::Vector3d rays = SunRays_W(0.4, 0.7);
   const int map_px = 2048;
-  const Eigen::Isometry3d a = testing::LookPose({100.0, 50.0, -60.0}, 0.2, -0.5);
-  const Eigen::Isometry3d b = testing::LookPose({103.37, 48.11, -61.9}, 1.3, -0.7);
-  const auto fa = FitShadowFrame(a, kCamera, rays, 200.0, map_px);
-  const auto fb = FitShadowFrame(b, kCamera, rays, 200.0, map_px);
-  ASSERT_TRUE(fa && fb);
-  // The footprint does not change as the camera turns: the sphere is fixed in the camera frame.
-  EXPECT_NEAR(fa->texel_m, fb->texel_m, 1e-12);
-  EXPECT_NEAR(fa->texel_m, 2.0 * fa->radius_m / map_px, 1e-12);
-  // A world point falls at the same place within a texel in both maps: the grids coincide.
+  const auto a = PlaceShadowMap({100.0, 50.0, -60.0}, rays, 200.0, map_px);
+  ASSERT_TRUE(a);
+  // A camera a little away in the same cell gets the very same map, whichever way it looks.
+  const Eigen::Vector3d a_cell_W = a->T_WM.translation();
+  const auto same =
+      PlaceShadowMap(a_cell_W + a->T_WM.linear() * Eigen::Vector3d(0.49, -0.49, 0.3) * a->cell_m,
+                     rays, 200.0, map_px);
+  ASSERT_TRUE(same);
+  EXPECT_EQ(same->cell, a->cell);
+  EXPECT_TRUE(same->T_WM.matrix() == a->T_WM.matrix());
+  EXPECT_TRUE(same->clip_from_M == a->clip_from_M);
+  // A camera of another cell: a world point falls at the same place within a texel in both maps.
+  const auto b = PlaceShadowMap({163.37, 18.11, -71.9}, rays, 200.0, map_px);
+  ASSERT_TRUE(b);
+  EXPECT_NE(b->cell, a->cell);
+  EXPECT_NEAR(a->texel_m, 2.0 * a->radius_m / map_px, 1e-12);
+  EXPECT_NEAR(a->cell_m, a->texel_m * map_px / kShadowCellFraction, 1e-9);
   for (const Eigen::Vector3d& p_W :
        {Eigen::Vector3d(110.0, 60.0, 0.0), Eigen::Vector3d(95.5, 41.25, -12.0)}) {
-    const Eigen::Vector2d d = TexelOf(*fa, a, p_W, map_px) - TexelOf(*fb, b, p_W, map_px);
+    const Eigen::Vector3d d = MapPointOf(*a, p_W, map_px) - MapPointOf(*b, p_W, map_px);
     EXPECT_NEAR(d.x(), std::round(d.x()), 1e-6);
     EXPECT_NEAR(d.y(), std::round(d.y()), 1e-6);
   }
+}
+
+// A map kept from earlier frames must give each frame what a map drawn for it alone gives: a
+// renderer flies over boxes with a box body moving beside it, crossing the map's cells, and every
+// colour image equals that of a fresh renderer drawing the frame alone.
+TEST(SunShadowRenderTest, AFramesShadowsAreTheSameWhateverWasDrawnBefore) {
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 600.0, 1);
+  for (int i = 0; i < 30; ++i) {
+    testing::AddBox(scene, Eigen::Vector3d(-60.0 + 9.0 * i, 12.0 * std::sin(i), -4.0),
+                    Eigen::Vector3d(3.0, 3.0, 8.0), 2, 10 + i);
+  }
+  testing::AddBoxBody(scene, Eigen::Vector3d(2.0, 2.0, 1.0), 3, 100);
+  scene.lighting.sun_direction_W = SunRays_W(2.2, 0.6);
+  scene.lighting.shadows.enabled = true;
+  scene.lighting.shadows.distance_m = 60.0;
+  scene.lighting.shadows.map_size_px = 512;
+  EglContext& context = testing::SharedContext();
+  const GpuScene gpu(scene);
+  const CameraIntrinsics camera = CameraIntrinsics::FromHorizontalFov(96, 64, 80.0, 0.1, 500.0);
+  const RenderOutputs outputs;  // colour
+  CameraRenderer kept(context, camera, outputs);
+  int reused = 0;
+  int redrawn = 0;
+  for (int k = 0; k < 24; ++k) {
+    const Eigen::Isometry3d T_WC = testing::LookPose({-40.0 + 3.0 * k, 2.0, -20.0}, 0.1 * k, -0.5);
+    std::vector<Eigen::Isometry3d> T_WB{Eigen::Isometry3d::Identity()};
+    T_WB[0].translation() << -35.0 + 3.0 * k, 6.0 + 0.5 * k, -3.0;
+    const BodyPoses bodies{T_WB, -1};
+    CameraFrame from_kept;
+    kept.Render(gpu, T_WC, 0, from_kept, bodies);
+    // Only the body's 12 triangles when the static map was kept.
+    (kept.last_shadow_triangles() > 12 ? redrawn : reused)++;
+    CameraRenderer fresh(context, camera, outputs);
+    CameraFrame alone;
+    fresh.Render(gpu, T_WC, 0, alone, bodies);
+    ASSERT_EQ(from_kept.rgba.pixels, alone.rgba.pixels) << "frame " << k;
+  }
+  EXPECT_GT(reused, 6);
+  EXPECT_GT(redrawn, 2);
 }
 
 // A 4 x 4 x 10 m tower on the ground, the sun in the north at 45 degrees: its shadow runs 10 m

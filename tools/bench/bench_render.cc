@@ -22,7 +22,8 @@ using engine::CameraIntrinsics;
 using engine::CameraRenderer;
 using engine::GpuScene;
 
-// A drone's straight flight: start (north, east), heading, altitude, camera pitch, length.
+// A drone's straight flight, back and forth: start (north, east), heading, altitude, camera
+// pitch, length, the distance flown between frames.
 struct Flight {
   double north_m = 0.0;
   double east_m = 0.0;
@@ -30,11 +31,13 @@ struct Flight {
   double altitude_m = 30.0;
   double pitch_deg = -15.0;
   double length_m = 200.0;
+  double step_m = 1.0;
 };
 
-// Pose of frame k (of 200 along the flight, then repeating).
+// Pose of frame k.
 Eigen::Isometry3d DronePose(int k, const Flight& f) {
-  const double s = f.length_m * static_cast<double>(k % 200) / 200.0;
+  const double flown = std::fmod(f.step_m * static_cast<double>(k), 2.0 * f.length_m);
+  const double s = flown <= f.length_m ? flown : 2.0 * f.length_m - flown;
   const double yaw_rad = f.yaw_deg * M_PI / 180.0;
   const Eigen::Matrix3d R_WS =
       (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
@@ -52,6 +55,7 @@ struct CaseResult {
   double pipelined_fps = 0.0;
   double triangles = 0.0;
   double shadow_triangles = 0.0;  ///< drawn into the sun's shadow map
+  double shadow_redraws = 0.0;    ///< share of frames that drew the static casters' map again
   double draw_calls = 0.0;
 };
 
@@ -79,12 +83,14 @@ CaseResult RunCase(const engine::EglContext& context, const GpuScene& scene, con
     render(k);
     r.triangles += static_cast<double>(renderer.last_triangles());
     r.shadow_triangles += static_cast<double>(renderer.last_shadow_triangles());
+    r.shadow_redraws += renderer.last_shadow_map_redrawn() ? 1.0 : 0.0;
     r.draw_calls += static_cast<double>(renderer.last_draw_calls());
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.fps = frames / seconds;
   r.triangles /= frames;
   r.shadow_triangles /= frames;
+  r.shadow_redraws /= frames;
   r.draw_calls /= frames;
   // Pipelined: frame k+1 renders while frame k's readback completes.
   const auto start_pipelined = Clock::now();
@@ -136,8 +142,8 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
   // City: from the central crossing north along the street at 30 m, 15 degrees down (towers both
   // sides, the street and its cars below). Forest: from the central clearing east at 30 m over the
   // crowns.
-  const Flight city_flight{0.0, 0.0, 0.0, 30.0, -15.0, 300.0};
-  const Flight forest_flight{0.0, 0.0, 90.0, 30.0, -20.0, 150.0};
+  const Flight city_flight{0.0, 0.0, 0.0, 30.0, -15.0, 300.0, 1.5};
+  const Flight forest_flight{0.0, 0.0, 90.0, 30.0, -20.0, 150.0, 0.75};
   if (!options.scene.empty()) {
     scenes::SceneLoadOptions load_options;
     load_options.overrides = scenes::ParseSceneOverrides(options.overrides);
@@ -145,7 +151,7 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
     // start (added once the scene is built).
     cases.push_back({"scene",
                      load(options.scene, load_options),
-                     {0.0, 0.0, 0.0, options.altitude_m, -15.0, 300.0},
+                     {0.0, 0.0, 0.0, options.altitude_m, -15.0, 300.0, options.step_m},
                      options.scene});
   } else if (!options.city_scene.empty()) {
     cases.push_back({"city", load(options.city_scene), city_flight, options.city_scene});
@@ -180,6 +186,7 @@ nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options) {
       out[key + "_pipelined_fps"] = r.pipelined_fps;
       out[key + "_triangles_per_frame"] = r.triangles;
       out[key + "_shadow_triangles_per_frame"] = r.shadow_triangles;
+      out[key + "_shadow_map_redraws_per_frame"] = r.shadow_redraws;
       out[key + "_draw_calls_per_frame"] = r.draw_calls;
     }
   }

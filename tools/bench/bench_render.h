@@ -25,6 +25,10 @@ struct RenderBenchOptions {
   std::string scene;
   std::vector<std::string> overrides;  ///< `--set KEY=VALUE` for `scene`
   double altitude_m = 50.0;
+  /// How far the `scene` flight goes between frames (m; back and forth over 300 m): the sun's
+  /// shadow map of the static
+  /// casters is drawn again when the camera leaves its cell (docs/rendering.md, "Shadows").
+  double step_m = 1.5;
   /// The far plane of the benchmark camera (m).
   double far_m = 2000.0;
   /// The camera's level-of-detail tolerance (pixels; 0 = full detail).
@@ -44,7 +48,9 @@ engine::BodyPoses CalcVehiclesAhead(const Eigen::Isometry3d& T_WC, std::size_t c
 /// m, then every 3 m) in every frame, so their bodies are drawn in each. Returns frames per second
 /// (wall clock) as JSON: city_640x480_fps, city_1280x720_fps, forest_640x480_fps,
 /// forest_1280x720_fps (and synthetic_city_*, synthetic_forest_*), the same with pipelined readback
-/// (*_pipelined_fps), mean triangles and draw calls per frame, the scenes used, the vehicles in
+/// (*_pipelined_fps), mean triangles and draw calls per frame, with shadows the triangles drawn
+/// into the sun's map and the share of frames that drew its static casters again
+/// (*_shadow_map_redraws_per_frame), the scenes used, the vehicles in
 /// view (*_vehicles_in_view), and gl_vendor / gl_renderer / egl_platform. Throws what the EGL
 /// context throws, and ConfigError from the scene loader for a missing or bad scene file.
 nlohmann::json RunRenderBenchmark(const RenderBenchOptions& options = {});

@@ -72,7 +72,7 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
   add_entry(kEntries[1]);  // sensors
 
   struct RenderArgs {
-    std::string scene, altitude = "50", far = "2000", tolerance = "1";
+    std::string scene, altitude = "50", step = "1.5", far = "2000", tolerance = "1";
     std::vector<std::string> overrides;
   };
   auto render_args = std::make_shared<RenderArgs>();
@@ -89,6 +89,11 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
       ->add_option("--altitude-m", render_args->altitude,
                    "height of the --scene flight above the ground or terrain (default 50)")
       ->type_name("M");
+  render
+      ->add_option("--step-m", render_args->step,
+                   "distance the --scene flight goes between frames, back and forth over its 300 m "
+                   "(default 1.5)")
+      ->type_name("M");
   render->add_option("--far-m", render_args->far, "the camera's far plane (default 2000)")
       ->type_name("M");
   render
@@ -102,11 +107,15 @@ void AddBenchCommand(CLI::App& app, int& exit_code) {
     options.scene = render_args->scene;
     options.overrides = render_args->overrides;
     options.altitude_m = ParseFiniteNumber("altitude-m", render_args->altitude);
+    options.step_m = ParseFiniteNumber("step-m", render_args->step);
     options.far_m = ParseFiniteNumber("far-m", render_args->far);
     options.detail_tolerance_px = ParseFiniteNumber("detail-tolerance-px", render_args->tolerance);
     if (options.detail_tolerance_px < 0.0 ||
         options.detail_tolerance_px > engine::kMaxDetailTolerance_px) {
       throw engine::ConfigError({}, "--detail-tolerance-px", "must be between 0 and 100 pixels");
+    }
+    if (options.step_m < 0.0 || options.step_m > 1000.0) {
+      throw engine::ConfigError({}, "--step-m", "must be between 0 and 1000 m");
     }
     if (options.far_m <= 1.0) {
       throw engine::ConfigError({}, "--far-m", "the far plane must be beyond 1 m");
