@@ -31,6 +31,7 @@ void CameraEffectsConfig::Validate() const {
   RequireInRange("read_noise_e", read_noise_e, 0.0, full_well_e);
   RequireInRange("adc_bits", adc_bits, 8, 16);
   RequireInRange("exposure_time_s", exposure_time_s, 1e-6, 1.0);
+  RequireInRange("rolling_shutter_readout_s", rolling_shutter_readout_s, 0.0, 1.0);
 }
 
 std::uint16_t SampleSensorDn(double mean_e, double full_well_e, double read_noise_e, int adc_bits,

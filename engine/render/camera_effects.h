@@ -32,6 +32,7 @@ struct CameraEffectsConfig {
   int adc_bits = 10;
   bool motion_blur = false;
   double exposure_time_s = 1.0 / 125.0;
+  double rolling_shutter_readout_s = 0.0;
 
   template <class V>
   void Visit(V& v) {
@@ -59,12 +60,20 @@ struct CameraEffectsConfig {
     v.Field("exposure_time_s", exposure_time_s,
             "time the shutter is open (s), centred on the frame's time: the length of the motion "
             "blur and of the rain's streaks");
+    v.Field("rolling_shutter_readout_s", rolling_shutter_readout_s,
+            "time the sensor takes to read its rows out, top to bottom (s; 0: a global shutter): "
+            "each row shows the scene at its own readout time, the middle row at the frame's "
+            "(the camera's own motion, the world taken as still; depth and labels stay at the "
+            "frame's time)");
   }
   /// Throws InvalidField naming the field.
   void Validate() const;
-  /// True when some effect of CameraEffects::Apply changes the image (motion blur, which needs
-  /// the depth and the camera's motion, is applied before it: ApplyMotionBlur).
+  /// True when some effect of CameraEffects::Apply changes the image (the rolling shutter and the
+  /// motion blur, which need the depth and the camera's motion, are applied before it:
+  /// ApplyRollingShutter, ApplyMotionBlur).
   bool any() const { return exposure_ev != 0.0 || auto_exposure || vignetting || noise; }
+  /// True when the camera's motion changes the image (motion blur or a rolling shutter).
+  bool motion() const { return motion_blur || rolling_shutter_readout_s > 0.0; }
 };
 
 /// Changes of one frame's effects (a dataset's domain randomization draws them).

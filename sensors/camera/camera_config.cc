@@ -37,7 +37,7 @@ void CameraConfig::Validate() const {
   CalcIntrinsics().Validate();
   WithPrefix("outputs.", [&] { outputs.Validate(); });
   WithPrefix("effects.", [&] { effects.Validate(); });
-  engine::Require(outputs.rgb || !(effects.any() || effects.motion_blur), "effects",
+  engine::Require(outputs.rgb || !(effects.any() || effects.motion()), "effects",
                   "apply to the colour image, and the camera renders none (outputs.rgb is false)");
   WithPrefix("mount.", [&] { mount.Validate(); });
   engine::RequireInRange("detail_tolerance_px", detail_tolerance_px, 0.0,

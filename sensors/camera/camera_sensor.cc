@@ -2,6 +2,7 @@
 
 #include "engine/core/error.h"
 #include "engine/render/motion_blur.h"
+#include "engine/render/rolling_shutter.h"
 #include "engine/world/world.h"
 
 namespace airis::sensors {
@@ -74,7 +75,7 @@ void CameraSensor::Render(const engine::SensorContext& context, engine::CameraFr
   SetFrameWind(context, T_WC, renderer_);
   renderer_.Render(scene_->gpu_scene(), T_WC, context.now_ns, out,
                    CalcBodyPoses(context, stream_, body_poses_W_));
-  ApplyCameraMotionBlur(config_, renderer_.intrinsics(), stream_, context, out);
+  ApplyCameraMotionEffects(config_, renderer_.intrinsics(), stream_, context, out);
   ApplyEffects(effects_, conditions, out);
 }
 
@@ -145,17 +146,24 @@ void SetFrameWind(const engine::SensorContext& context, const Eigen::Isometry3d&
 
 engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config) {
   engine::RenderOutputs outputs = config.outputs;
-  if (config.effects.motion_blur && outputs.rgb) outputs.depth_planar = true;
+  if (config.effects.motion() && outputs.rgb) outputs.depth_planar = true;
   return outputs;
 }
 
-void ApplyCameraMotionBlur(const CameraConfig& config, const engine::CameraIntrinsics& intrinsics,
-                           const engine::ImageStream& stream, const engine::SensorContext& context,
-                           engine::CameraFrame& frame) {
-  if (!config.effects.motion_blur || frame.rgba.empty()) return;
-  engine::ApplyMotionBlur(frame.rgba, frame.depth_planar_m, intrinsics,
-                          engine::CalcImageStreamMotion(stream, context.state),
-                          config.effects.exposure_time_s);
+void ApplyCameraMotionEffects(const CameraConfig& config,
+                              const engine::CameraIntrinsics& intrinsics,
+                              const engine::ImageStream& stream,
+                              const engine::SensorContext& context, engine::CameraFrame& frame) {
+  if (!config.effects.motion() || frame.rgba.empty()) return;
+  const engine::CameraMotion motion = engine::CalcImageStreamMotion(stream, context.state);
+  if (config.effects.rolling_shutter_readout_s > 0.0) {
+    engine::ApplyRollingShutter(frame.rgba, frame.depth_planar_m, intrinsics, motion,
+                                config.effects.rolling_shutter_readout_s);
+  }
+  if (config.effects.motion_blur) {
+    engine::ApplyMotionBlur(frame.rgba, frame.depth_planar_m, intrinsics, motion,
+                            config.effects.exposure_time_s);
+  }
   // Depth not asked for: empty, its room kept for the next frame's (freeing it made the renderer
   // allocate and fault in a whole image every frame).
   if (!config.outputs.depth_planar) frame.depth_planar_m.Resize(0, 0, 1);

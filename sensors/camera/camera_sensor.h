@@ -75,14 +75,15 @@ void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameCondi
 void SetFrameWind(const engine::SensorContext& context, const Eigen::Isometry3d& T_WC,
                   engine::CameraRenderer& renderer);
 /// The outputs the renderer of a camera with `config` makes: the camera's, and planar depth when
-/// its motion blur needs it (ApplyCameraMotionBlur drops it again).
+/// its rolling shutter or motion blur needs it (ApplyCameraMotionEffects drops it again).
 engine::RenderOutputs CalcRendererOutputs(const CameraConfig& config);
-/// With `config`'s motion blur on, blurs `frame`'s colour image by the motion of `stream`'s camera
-/// in `context` (engine::ApplyMotionBlur), then empties the depth the camera did not ask for
-/// (keeping its memory for the next frame).
-void ApplyCameraMotionBlur(const CameraConfig& config, const engine::CameraIntrinsics& intrinsics,
-                           const engine::ImageStream& stream, const engine::SensorContext& context,
-                           engine::CameraFrame& frame);
+/// With `config`'s rolling shutter or motion blur on, changes `frame`'s colour image by the motion
+/// of `stream`'s camera in `context` (engine::ApplyRollingShutter, then engine::ApplyMotionBlur),
+/// then empties the depth the camera did not ask for (keeping its memory for the next frame).
+void ApplyCameraMotionEffects(const CameraConfig& config,
+                              const engine::CameraIntrinsics& intrinsics,
+                              const engine::ImageStream& stream,
+                              const engine::SensorContext& context, engine::CameraFrame& frame);
 /// The GL strings of `scene`'s context.
 engine::RendererInfo DescribeRenderer(const engine::RenderScene& scene);
 

@@ -72,8 +72,8 @@ void StereoCameraSensor::Render(const engine::SensorContext& context, engine::Ca
   renderer_.Submit(scene_->gpu_scene(), T_WR, context.now_ns, bodies);
   renderer_.Collect(left);
   renderer_.Collect(right);
-  ApplyCameraMotionBlur(config_.camera, renderer_.intrinsics(), streams_[0], context, left);
-  ApplyCameraMotionBlur(config_.camera, renderer_.intrinsics(), streams_[1], context, right);
+  ApplyCameraMotionEffects(config_.camera, renderer_.intrinsics(), streams_[0], context, left);
+  ApplyCameraMotionEffects(config_.camera, renderer_.intrinsics(), streams_[1], context, right);
   ApplyEffects(effects_[0], conditions, left);
   ApplyEffects(effects_[1], conditions, right);
 }

@@ -12,6 +12,7 @@
 #include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
 #include "engine/render/motion_blur.h"
+#include "engine/render/rolling_shutter.h"
 #include "tools/bench/bench_render.h"
 #include "tools/bench/synthetic_scenes.h"
 #ifdef AIRIS_BENCH_SCENES_DIR
@@ -235,7 +236,10 @@ BENCHMARK(BM_CameraEffects640x480)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMil
 // Motion blur (docs/rendering.md, "Sensor effects") of a 640x480 frame, everything 20 m ahead, of
 // a camera flying forward at 10 m/s and yawing at range(0) deg/s, 1/125 s exposure: 0 deg/s blurs
 // towards the edges only (up to 3 px), 90 deg/s about 5 px everywhere, 360 deg/s about 18 px.
-void BM_MotionBlur640x480(benchmark::State& state) {
+// A 640x480 frame 20 m deep, the camera flying forward at 10 m/s and turning at state.range(0)
+// deg/s, changed by `apply(frame, depth, intrinsics, motion)` each iteration.
+template <class Apply>
+void RunMotionEffect640x480(benchmark::State& state, Apply apply) {
   const auto k = airis::engine::CameraIntrinsics::FromHorizontalFov(640, 480, 90.0);
   airis::engine::Image<std::uint8_t> source;
   source.Resize(640, 480, 4);
@@ -251,9 +255,23 @@ void BM_MotionBlur640x480(benchmark::State& state) {
     state.PauseTiming();
     frame.pixels = source.pixels;
     state.ResumeTiming();
-    airis::engine::ApplyMotionBlur(frame, depth, k, motion, 1.0 / 125.0);
+    apply(frame, depth, k, motion);
     benchmark::DoNotOptimize(frame.pixels.data());
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_MotionBlur640x480(benchmark::State& state) {
+  RunMotionEffect640x480(state, [](auto& frame, const auto& depth, const auto& k, const auto& m) {
+    airis::engine::ApplyMotionBlur(frame, depth, k, m, 1.0 / 125.0);
+  });
+}
 BENCHMARK(BM_MotionBlur640x480)->Arg(0)->Arg(90)->Arg(360)->Unit(benchmark::kMillisecond);
+
+// A 30 ms readout.
+void BM_RollingShutter640x480(benchmark::State& state) {
+  RunMotionEffect640x480(state, [](auto& frame, const auto& depth, const auto& k, const auto& m) {
+    airis::engine::ApplyRollingShutter(frame, depth, k, m, 0.03);
+  });
+}
+BENCHMARK(BM_RollingShutter640x480)->Arg(0)->Arg(90)->Arg(360)->Unit(benchmark::kMillisecond);

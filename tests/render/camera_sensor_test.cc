@@ -252,6 +252,25 @@ TEST(CameraSensorTest, MotionBlurTouchesColourOnly) {
   EXPECT_EQ(without_depth.depth_planar_m.width, 0);
 }
 
+// A rolling shutter changes the colour image of a turning camera only (its rows shifted by the
+// turn during the readout), and leaves a still one's as it was.
+TEST(CameraSensorTest, RollingShutterTouchesColourOnly) {
+  const engine::CameraFrame plain = RenderAll(EveryOutput());
+  CameraConfig config = EveryOutput();
+  config.effects.rolling_shutter_readout_s = 0.05;
+  EXPECT_EQ(RenderAll(config).rgba.pixels, plain.rgba.pixels);  // still
+  const Eigen::Vector3d yawing(0.0, 0.0, 2.0);  // the top and bottom rows 2.8 px off (fx 55.4 px)
+  const engine::CameraFrame shuttered = RenderAll(config, {}, yawing);
+  EXPECT_NE(shuttered.rgba.pixels, plain.rgba.pixels);
+  EXPECT_EQ(shuttered.depth_planar_m.pixels, plain.depth_planar_m.pixels);
+  EXPECT_EQ(shuttered.instance_id.pixels, plain.instance_id.pixels);
+  EXPECT_EQ(shuttered.class_id.pixels, plain.class_id.pixels);
+  config.outputs.depth_planar = false;  // the shutter's own depth is dropped again
+  const engine::CameraFrame without_depth = RenderAll(config, {}, yawing);
+  EXPECT_EQ(without_depth.rgba.pixels, shuttered.rgba.pixels);
+  EXPECT_TRUE(without_depth.depth_planar_m.empty());
+}
+
 // A frame's conditions replace the scene's sun: the scene's own sun given as a condition renders
 // the same bytes as none, another sun changes the colour and nothing else.
 TEST(CameraSensorTest, ConditionsReplaceTheSun) {
@@ -288,6 +307,17 @@ TEST(CameraConfigTest, EffectsNeedAColourImage) {
   config.effects = {};
   config.effects.motion_blur = true;
   EXPECT_THROW(config.Validate(), engine::InvalidField);
+  config.effects = {};
+  config.effects.rolling_shutter_readout_s = 0.02;
+  EXPECT_THROW(config.Validate(), engine::InvalidField);
+  config.effects = {};
+  config.effects.rolling_shutter_readout_s = -0.01;
+  try {
+    config.Validate();
+    FAIL();
+  } catch (const engine::InvalidField& e) {
+    EXPECT_EQ(e.field(), "effects.rolling_shutter_readout_s");
+  }
   config.effects = {};
   config.effects.full_well_e = 0.0;
   try {

@@ -74,16 +74,16 @@ TEST(DatasetRealismTest, RealismChangesTheColourImagesOnly) {
   // GIVEN the scene plain (gradient sky, no fog, no shadows, no camera effects) and with every
   // realism feature on
   const fs::path plain = RunDataset("realism_off", Scene("", ""), kSteps);
-  const fs::path real =
-      RunDataset("realism_on",
-                 Scene(",\n  lighting: {sky: clear, turbidity: 4, visibility_m: 400, fog_height_m: "
-                       "30, rain_mm_per_h: 20,"
-                       " shadows: {enabled: true}}",
-                       ",\n           effects: {vignetting: true, noise: true, full_well_e: 5000,"
-                       " motion_blur: true, exposure_time_s: 0.02}"),
-                 std::string("randomize: {sun_elevation_deg: [10, 60], sun_azimuth_deg: [0, 360],"
-                             " exposure_ev: [-0.5, 0.5]}\n") +
-                     kSteps);
+  const fs::path real = RunDataset(
+      "realism_on",
+      Scene(",\n  lighting: {sky: clear, turbidity: 4, visibility_m: 400, fog_height_m: "
+            "30, rain_mm_per_h: 20,"
+            " shadows: {enabled: true}}",
+            ",\n           effects: {vignetting: true, noise: true, full_well_e: 5000,"
+            " motion_blur: true, exposure_time_s: 0.02, rolling_shutter_readout_s: 0.03}"),
+      std::string("randomize: {sun_elevation_deg: [10, 60], sun_azimuth_deg: [0, 360],"
+                  " exposure_ev: [-0.5, 0.5]}\n") +
+          kSteps);
   // THEN every frame's depth and labels are the same bytes, and its colour is not
   const engine::CsvText poses = engine::ReadCsvText(real / "cam" / "poses.csv");
   ASSERT_GT(poses.rows.size(), 2u);
