@@ -125,14 +125,4 @@ Scene LoadScene(const std::string& path, const SceneLoadOptions& options = {});
 Scene LoadSceneFromString(const std::string& text, const std::string& path,
                           const SceneLoadOptions& options = {});
 
-/// Sun direction (unit vector along which sunlight travels, world NED; points down when the sun is
-/// up) from azimuth (clockwise from north) and elevation, radians.
-Vec3 SunDirectionFromAngles(double azimuth_rad, double elevation_rad);
-
-/// Sun azimuth and elevation (rad) at local solar time `hours` on `decimal_year` at `latitude_rad`:
-/// declination by Cooper (1969), delta = 23.45 deg sin(2 pi (284 + n) / 365); hour angle 15 deg/h
-/// from noon.
-void SolarAngles(double latitude_rad, double decimal_year, double hours, double* azimuth_rad,
-                 double* elevation_rad);
-
 }  // namespace airis::scenes

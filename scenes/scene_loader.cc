@@ -4,11 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <numbers>
 #include <set>
 
 #include "engine/core/limits.h"
 #include "engine/core/random.h"
+#include "engine/environment/sun.h"
 #include "engine/render/texture_file.h"
 #include "engine/scene/static_scene_builder.h"
 #include "engine/world/image_sensor.h"
@@ -140,14 +140,16 @@ class SceneAssembler {
     const LightingConfig& c = settings.lighting;
     engine::SceneLighting out;
     sun_.time_of_day_h = c.time_of_day_h;
-    sun_.azimuth_rad = DegToRad(c.sun_azimuth_deg.value_or(LightingConfig::kDefaultSunAzimuth_deg));
-    sun_.elevation_rad =
-        DegToRad(c.sun_elevation_deg.value_or(LightingConfig::kDefaultSunElevation_deg));
+    double azimuth_deg = c.sun_azimuth_deg.value_or(LightingConfig::kDefaultSunAzimuth_deg);
+    double elevation_deg = c.sun_elevation_deg.value_or(LightingConfig::kDefaultSunElevation_deg);
+    out.solar_place = {engine::RadToDeg(latitude_rad), settings.environment.date_decimal_year};
     if (c.time_of_day_h) {
-      SolarAngles(latitude_rad, settings.environment.date_decimal_year, *c.time_of_day_h,
-                  &sun_.azimuth_rad, &sun_.elevation_rad);
+      engine::CalcSolarAngles(out.solar_place.latitude_deg, out.solar_place.decimal_year,
+                              *c.time_of_day_h, azimuth_deg, elevation_deg);
     }
-    out.sun_direction_W = SunDirectionFromAngles(sun_.azimuth_rad, sun_.elevation_rad);
+    sun_.azimuth_rad = DegToRad(azimuth_deg);
+    sun_.elevation_rad = DegToRad(elevation_deg);
+    out.sun_direction_W = engine::CalcSunDirection_W(azimuth_deg, elevation_deg);
     out.sun_color_rgb = c.sun_color.cast<float>();
     out.sky_zenith_rgb = c.sky_zenith_color.cast<float>();
     out.sky_horizon_rgb = c.sky_horizon_color.cast<float>();
@@ -719,28 +721,6 @@ class SceneAssembler {
 };
 
 }  // namespace
-
-Vec3 SunDirectionFromAngles(double azimuth_rad, double elevation_rad) {
-  const Vec3 toward_sun(std::cos(elevation_rad) * std::cos(azimuth_rad),
-                        std::cos(elevation_rad) * std::sin(azimuth_rad), -std::sin(elevation_rad));
-  return -toward_sun;
-}
-
-void SolarAngles(double latitude_rad, double decimal_year, double hours, double* azimuth_rad,
-                 double* elevation_rad) {
-  const double day = 1.0 + (decimal_year - std::floor(decimal_year)) * 365.0;
-  const double declination =
-      DegToRad(23.45) * std::sin(2.0 * std::numbers::pi * (284.0 + day) / 365.0);
-  const double hour_angle = DegToRad(15.0 * (hours - 12.0));
-  // Unit vector toward the sun in local north, east, up.
-  const double north = std::sin(declination) * std::cos(latitude_rad) -
-                       std::cos(declination) * std::cos(hour_angle) * std::sin(latitude_rad);
-  const double east = -std::cos(declination) * std::sin(hour_angle);
-  const double up = std::sin(declination) * std::sin(latitude_rad) +
-                    std::cos(declination) * std::cos(hour_angle) * std::cos(latitude_rad);
-  *azimuth_rad = std::atan2(east, north);
-  *elevation_rad = std::asin(std::clamp(up, -1.0, 1.0));
-}
 
 namespace {
 

@@ -5,6 +5,7 @@
 
 #include "engine/core/frames.h"
 #include "engine/core/random.h"
+#include "engine/environment/sun.h"
 
 namespace airis::engine {
 namespace {
@@ -35,6 +36,9 @@ std::optional<double> Draw(const RandomStream& stream, const char* key,
 std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery) { return kEveryNames; }
 
 void DomainRandomizationConfig::Validate() const {
+  RequireRange("time_of_day_h", time_of_day_h, 0.0, 24.0);
+  Require(!time_of_day_h || !(sun_elevation_deg || sun_azimuth_deg), "time_of_day_h",
+          "places the sun itself: give it or the sun's angles, not both");
   RequireRange("sun_elevation_deg", sun_elevation_deg, -90.0, 90.0);
   RequireRange("sun_azimuth_deg", sun_azimuth_deg, -360.0, 360.0);
   RequireRange("fog_distance_m", fog_distance_m, 0.0, 1e6);
@@ -48,21 +52,8 @@ void DomainRandomizationConfig::Validate() const {
 }
 
 bool DomainRandomizationConfig::any() const {
-  return sun_elevation_deg || sun_azimuth_deg || fog_distance_m || visibility_m || turbidity ||
-         rain_mm_per_h || exposure_ev || read_noise_e;
-}
-
-Eigen::Vector3d CalcSunDirection_W(double azimuth_deg, double elevation_deg) {
-  const double az = DegToRad(azimuth_deg), el = DegToRad(elevation_deg);
-  // Toward the sun: north, east, down components; light travels the other way.
-  return -Eigen::Vector3d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), -std::sin(el));
-}
-
-void CalcSunAngles(const Eigen::Vector3d& sun_direction_W, double& azimuth_deg,
-                   double& elevation_deg) {
-  const Eigen::Vector3d to_sun = -sun_direction_W.normalized();
-  elevation_deg = RadToDeg(std::asin(std::clamp(-to_sun.z(), -1.0, 1.0)));
-  azimuth_deg = RadToDeg(std::atan2(to_sun.y(), to_sun.x()));
+  return time_of_day_h || sun_elevation_deg || sun_azimuth_deg || fog_distance_m || visibility_m ||
+         turbidity || rain_mm_per_h || exposure_ev || read_noise_e;
 }
 
 DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
@@ -72,7 +63,14 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
                                   ? base.Fork("episode")
                                   : base.Fork("frame " + std::to_string(time_ns));
   DomainDraw d;
-  if (config.sun_elevation_deg || config.sun_azimuth_deg) {
+  d.time_of_day_h = Draw(stream, "time_of_day_h", config.time_of_day_h);
+  if (d.time_of_day_h) {
+    double azimuth_deg = 0.0, elevation_deg = 0.0;
+    CalcSolarAngles(scene.solar_place.latitude_deg, scene.solar_place.decimal_year,
+                    *d.time_of_day_h, azimuth_deg, elevation_deg);
+    d.sun_elevation_deg = elevation_deg;
+    d.sun_azimuth_deg = azimuth_deg;
+  } else if (config.sun_elevation_deg || config.sun_azimuth_deg) {
     double azimuth_deg = 0.0, elevation_deg = 0.0;
     CalcSunAngles(scene.sun_direction_W, azimuth_deg, elevation_deg);
     d.sun_elevation_deg =
@@ -106,7 +104,8 @@ FrameConditions DomainDraw::ToFrameConditions() const {
 
 std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) {
   std::vector<std::string> out;
-  if (config.sun_elevation_deg || config.sun_azimuth_deg) {
+  if (config.time_of_day_h) out.push_back("time_of_day_h");
+  if (config.time_of_day_h || config.sun_elevation_deg || config.sun_azimuth_deg) {
     out.push_back("sun_elevation_deg");
     out.push_back("sun_azimuth_deg");
   }
@@ -121,7 +120,8 @@ std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) 
 
 std::vector<double> DomainValues(const DomainRandomizationConfig& config, const DomainDraw& draw) {
   std::vector<double> out;
-  if (config.sun_elevation_deg || config.sun_azimuth_deg) {
+  if (config.time_of_day_h) out.push_back(*draw.time_of_day_h);
+  if (config.time_of_day_h || config.sun_elevation_deg || config.sun_azimuth_deg) {
     out.push_back(*draw.sun_elevation_deg);
     out.push_back(*draw.sun_azimuth_deg);
   }

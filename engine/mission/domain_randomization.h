@@ -22,11 +22,12 @@ enum class RandomizeEvery {
 std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery);
 
 /// Domain randomization of a dataset (a mission's `randomize:` block, docs/dataset-format.md):
-/// ranges [lo, hi] from which the sun, the fog and the cameras' exposure and noise are drawn
-/// uniformly, per frame or per episode. A range that is not given leaves the scene's or the
-/// camera's own value.
+/// ranges [lo, hi] from which the sun (by its angles or by the time of day), the fog and the
+/// cameras' exposure and noise are drawn uniformly, per frame or per episode. A range that is not
+/// given leaves the scene's or the camera's own value.
 struct DomainRandomizationConfig {
   RandomizeEvery per = RandomizeEvery::kFrame;
+  std::optional<Eigen::Vector2d> time_of_day_h;
   std::optional<Eigen::Vector2d> sun_elevation_deg;
   std::optional<Eigen::Vector2d> sun_azimuth_deg;
   std::optional<Eigen::Vector2d> fog_distance_m;
@@ -39,6 +40,9 @@ struct DomainRandomizationConfig {
   template <class V>
   void Visit(V& v) {
     v.Field("per", per, "frame (each render instant draws anew) or episode (one draw per run)");
+    v.Field("time_of_day_h", time_of_day_h,
+            "[lo, hi]: local solar time (h, 0 to 24), which places the sun at the scene origin's "
+            "latitude on the environment's date; not with the sun's angles");
     v.Field("sun_elevation_deg", sun_elevation_deg,
             "[lo, hi]: sun elevation above the horizon (deg, -90 to 90)");
     v.Field("sun_azimuth_deg", sun_azimuth_deg,
@@ -57,7 +61,7 @@ struct DomainRandomizationConfig {
             "[lo, hi]: every camera's read noise (electrons); turns its sensor noise on");
   }
   /// Throws InvalidField naming the range (lo > hi, or outside its bounds, or visibility_m with
-  /// fog_distance_m).
+  /// fog_distance_m, or time_of_day_h with a sun angle).
   void Validate() const;
   /// True when some range is given.
   bool any() const;
@@ -65,9 +69,11 @@ struct DomainRandomizationConfig {
 
 /// The values one draw gave (those of the ranges given), and the sun they place.
 struct DomainDraw {
-  std::optional<double> sun_elevation_deg;  ///< set when either sun angle is randomized
-  std::optional<double> sun_azimuth_deg;    ///< set when either sun angle is randomized
-  std::optional<double> fog_distance_m;     ///< drawn, or from the drawn visibility
+  std::optional<double> time_of_day_h;
+  /// Set when either sun angle or the time of day is randomized.
+  std::optional<double> sun_elevation_deg;
+  std::optional<double> sun_azimuth_deg;
+  std::optional<double> fog_distance_m;  ///< drawn, or from the drawn visibility
   std::optional<double> visibility_m;
   std::optional<double> turbidity;
   std::optional<double> rain_mm_per_h;
@@ -81,7 +87,8 @@ struct DomainDraw {
 /// Draws the conditions of the frame at `time_ns` (or of the episode) from `seed`: a function of
 /// the seed, the time (per frame) and the config only, so that a shard, a resumed run and any
 /// thread count draw the same. Each range draws from its own stream, so adding a range keeps the
-/// others' draws. A sun angle not randomized keeps `scene`'s.
+/// others' draws. A sun angle not randomized keeps `scene`'s; a drawn time of day places the sun
+/// by `scene.solar_place`.
 DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
                       const SceneLighting& scene);
 
@@ -89,11 +96,5 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
 std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config);
 /// The values of `draw` in the order of DomainColumns(config).
 std::vector<double> DomainValues(const DomainRandomizationConfig& config, const DomainDraw& draw);
-
-/// Unit vector along which sunlight travels (world NED) for a sun at `azimuth_deg` (clockwise from
-/// north) and `elevation_deg`; and back.
-Eigen::Vector3d CalcSunDirection_W(double azimuth_deg, double elevation_deg);
-void CalcSunAngles(const Eigen::Vector3d& sun_direction_W, double& azimuth_deg,
-                   double& elevation_deg);
 
 }  // namespace airis::engine

@@ -201,6 +201,13 @@ struct SceneLighting {
   float turbidity = 3.0f;      ///< the clear sky's haze, 2 (very clear) to 10 (hazy)
   float rain_mm_per_h = 0.0f;  ///< rain rate (mm/h), 0 = none (engine/render/rain.h)
   ShadowSettings shadows;
+  /// Where and when the sky is seen: the scene origin's latitude and the environment's date, by
+  /// which a local solar time places the sun (engine::CalcSolarAngles; a dataset's randomized
+  /// time of day).
+  struct SolarPlace {
+    double latitude_deg = 0.0;
+    double decimal_year = 2026.0;
+  } solar_place;
 };
 
 /// A block of the terrain's samples that is one object of the scene: drawn and hit by rays through

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/environment/sun.h"
+
 namespace airis::engine {
 namespace {
 
@@ -83,6 +85,49 @@ TEST(DomainRandomizationTest, SunKeepsTheSceneAngleNotRandomized) {
   EXPECT_FALSE(f.read_noise_e);
   EXPECT_EQ(f.exposure_ev_offset, 0.0);
   EXPECT_EQ(DomainColumns(c), (std::vector<std::string>{"sun_elevation_deg", "sun_azimuth_deg"}));
+}
+
+// A drawn time of day places the sun at the scene's latitude and date: the conditions carry the
+// sun CalcSolarAngles gives for the drawn hour, and poses.csv gets the hour and the angles.
+TEST(DomainRandomizationTest, TimeOfDayPlacesTheSunByTheScenesLatitudeAndDate) {
+  SceneLighting scene;
+  scene.solar_place = {47.4, 2026.5};
+  DomainRandomizationConfig c;
+  c.time_of_day_h = Eigen::Vector2d(6.0, 18.0);
+  std::set<bool> morning;
+  for (int k = 1; k <= 100; ++k) {
+    const DomainDraw d = DrawDomain(c, 5, k * kFrame, scene);
+    ASSERT_TRUE(d.time_of_day_h);
+    EXPECT_GE(*d.time_of_day_h, 6.0);
+    EXPECT_LT(*d.time_of_day_h, 18.0);
+    double azimuth = 0.0, elevation = 0.0;
+    CalcSolarAngles(47.4, 2026.5, *d.time_of_day_h, azimuth, elevation);
+    EXPECT_EQ(*d.sun_elevation_deg, elevation);
+    EXPECT_EQ(*d.sun_azimuth_deg, azimuth);
+    EXPECT_TRUE(
+        d.ToFrameConditions().sun_direction_W->isApprox(CalcSunDirection_W(azimuth, elevation)));
+    // The sun stands east before solar noon, west after it.
+    EXPECT_EQ(*d.sun_azimuth_deg<0.0, *d.time_of_day_h> 12.0) << *d.time_of_day_h;
+    morning.insert(*d.time_of_day_h < 12.0);
+  }
+  EXPECT_EQ(morning.size(), 2u);
+  EXPECT_EQ(DomainColumns(c),
+            (std::vector<std::string>{"time_of_day_h", "sun_elevation_deg", "sun_azimuth_deg"}));
+  // At solar noon on the equinox the sun stands due south, 90 - latitude high (Cooper's
+  // declination is -0.4 deg that day).
+  c.time_of_day_h = Eigen::Vector2d(12.0, 12.0);
+  scene.solar_place = {47.4, 2026.0 + 79.0 / 365.0};
+  const DomainDraw noon = DrawDomain(c, 5, kFrame, scene);
+  EXPECT_NEAR(*noon.sun_elevation_deg, 90.0 - 47.4, 0.5);
+  EXPECT_NEAR(std::abs(*noon.sun_azimuth_deg), 180.0, 1e-9);
+  // The sun's angles and the time of day are one or the other.
+  c.sun_elevation_deg = Eigen::Vector2d(10.0, 20.0);
+  try {
+    c.Validate();
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "time_of_day_h");
+  }
 }
 
 // The sun direction in NED: a sun due east at 30 degrees lights along -east and down.

@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "engine/environment/sun.h"
 #include "scenes/scene.h"
 #include "scenes/world_builder.h"
 #include "tests/fixtures/temp_dir.h"
@@ -563,10 +564,10 @@ TEST(SceneLoaderTest, SunFromTimeOfDayAtEquinoxNoon) {
   // Near the March equinox (declination ~0) at solar noon the sun stands 90 deg - latitude high,
   // due south. Cooper's declination is -0.4 deg on that day, so 0.5 deg bounds it.
   double azimuth = 0, elevation = 0;
-  SolarAngles(engine::DegToRad(47.0), 2026.0 + 79.0 / 365.0, 12.0, &azimuth, &elevation);
-  EXPECT_NEAR(engine::RadToDeg(elevation), 43.0, 0.5);
-  EXPECT_NEAR(std::abs(engine::RadToDeg(azimuth)), 180.0, 1e-6);
-  const Vec3 d = SunDirectionFromAngles(azimuth, elevation);
+  engine::CalcSolarAngles(47.0, 2026.0 + 79.0 / 365.0, 12.0, azimuth, elevation);
+  EXPECT_NEAR(elevation, 43.0, 0.5);
+  EXPECT_NEAR(std::abs(azimuth), 180.0, 1e-6);
+  const Vec3 d = engine::CalcSunDirection_W(azimuth, elevation);
   EXPECT_NEAR(d.norm(), 1.0, 1e-12);
   EXPECT_GT(d.z(), 0.0);  // light travels down
   EXPECT_GT(d.x(), 0.0);  // and north, from a southern sun

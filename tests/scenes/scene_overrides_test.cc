@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/environment/sun.h"
 #include "engine/world/world.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
@@ -75,8 +76,7 @@ TEST(SceneOverridesTest, ValuesReachTheBuiltWorld) {
              "vehicles[1].start.position_ned_m=[3,4,-6]"});
   const std::unique_ptr<engine::World> world = BuildWorld(s);
   // THEN the world has them (the sun direction from the same formula: exact)
-  EXPECT_EQ(world->scene().lighting.sun_direction_W,
-            SunDirectionFromAngles(DegToRad(90.0), DegToRad(20.0)));
+  EXPECT_EQ(world->scene().lighting.sun_direction_W, engine::CalcSunDirection_W(90.0, 20.0));
   EXPECT_EQ(world->scene().lighting.fog_distance_m, 300.0f);
   EXPECT_EQ(world->environment().wind().config().mean_ned_m_s, engine::Vec3(5, -2, 0));
   EXPECT_EQ(world->environment().wind().config().gust, engine::GustModel::kDryden);

@@ -1,4 +1,6 @@
 // The scene's sun: placed by the time of day or by angles, never both, and recorded in the scene.
+#include "engine/environment/sun.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,8 +46,8 @@ TEST(SunTest, TimeOfDayAndSunAnglesAreExclusive) {
       "scenes/v.yaml");
   ASSERT_TRUE(noon.sun.time_of_day_h);
   double azimuth = 0.0, elevation = 0.0;
-  SolarAngles(engine::DegToRad(47.0), 2026.5, 12.0, &azimuth, &elevation);
-  EXPECT_DOUBLE_EQ(noon.sun.elevation_rad, elevation);
+  engine::CalcSolarAngles(47.0, 2026.5, 12.0, azimuth, elevation);
+  EXPECT_DOUBLE_EQ(noon.sun.elevation_rad, engine::DegToRad(elevation));
   const double day = 1.0 + 0.5 * 365.0;
   const double declination_deg = 23.45 * std::sin(2.0 * M_PI * (284.0 + day) / 365.0);
   EXPECT_NEAR(engine::RadToDeg(noon.sun.elevation_rad), 90.0 - (47.0 - declination_deg), 1e-9);

@@ -9,8 +9,10 @@
 #include "engine/dataset/csv_reader.h"
 #include "engine/dataset/file_io.h"
 #include "engine/dataset/image_encoding.h"
+#include "engine/environment/sun.h"
 #include "engine/mission/domain_randomization.h"
 #include "engine/render/camera_effects.h"
+#include "scenes/scene.h"
 #include "tests/fixtures/small_camera_scene.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tools/jobs/dataset_job.h"
@@ -93,6 +95,26 @@ TEST(DatasetRandomizeTest, SameSeedSameDrawsInRangeAndLabelsUnchanged) {
   }
   EXPECT_EQ(Text(a / "cam" / "coco_instances.json"), Text(plain / "cam" / "coco_instances.json"));
   EXPECT_EQ(Text(plain / "cam" / "poses.csv").find("exposure_ev"), std::string::npos);
+}
+
+// A drawn time of day lights the frame by the sun of that hour at the scene's latitude and date,
+// and poses.csv says both.
+TEST(DatasetRandomizeTest, DrawnTimeOfDayPlacesTheWrittenSun) {
+  const fs::path dir = RunWith("rand_time_of_day", "randomize: {time_of_day_h: [6, 18]}\n");
+  const scenes::Scene scene = scenes::LoadSceneFromString(kScene, "rand_scene.yaml");
+  const engine::SceneLighting::SolarPlace& place = scene.static_scene->lighting.solar_place;
+  EXPECT_NEAR(place.latitude_deg, 47.397742, 1e-9);  // the default origin's
+  const engine::CsvText csv = engine::ReadCsvText(dir / "cam" / "poses.csv");
+  ASSERT_GT(csv.rows.size(), 2u);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const double hour = csv.Number(r, csv.Column("time_of_day_h"));
+    EXPECT_GE(hour, 6.0);
+    EXPECT_LE(hour, 18.0);
+    double azimuth = 0.0, elevation = 0.0;
+    engine::CalcSolarAngles(place.latitude_deg, place.decimal_year, hour, azimuth, elevation);
+    EXPECT_NEAR(csv.Number(r, csv.Column("sun_elevation_deg")), elevation, 1e-6) << "row " << r;
+    EXPECT_NEAR(csv.Number(r, csv.Column("sun_azimuth_deg")), azimuth, 1e-6) << "row " << r;
+  }
 }
 
 // The exposure written beside a frame is the one it was rendered with: the plain frame exposed
