@@ -92,6 +92,17 @@ class InvalidField : public std::runtime_error {
   std::string problem_;
 };
 
+/// Runs `check`, re-throwing an InvalidField from it with `prefix` before its field (a nested
+/// struct's Validate: "effects." + "full_well_e").
+template <class F>
+void WithFieldPrefix(const std::string& prefix, F&& check) {
+  try {
+    check();
+  } catch (const InvalidField& e) {
+    throw InvalidField(prefix + e.field(), e.problem());
+  }
+}
+
 /// A simulation whose numeric state became non-finite or absurd; names the body, the simulated time
 /// and the cause. The run stops; it never continues silently.
 class SimulationError : public std::runtime_error {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/core/error.h"
 #include "engine/core/frames.h"
 #include "engine/core/random.h"
 #include "engine/environment/sun.h"
@@ -35,6 +36,21 @@ std::optional<double> Draw(const RandomStream& stream, const char* key,
 
 std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery) { return kEveryNames; }
 
+void MaterialRandomizationConfig::Validate() const {
+  Require(!classes.empty(), "classes", "name at least one class of the scene");
+  for (std::size_t i = 0; i < classes.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      Require(classes[j] != classes[i], "classes[" + std::to_string(i) + "]",
+              "'" + classes[i] + "' is listed twice");
+    }
+  }
+  Require(value || hue_deg || roughness, "classes",
+          "give at least one of value, hue_deg and roughness to draw");
+  RequireRange("value", value, 0.0, 4.0);
+  RequireRange("hue_deg", hue_deg, -180.0, 180.0);
+  RequireRange("roughness", roughness, 0.0, 1.0);
+}
+
 void DomainRandomizationConfig::Validate() const {
   RequireRange("time_of_day_h", time_of_day_h, 0.0, 24.0);
   Require(!time_of_day_h || !(sun_elevation_deg || sun_azimuth_deg), "time_of_day_h",
@@ -49,11 +65,12 @@ void DomainRandomizationConfig::Validate() const {
   RequireRange("rain_mm_per_h", rain_mm_per_h, 0.0, 200.0);
   RequireRange("exposure_ev", exposure_ev, -20.0, 20.0);
   RequireRange("read_noise_e", read_noise_e, 0.0, 1e4);
+  if (materials) WithFieldPrefix("materials.", [&] { materials->Validate(); });
 }
 
 bool DomainRandomizationConfig::any() const {
   return time_of_day_h || sun_elevation_deg || sun_azimuth_deg || fog_distance_m || visibility_m ||
-         turbidity || rain_mm_per_h || exposure_ev || read_noise_e;
+         turbidity || rain_mm_per_h || exposure_ev || read_noise_e || materials;
 }
 
 DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
@@ -86,11 +103,49 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
   d.rain_mm_per_h = Draw(stream, "rain_mm_per_h", config.rain_mm_per_h);
   d.exposure_ev = Draw(stream, "exposure_ev", config.exposure_ev);
   d.read_noise_e = Draw(stream, "read_noise_e", config.read_noise_e);
+  if (config.materials) {
+    const MaterialRandomizationConfig& m = *config.materials;
+    for (const std::string& name : m.classes) {
+      ClassMaterialChange change;
+      const std::string key = "materials " + name + " ";
+      change.value = Draw(stream, (key + "value").c_str(), m.value).value_or(1.0);
+      change.hue_deg = Draw(stream, (key + "hue_deg").c_str(), m.hue_deg).value_or(0.0);
+      change.roughness = Draw(stream, (key + "roughness").c_str(), m.roughness);
+      d.materials.push_back(change);
+    }
+  }
   return d;
 }
 
-FrameConditions DomainDraw::ToFrameConditions() const {
+std::vector<std::uint8_t> ResolveMaterialClasses(const DomainRandomizationConfig& config,
+                                                 std::span<const SemanticClass> scene) {
+  std::vector<std::uint8_t> ids;
+  if (!config.materials) return ids;
+  std::vector<std::string> names;
+  for (const SemanticClass& c : scene) names.push_back(c.name);
+  const std::vector<std::string>& wanted = config.materials->classes;
+  for (std::size_t i = 0; i < wanted.size(); ++i) {
+    const auto it = std::find(names.begin(), names.end(), wanted[i]);
+    if (it != names.end()) {
+      ids.push_back(scene[static_cast<std::size_t>(it - names.begin())].id);
+      continue;
+    }
+    std::string problem = "the scene has no class '" + wanted[i] + "'";
+    if (const auto close = ClosestMatch(wanted[i], names)) {
+      problem += " (did you mean '" + *close + "'?)";
+    }
+    throw InvalidField("materials.classes[" + std::to_string(i) + "]", problem);
+  }
+  return ids;
+}
+
+FrameConditions DomainDraw::ToFrameConditions(std::span<const std::uint8_t> class_ids) const {
   FrameConditions c;
+  AIRIS_DEMAND(class_ids.size() == materials.size());
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    c.class_materials.push_back(materials[i]);
+    c.class_materials.back().class_id = class_ids[i];
+  }
   if (sun_elevation_deg && sun_azimuth_deg) {
     c.sun_direction_W = CalcSunDirection_W(*sun_azimuth_deg, *sun_elevation_deg);
   }
@@ -115,6 +170,13 @@ std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) 
   if (config.rain_mm_per_h) out.push_back("rain_mm_per_h");
   if (config.exposure_ev) out.push_back("exposure_ev");
   if (config.read_noise_e) out.push_back("read_noise_e");
+  if (config.materials) {
+    for (const std::string& name : config.materials->classes) {
+      if (config.materials->value) out.push_back("material_" + name + "_value");
+      if (config.materials->hue_deg) out.push_back("material_" + name + "_hue_deg");
+      if (config.materials->roughness) out.push_back("material_" + name + "_roughness");
+    }
+  }
   return out;
 }
 
@@ -131,6 +193,13 @@ std::vector<double> DomainValues(const DomainRandomizationConfig& config, const 
   if (config.rain_mm_per_h) out.push_back(*draw.rain_mm_per_h);
   if (config.exposure_ev) out.push_back(*draw.exposure_ev);
   if (config.read_noise_e) out.push_back(*draw.read_noise_e);
+  if (config.materials) {
+    for (const ClassMaterialChange& change : draw.materials) {
+      if (config.materials->value) out.push_back(change.value);
+      if (config.materials->hue_deg) out.push_back(change.hue_deg);
+      if (config.materials->roughness) out.push_back(*change.roughness);
+    }
+  }
   return out;
 }
 

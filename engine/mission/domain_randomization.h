@@ -21,6 +21,26 @@ enum class RandomizeEvery {
 };
 std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery);
 
+/// Randomized materials of some classes (`randomize.materials`): each listed class draws its own
+/// base colour value, hue turn and roughness (ClassMaterialChange), from the ranges given.
+struct MaterialRandomizationConfig {
+  std::vector<std::string> classes;
+  std::optional<Eigen::Vector2d> value;
+  std::optional<Eigen::Vector2d> hue_deg;
+  std::optional<Eigen::Vector2d> roughness;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("classes", classes, "the scene's classes whose materials are drawn (names)");
+    v.Field("value", value, "[lo, hi]: factor on the base colour (linear, 0 to 4)");
+    v.Field("hue_deg", hue_deg,
+            "[lo, hi]: turn of the base colour's hue about the grey axis (deg, -180 to 180)");
+    v.Field("roughness", roughness, "[lo, hi]: the roughness, replacing the material's (0 to 1)");
+  }
+  /// Throws InvalidField: no class, a class twice, no range, or a range out of its bounds.
+  void Validate() const;
+};
+
 /// Domain randomization of a dataset (a mission's `randomize:` block, docs/dataset-format.md):
 /// ranges [lo, hi] from which the sun (by its angles or by the time of day), the fog and the
 /// cameras' exposure and noise are drawn uniformly, per frame or per episode. A range that is not
@@ -36,6 +56,7 @@ struct DomainRandomizationConfig {
   std::optional<Eigen::Vector2d> rain_mm_per_h;
   std::optional<Eigen::Vector2d> exposure_ev;
   std::optional<Eigen::Vector2d> read_noise_e;
+  std::optional<MaterialRandomizationConfig> materials;
 
   template <class V>
   void Visit(V& v) {
@@ -59,6 +80,8 @@ struct DomainRandomizationConfig {
             "[lo, hi]: added to every camera's exposure (EV stops; docs/rendering.md)");
     v.Field("read_noise_e", read_noise_e,
             "[lo, hi]: every camera's read noise (electrons); turns its sensor noise on");
+    v.Field("materials", materials,
+            "the materials of some classes: value, hue and roughness drawn per class");
   }
   /// Throws InvalidField naming the range (lo > hi, or outside its bounds, or visibility_m with
   /// fog_distance_m, or time_of_day_h with a sun angle).
@@ -79,9 +102,13 @@ struct DomainDraw {
   std::optional<double> rain_mm_per_h;
   std::optional<double> exposure_ev;
   std::optional<double> read_noise_e;
+  /// One per class of MaterialRandomizationConfig::classes, in order: the ranges' draws, the
+  /// others left as they are (value 1, hue 0, no roughness).
+  std::vector<ClassMaterialChange> materials;
 
-  /// The conditions cameras render under.
-  FrameConditions ToFrameConditions() const;
+  /// The conditions cameras render under. `class_ids` are the ids of the classes the materials
+  /// config names, in its order (the scene's: ResolveMaterialClasses).
+  FrameConditions ToFrameConditions(std::span<const std::uint8_t> class_ids = {}) const;
 };
 
 /// Draws the conditions of the frame at `time_ns` (or of the episode) from `seed`: a function of
@@ -92,7 +119,13 @@ struct DomainDraw {
 DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
                       const SceneLighting& scene);
 
-/// Columns of a draw in a dataset's poses.csv, in order: those of the ranges `config` gives.
+/// The ids in `scene` of the classes `config.materials` names, in its order. Throws InvalidField
+/// naming `materials.classes[i]` for a class the scene does not have (with the closest name).
+std::vector<std::uint8_t> ResolveMaterialClasses(const DomainRandomizationConfig& config,
+                                                 std::span<const SemanticClass> scene);
+
+/// Columns of a draw in a dataset's poses.csv, in order: those of the ranges `config` gives (a
+/// class's material as material_CLASS_value, _hue_deg, _roughness).
 std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config);
 /// The values of `draw` in the order of DomainColumns(config).
 std::vector<double> DomainValues(const DomainRandomizationConfig& config, const DomainDraw& draw);

@@ -442,6 +442,7 @@ void CameraRenderer::DrawFrame(const GpuScene& scene, const Eigen::Isometry3d& T
   const DetailLimit detail{std::max(k.fx_px, k.fy_px), detail_tolerance_px_};
   DrawShadow(scene, T_WC, bodies, light, detail);
   scene.CollectVisible(T_WC, planes_C_, bodies, visible_, detail);
+  if (outputs_.rgb) ApplyClassMaterials(class_materials_, visible_.instances);
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
   const std::size_t bytes = visible_.instances.size() * sizeof(GpuInstance);
   if (bytes > instance_capacity_) {

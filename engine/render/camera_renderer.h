@@ -72,6 +72,11 @@ class CameraRenderer {
   /// Lights the next frames with `lighting` instead of the scene's (a dataset's randomized sun and
   /// fog); nullopt returns to the scene's.
   void set_lighting(std::optional<SceneLighting> lighting) { lighting_ = std::move(lighting); }
+  /// Changes the materials of these classes in the next frames' colour images (a dataset's
+  /// randomized materials; ChangeBaseColour); empty for the scene's own.
+  void set_class_materials(std::vector<ClassMaterialChange> changes) {
+    class_materials_ = std::move(changes);
+  }
   /// The time the shutter is open (s; default 1/125 s): how long the rain's streaks are. A camera
   /// sensor sets its CameraEffectsConfig::exposure_time_s.
   void set_exposure_time_s(double exposure_s) { exposure_time_s_ = exposure_s; }
@@ -160,6 +165,7 @@ class CameraRenderer {
   RenderOutputs outputs_;
   double detail_tolerance_px_;
   std::optional<SceneLighting> lighting_;  // replaces the scene's when set
+  std::vector<ClassMaterialChange> class_materials_;
   bool distorted_ = false;
   std::string scene_defines_;  // the outputs' defines of every scene program
   std::array<GlProgram, kScenePrograms> scene_programs_;  // by SceneProgramIndex

@@ -1,6 +1,7 @@
 #include "engine/render/gpu_scene.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -354,6 +355,39 @@ GpuInstance MakeInstance(const Eigen::Matrix4d& T_CP, std::uint32_t class_id,
 }
 
 }  // namespace
+
+void ChangeBaseColour(std::uint8_t rgb[3], double value, double hue_deg) {
+  const double a = DegToRad(hue_deg);
+  const double c = std::cos(a), s = std::sin(a);
+  // Rotation by a about the unit axis (1, 1, 1) / sqrt 3: c I + (1 - c) n n^T + s [n]x.
+  const double k = (1.0 - c) / 3.0, r = s / std::sqrt(3.0);
+  Eigen::Matrix3d R;
+  R << c + k, k - r, k + r,  //
+      k + r, c + k, k - r,   //
+      k - r, k + r, c + k;
+  const Eigen::Vector3d in(rgb[0], rgb[1], rgb[2]);
+  const Eigen::Vector3d out = value * (R * in);
+  for (int i = 0; i < 3; ++i) {
+    rgb[i] = static_cast<std::uint8_t>(std::lround(std::clamp(out[i], 0.0, 255.0)));
+  }
+}
+
+void ApplyClassMaterials(std::span<const ClassMaterialChange> changes,
+                         std::vector<GpuInstance>& instances) {
+  if (changes.empty()) return;
+  std::array<const ClassMaterialChange*, 256> of_class{};
+  for (const ClassMaterialChange& change : changes) of_class[change.class_id] = &change;
+  for (GpuInstance& instance : instances) {
+    const ClassMaterialChange* change =
+        instance.class_id < 256 ? of_class[instance.class_id] : nullptr;
+    if (change == nullptr) continue;
+    ChangeBaseColour(instance.material.base_color_rgba, change->value, change->hue_deg);
+    if (change->roughness) {
+      instance.material.surface[0] =
+          static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(*change->roughness, 0.0, 1.0)));
+    }
+  }
+}
 
 void GpuScene::CollectVisible(const Eigen::Isometry3d& T_WC,
                               const std::vector<Eigen::Vector4d>& planes_C, const BodyPoses& bodies,

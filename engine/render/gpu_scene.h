@@ -32,6 +32,16 @@ struct GpuInstance {
   GpuMaterialParams material;
 };
 
+/// The base colour `rgb` (linear, 8 bits a channel) with its hue turned by `hue_deg` about the grey
+/// axis (Rodrigues' rotation about (1, 1, 1) / sqrt 3, which keeps greys and the channels' mean)
+/// and scaled by `value`, clipped to [0, 255] and rounded.
+void ChangeBaseColour(std::uint8_t rgb[3], double value, double hue_deg);
+
+/// Applies `changes` to the materials of `instances` of their classes (colour and roughness; the
+/// labels stay).
+void ApplyClassMaterials(std::span<const ClassMaterialChange> changes,
+                         std::vector<GpuInstance>& instances);
+
 /// Where the vehicle bodies of the scene (StaticScene::vehicle_bodies) are in one frame. Body k is
 /// drawn at T_WB[k] (body FRD -> world NED); bodies without a pose (k >= T_WB.size()) and the
 /// `hidden` one (a camera's own vehicle) are not drawn.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,6 +31,17 @@ struct SemanticClass {
   /// "Stuff" (ground, road, sidewalk, water: amorphous, not counted) rather than a "thing": kept in
   /// the label images, left out of COCO instance annotations.
   bool stuff = false;
+};
+
+/// A change of one class's materials for a frame (a dataset's randomized materials,
+/// docs/dataset-format.md): the base colour's hue turned by `hue_deg` about the grey axis and its
+/// linear value scaled by `value`, the roughness replaced when given. The colour image alone
+/// changes.
+struct ClassMaterialChange {
+  std::uint8_t class_id = kNoClass;
+  double value = 1.0;
+  double hue_deg = 0.0;
+  std::optional<double> roughness;
 };
 
 /// A procedural surface detail the renderer adds to a material's base colour, in the metric

@@ -11,6 +11,7 @@
 #include "engine/core/camera_model.h"
 #include "engine/core/instance_image_format.h"
 #include "engine/physics/rigid_body_state.h"
+#include "engine/scene/static_scene.h"
 #include "engine/world/mount.h"
 #include "engine/world/sensor.h"
 
@@ -85,6 +86,7 @@ struct FrameConditions {
   std::optional<double> rain_mm_per_h;   ///< rain rate (SceneLighting::rain_mm_per_h)
   double exposure_ev_offset = 0.0;       ///< added to the camera's exposure (EV stops)
   std::optional<double> read_noise_e;    ///< replaces the camera's read noise, turns noise on
+  std::vector<ClassMaterialChange> class_materials;  ///< materials changed in the colour image
 };
 
 /// A sensor that produces images (cameras, stereo pairs; later event cameras and optical flow):

@@ -12,16 +12,6 @@ namespace {
 constexpr engine::EnumName<CameraAttachment> kAttachmentNames[] = {
     {CameraAttachment::kVehicle, "vehicle"}, {CameraAttachment::kWorld, "world"}};
 
-// Re-throws an InvalidField from a nested struct with the nested field's path.
-template <class F>
-void WithPrefix(const std::string& prefix, F&& check) {
-  try {
-    check();
-  } catch (const engine::InvalidField& e) {
-    throw engine::InvalidField(prefix + e.field(), e.problem());
-  }
-}
-
 }  // namespace
 
 std::span<const engine::EnumName<CameraAttachment>> EnumNames(CameraAttachment) {
@@ -35,11 +25,11 @@ void CameraConfig::Validate() const {
   if (!fx_px) engine::RequireInRange("hfov_deg", hfov_deg, 1.0, 170.0);
   // The intrinsics' own checks name fx_px, near_m, distortion.k1, ... as in this struct.
   CalcIntrinsics().Validate();
-  WithPrefix("outputs.", [&] { outputs.Validate(); });
-  WithPrefix("effects.", [&] { effects.Validate(); });
+  engine::WithFieldPrefix("outputs.", [&] { outputs.Validate(); });
+  engine::WithFieldPrefix("effects.", [&] { effects.Validate(); });
   engine::Require(outputs.rgb || !(effects.any() || effects.motion()), "effects",
                   "apply to the colour image, and the camera renders none (outputs.rgb is false)");
-  WithPrefix("mount.", [&] { mount.Validate(); });
+  engine::WithFieldPrefix("mount.", [&] { mount.Validate(); });
   engine::RequireInRange("detail_tolerance_px", detail_tolerance_px, 0.0,
                          engine::kMaxDetailTolerance_px);
   engine::Require(!sees_own_body || attachment == CameraAttachment::kVehicle, "sees_own_body",
@@ -80,17 +70,17 @@ engine::CameraIntrinsics CameraConfig::CalcIntrinsics() const {
 }
 
 void StereoCameraConfig::Validate() const {
-  WithPrefix("camera.", [&] { camera.Validate(); });
+  engine::WithFieldPrefix("camera.", [&] { camera.Validate(); });
   engine::RequirePositive("baseline_m", baseline_m);
 }
 
 void StereoCameraConfig::ValidateForPhysicsRate(double physics_rate_hz) const {
-  WithPrefix("camera.", [&] { camera.ValidateForPhysicsRate(physics_rate_hz); });
+  engine::WithFieldPrefix("camera.", [&] { camera.ValidateForPhysicsRate(physics_rate_hz); });
   engine::RequirePositive("baseline_m", baseline_m);
 }
 
 void StereoCameraConfig::ValidateForInstances(std::size_t instances) const {
-  WithPrefix("camera.", [&] { camera.ValidateForInstances(instances); });
+  engine::WithFieldPrefix("camera.", [&] { camera.ValidateForInstances(instances); });
 }
 
 }  // namespace airis::sensors

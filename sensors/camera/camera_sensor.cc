@@ -71,6 +71,7 @@ void CameraSensor::CopyLatestRow(std::span<double> out) const {
 void CameraSensor::Render(const engine::SensorContext& context, engine::CameraFrame& out) {
   const engine::FrameConditions conditions = CalcConditions(context.now_ns);
   SetFrameLighting(scene_->gpu_scene().lighting(), conditions, renderer_);
+  renderer_.set_class_materials(conditions.class_materials);
   const Eigen::Isometry3d T_WC = engine::CalcImageStreamPose(stream_, context.state);
   SetFrameWind(context, T_WC, renderer_);
   renderer_.Render(scene_->gpu_scene(), T_WC, context.now_ns, out,

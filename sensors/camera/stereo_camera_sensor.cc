@@ -64,6 +64,7 @@ void StereoCameraSensor::Render(const engine::SensorContext& context, engine::Ca
   // Both eyes see the same bodies: one mount, one vehicle.
   const engine::FrameConditions conditions = CalcConditions(context.now_ns);
   SetFrameLighting(scene_->gpu_scene().lighting(), conditions, renderer_);
+  renderer_.set_class_materials(conditions.class_materials);
   const engine::BodyPoses bodies = CalcBodyPoses(context, streams_[0], body_poses_W_);
   const Eigen::Isometry3d T_WL = engine::CalcImageStreamPose(streams_[0], context.state);
   const Eigen::Isometry3d T_WR = engine::CalcImageStreamPose(streams_[1], context.state);

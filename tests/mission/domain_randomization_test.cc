@@ -130,6 +130,75 @@ TEST(DomainRandomizationTest, TimeOfDayPlacesTheSunByTheScenesLatitudeAndDate) {
   }
 }
 
+// Each class named draws its own material from the ranges, writes its columns in the order of the
+// classes, and its change goes to the class id the scene gives it.
+TEST(DomainRandomizationTest, MaterialsAreDrawnPerClass) {
+  DomainRandomizationConfig c;
+  c.materials = MaterialRandomizationConfig{
+      {"building", "car"}, Eigen::Vector2d(0.5, 1.5), Eigen::Vector2d(-30.0, 30.0), std::nullopt};
+  c.Validate();
+  EXPECT_EQ(DomainColumns(c),
+            (std::vector<std::string>{"material_building_value", "material_building_hue_deg",
+                                      "material_car_value", "material_car_hue_deg"}));
+  const SceneLighting scene;
+  std::set<double> values;
+  for (int k = 1; k <= 50; ++k) {
+    const DomainDraw d = DrawDomain(c, 4, k * kFrame, scene);
+    ASSERT_EQ(d.materials.size(), 2u);
+    for (const ClassMaterialChange& m : d.materials) {
+      EXPECT_GE(m.value, 0.5);
+      EXPECT_LT(m.value, 1.5);
+      EXPECT_GE(m.hue_deg, -30.0);
+      EXPECT_LT(m.hue_deg, 30.0);
+      EXPECT_FALSE(m.roughness);
+      values.insert(m.value);
+    }
+    const std::vector<double> v = DomainValues(c, d);
+    EXPECT_EQ(v, (std::vector<double>{d.materials[0].value, d.materials[0].hue_deg,
+                                      d.materials[1].value, d.materials[1].hue_deg}));
+    const std::vector<std::uint8_t> ids{4, 11};
+    const FrameConditions f = d.ToFrameConditions(ids);
+    ASSERT_EQ(f.class_materials.size(), 2u);
+    EXPECT_EQ(f.class_materials[0].class_id, 4);
+    EXPECT_EQ(f.class_materials[1].class_id, 11);
+    EXPECT_EQ(f.class_materials[1].value, d.materials[1].value);
+  }
+  EXPECT_EQ(values.size(), 100u);  // each class and frame its own draw
+}
+
+TEST(DomainRandomizationTest, MaterialClassesAreTheScenes) {
+  DomainRandomizationConfig c;
+  c.materials = MaterialRandomizationConfig{
+      {"car", "bilding"}, Eigen::Vector2d(0.5, 1.5), std::nullopt, std::nullopt};
+  const std::vector<SemanticClass> classes{{3, "building"}, {8, "car"}};
+  try {
+    ResolveMaterialClasses(c, classes);
+    FAIL();
+  } catch (const InvalidField& e) {
+    EXPECT_EQ(e.field(), "materials.classes[1]");
+    EXPECT_NE(e.problem().find("did you mean 'building'"), std::string::npos) << e.problem();
+  }
+  c.materials->classes = {"car", "building"};
+  EXPECT_EQ(ResolveMaterialClasses(c, classes), (std::vector<std::uint8_t>{8, 3}));
+  // Checked: a class named twice, no class, no range, a range out of its bounds.
+  const auto field_of = [](const DomainRandomizationConfig& config) {
+    try {
+      config.Validate();
+    } catch (const InvalidField& e) {
+      return e.field();
+    }
+    return std::string("valid");
+  };
+  c.materials->classes = {"car", "car"};
+  EXPECT_EQ(field_of(c), "materials.classes[1]");
+  c.materials->classes = {};
+  EXPECT_EQ(field_of(c), "materials.classes");
+  c.materials = MaterialRandomizationConfig{{"car"}, std::nullopt, std::nullopt, std::nullopt};
+  EXPECT_EQ(field_of(c), "materials.classes");
+  c.materials->roughness = Eigen::Vector2d(0.2, 1.2);
+  EXPECT_EQ(field_of(c), "materials.roughness[1]");
+}
+
 // The sun direction in NED: a sun due east at 30 degrees lights along -east and down.
 TEST(DomainRandomizationTest, SunDirectionClosedForm) {
   const Eigen::Vector3d d = CalcSunDirection_W(90.0, 30.0);

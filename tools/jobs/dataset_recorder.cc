@@ -252,14 +252,23 @@ void DatasetRecorder::PlanCaptures(const engine::Mission& mission,
   }
 }
 
-void DatasetRecorder::SetRandomization(const engine::DomainRandomizationConfig& config,
-                                       std::uint64_t seed) {
+void DatasetRecorder::SetRandomization(const engine::Mission& mission, std::uint64_t seed) {
+  const engine::DomainRandomizationConfig& config = mission.randomize;
+  std::vector<std::uint8_t> class_ids;
+  try {
+    class_ids = engine::ResolveMaterialClasses(config, world_.scene().classes);
+  } catch (const engine::InvalidField& e) {
+    const std::string key = "randomize." + e.field();
+    engine::SourceLocation where = mission.locate ? mission.locate(key) : engine::SourceLocation{};
+    if (where.file.empty()) where.file = mission.file;
+    throw engine::ConfigError(where, key, e.problem());
+  }
   randomize_ = config;
   randomize_seed_ = seed;
   const engine::SceneLighting lighting = world_.scene().lighting;
   for (engine::ImageSensor* image : recorded_) {
-    image->set_conditions([config, seed, lighting](engine::TimeNs now_ns) {
-      return engine::DrawDomain(config, seed, now_ns, lighting).ToFrameConditions();
+    image->set_conditions([config, seed, lighting, class_ids](engine::TimeNs now_ns) {
+      return engine::DrawDomain(config, seed, now_ns, lighting).ToFrameConditions(class_ids);
     });
   }
 }

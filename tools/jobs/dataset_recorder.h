@@ -67,10 +67,11 @@ class DatasetRecorder {
   /// camera cannot give exactly (its rate divided by a whole number). Call before the flight.
   void PlanCaptures(const engine::Mission& mission, const std::vector<std::size_t>& vehicles);
 
-  /// Renders every recorded camera's frames under conditions drawn from `config` (domain
-  /// randomization; engine::DrawDomain with `seed`) and writes the drawn values into each frame's
-  /// row of poses.csv (DomainColumns). Call before the flight.
-  void SetRandomization(const engine::DomainRandomizationConfig& config, std::uint64_t seed);
+  /// Renders every recorded camera's frames under conditions drawn from `mission.randomize`
+  /// (domain randomization; engine::DrawDomain with `seed`) and writes the drawn values into each
+  /// frame's row of poses.csv (DomainColumns). Throws ConfigError at the key (file:line:col) for a
+  /// randomized class the scene lacks. Call before the flight.
+  void SetRandomization(const engine::Mission& mission, std::uint64_t seed);
 
   /// Starts or stops recording of vehicle `vehicle`'s cameras and lidars (a capture step of its
   /// track); rate_hz > 0 records every n-th camera frame (as PlanCaptures checked); the lidars

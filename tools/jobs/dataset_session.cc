@@ -69,7 +69,7 @@ DatasetSession::DatasetSession(SimulationJob& job, const DatasetWriteOptions& o,
   if (mission) recorder_->PlanCaptures(*mission, mission_vehicles);
   if (mission && mission->randomize.any()) {
     recorder_->SetRandomization(
-        mission->randomize, engine::RandomStreams(job.scene().seed).SeedFor("dataset/randomize"));
+        *mission, engine::RandomStreams(job.scene().seed).SeedFor("dataset/randomize"));
   }
   if (!o.resume) PrepareEmptyOutputFolder(o.out, "--out");
   const nlohmann::json start =

@@ -57,6 +57,16 @@ std::vector<std::uint8_t> Bytes(const fs::path& dir, const char* kind, std::int6
   return engine::ReadFileBytes(dir / "cam" / kind / name);
 }
 
+// Frame `frame` of `dir` differs from that of `plain` in colour only: its depth and labels are the
+// same bytes.
+void ExpectColourOnlyChanged(const fs::path& dir, const fs::path& plain, std::int64_t frame) {
+  EXPECT_NE(Bytes(dir, "rgb", frame), Bytes(plain, "rgb", frame)) << "frame " << frame;
+  EXPECT_EQ(Bytes(dir, "depth", frame), Bytes(plain, "depth", frame)) << "frame " << frame;
+  EXPECT_EQ(Bytes(dir, "seg_class", frame), Bytes(plain, "seg_class", frame)) << "frame " << frame;
+  EXPECT_EQ(Bytes(dir, "seg_instance", frame), Bytes(plain, "seg_instance", frame))
+      << "frame " << frame;
+}
+
 TEST(DatasetRandomizeTest, SameSeedSameDrawsInRangeAndLabelsUnchanged) {
   const fs::path plain = RunWith("rand_plain", "");
   const fs::path a = RunWith("rand_a", kEverything);
@@ -86,12 +96,8 @@ TEST(DatasetRandomizeTest, SameSeedSameDrawsInRangeAndLabelsUnchanged) {
     }
     EXPECT_GE(csv.Number(r, csv.Column("fog_distance_m")), 30.0);
     EXPECT_LE(csv.Number(r, csv.Column("fog_distance_m")), 300.0);
-    const std::int64_t frame = csv.Integer(r, csv.Column("frame"));
     // Colour changes; depth and labels are the same bytes as without randomization.
-    EXPECT_NE(Bytes(a, "rgb", frame), Bytes(plain, "rgb", frame));
-    EXPECT_EQ(Bytes(a, "depth", frame), Bytes(plain, "depth", frame));
-    EXPECT_EQ(Bytes(a, "seg_class", frame), Bytes(plain, "seg_class", frame));
-    EXPECT_EQ(Bytes(a, "seg_instance", frame), Bytes(plain, "seg_instance", frame));
+    ExpectColourOnlyChanged(a, plain, csv.Integer(r, csv.Column("frame")));
   }
   EXPECT_EQ(Text(a / "cam" / "coco_instances.json"), Text(plain / "cam" / "coco_instances.json"));
   EXPECT_EQ(Text(plain / "cam" / "poses.csv").find("exposure_ev"), std::string::npos);
@@ -115,6 +121,51 @@ TEST(DatasetRandomizeTest, DrawnTimeOfDayPlacesTheWrittenSun) {
     EXPECT_NEAR(csv.Number(r, csv.Column("sun_elevation_deg")), elevation, 1e-6) << "row " << r;
     EXPECT_NEAR(csv.Number(r, csv.Column("sun_azimuth_deg")), azimuth, 1e-6) << "row " << r;
   }
+}
+
+// Randomized materials of the crate's class (car) change its colour, not depth, labels or COCO;
+// the draws written are the seed's.
+TEST(DatasetRandomizeTest, RandomizedMaterialsChangeTheColourOnly) {
+  const fs::path plain = RunWith("rand_mat_plain", "");
+  const fs::path dir =
+      RunWith("rand_mat",
+              "randomize: {materials: {classes: [car], value: [0.3, 0.6], hue_deg: [60, 120]}}\n");
+  engine::DomainRandomizationConfig config;
+  config.materials = engine::MaterialRandomizationConfig{
+      {"car"}, Eigen::Vector2d(0.3, 0.6), Eigen::Vector2d(60, 120), std::nullopt};
+  const std::uint64_t seed = engine::RandomStreams(3).SeedFor("dataset/randomize");
+  const engine::CsvText csv = engine::ReadCsvText(dir / "cam" / "poses.csv");
+  ASSERT_GT(csv.rows.size(), 2u);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const engine::TimeNs t = csv.Integer(r, csv.Column("time_ns"));
+    const engine::DomainDraw draw = engine::DrawDomain(config, seed, t, engine::SceneLighting{});
+    EXPECT_NEAR(csv.Number(r, csv.Column("material_car_value")), draw.materials[0].value, 1e-9);
+    EXPECT_NEAR(csv.Number(r, csv.Column("material_car_hue_deg")), draw.materials[0].hue_deg, 1e-9);
+    ExpectColourOnlyChanged(dir, plain, csv.Integer(r, csv.Column("frame")));
+  }
+  EXPECT_EQ(Text(dir / "cam" / "coco_instances.json"), Text(plain / "cam" / "coco_instances.json"));
+}
+
+// A class the scene lacks is refused before anything is written, at its place in the mission.
+TEST(DatasetRandomizeTest, AMaterialClassTheSceneLacksIsRefused) {
+  DatasetJobOptions o;
+  o.scene.path = airis::testing::WriteTempFile("rand_scene.yaml", kScene).string();
+  o.mission =
+      airis::testing::WriteTempFile(
+          "rand_bad_class_mission.yaml",
+          std::string("randomize:\n  materials: {classes: [cars], value: [0.5, 1]}\n") + kSteps)
+          .string();
+  o.out = (airis::testing::TestTempDir() / "rand_bad_class").string();
+  try {
+    RunDatasetJob(o);
+    FAIL() << "accepted";
+  } catch (const engine::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("rand_bad_class_mission.yaml:2:"), std::string::npos) << what;
+    EXPECT_NE(what.find("randomize.materials.classes[0]"), std::string::npos) << what;
+    EXPECT_NE(what.find("no class 'cars' (did you mean 'car'?)"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(o.out) / "manifest.json"));
 }
 
 // The exposure written beside a frame is the one it was rendered with: the plain frame exposed
