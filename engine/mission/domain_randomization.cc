@@ -65,12 +65,15 @@ void DomainRandomizationConfig::Validate() const {
   RequireRange("rain_mm_per_h", rain_mm_per_h, 0.0, 200.0);
   RequireRange("exposure_ev", exposure_ev, -20.0, 20.0);
   RequireRange("read_noise_e", read_noise_e, 0.0, 1e4);
+  RequireRange("full_well_e", full_well_e, 100.0, 1e6);
+  if (overcast_share) RequireInRange("overcast_share", *overcast_share, 0.0, 1.0);
   if (materials) WithFieldPrefix("materials.", [&] { materials->Validate(); });
 }
 
 bool DomainRandomizationConfig::any() const {
   return time_of_day_h || sun_elevation_deg || sun_azimuth_deg || fog_distance_m || visibility_m ||
-         turbidity || rain_mm_per_h || exposure_ev || read_noise_e || materials;
+         turbidity || rain_mm_per_h || exposure_ev || read_noise_e || full_well_e ||
+         overcast_share || materials;
 }
 
 DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t seed, TimeNs time_ns,
@@ -103,6 +106,10 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
   d.rain_mm_per_h = Draw(stream, "rain_mm_per_h", config.rain_mm_per_h);
   d.exposure_ev = Draw(stream, "exposure_ev", config.exposure_ev);
   d.read_noise_e = Draw(stream, "read_noise_e", config.read_noise_e);
+  d.full_well_e = Draw(stream, "full_well_e", config.full_well_e);
+  if (config.overcast_share) {
+    d.overcast = *Draw(stream, "overcast", Eigen::Vector2d(0.0, 1.0)) < *config.overcast_share;
+  }
   if (config.materials) {
     const MaterialRandomizationConfig& m = *config.materials;
     for (const std::string& name : m.classes) {
@@ -154,6 +161,8 @@ FrameConditions DomainDraw::ToFrameConditions(std::span<const std::uint8_t> clas
   c.rain_mm_per_h = rain_mm_per_h;
   c.exposure_ev_offset = exposure_ev.value_or(0.0);
   c.read_noise_e = read_noise_e;
+  c.full_well_e = full_well_e;
+  if (overcast.value_or(false)) c.sky = SkyModel::kOvercast;
   return c;
 }
 
@@ -170,6 +179,8 @@ std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) 
   if (config.rain_mm_per_h) out.push_back("rain_mm_per_h");
   if (config.exposure_ev) out.push_back("exposure_ev");
   if (config.read_noise_e) out.push_back("read_noise_e");
+  if (config.full_well_e) out.push_back("full_well_e");
+  if (config.overcast_share) out.push_back("overcast");
   if (config.materials) {
     for (const std::string& name : config.materials->classes) {
       if (config.materials->value) out.push_back("material_" + name + "_value");
@@ -193,6 +204,8 @@ std::vector<double> DomainValues(const DomainRandomizationConfig& config, const 
   if (config.rain_mm_per_h) out.push_back(*draw.rain_mm_per_h);
   if (config.exposure_ev) out.push_back(*draw.exposure_ev);
   if (config.read_noise_e) out.push_back(*draw.read_noise_e);
+  if (config.full_well_e) out.push_back(*draw.full_well_e);
+  if (config.overcast_share) out.push_back(*draw.overcast ? 1.0 : 0.0);
   if (config.materials) {
     for (const ClassMaterialChange& change : draw.materials) {
       if (config.materials->value) out.push_back(change.value);

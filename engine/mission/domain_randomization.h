@@ -56,6 +56,8 @@ struct DomainRandomizationConfig {
   std::optional<Eigen::Vector2d> rain_mm_per_h;
   std::optional<Eigen::Vector2d> exposure_ev;
   std::optional<Eigen::Vector2d> read_noise_e;
+  std::optional<Eigen::Vector2d> full_well_e;
+  std::optional<double> overcast_share;
   std::optional<MaterialRandomizationConfig> materials;
 
   template <class V>
@@ -80,6 +82,12 @@ struct DomainRandomizationConfig {
             "[lo, hi]: added to every camera's exposure (EV stops; docs/rendering.md)");
     v.Field("read_noise_e", read_noise_e,
             "[lo, hi]: every camera's read noise (electrons); turns its sensor noise on");
+    v.Field("full_well_e", full_well_e,
+            "[lo, hi]: every camera's full well (electrons, 100 to 1e6): the shot noise's "
+            "scale; turns its sensor noise on");
+    v.Field("overcast_share", overcast_share,
+            "share of draws (0 to 1) under an overcast sky (no sun, no shadows); the others keep "
+            "the scene's sky");
     v.Field("materials", materials,
             "the materials of some classes: value, hue and roughness drawn per class");
   }
@@ -102,6 +110,8 @@ struct DomainDraw {
   std::optional<double> rain_mm_per_h;
   std::optional<double> exposure_ev;
   std::optional<double> read_noise_e;
+  std::optional<double> full_well_e;
+  std::optional<bool> overcast;  ///< set when overcast_share is given
   /// One per class of MaterialRandomizationConfig::classes, in order: the ranges' draws, the
   /// others left as they are (value 1, hue 0, no roughness).
   std::vector<ClassMaterialChange> materials;

@@ -72,7 +72,8 @@ CameraEffects::CameraEffects(const CameraEffectsConfig& config, const CameraIntr
 }
 
 bool CameraEffects::active(const CameraEffectsAdjustment& adjustment) const {
-  return config_.any() || adjustment.exposure_ev_offset != 0.0 || adjustment.read_noise_e;
+  return config_.any() || adjustment.exposure_ev_offset != 0.0 || adjustment.read_noise_e ||
+         adjustment.full_well_e;
 }
 
 double CameraEffects::MeterEv(const Image<std::uint8_t>& rgba) const {
@@ -98,7 +99,7 @@ double CameraEffects::Apply(Image<std::uint8_t>& rgba, TimeNs time_ns,
   double ev = config_.exposure_ev + adjustment.exposure_ev_offset;
   if (config_.auto_exposure) ev += MeterEv(rgba);
   const double scale = std::exp2(ev);
-  const bool noise = config_.noise || adjustment.read_noise_e.has_value();
+  const bool noise = config_.noise || adjustment.read_noise_e || adjustment.full_well_e;
   const auto& decode = DecodeTable();
   if (!noise && vignetting_.empty()) {
     // Exposure alone maps each code to one code.
@@ -109,7 +110,7 @@ double CameraEffects::Apply(Image<std::uint8_t>& rgba, TimeNs time_ns,
     }
     return ev;
   }
-  const double full_well_e = config_.full_well_e;
+  const double full_well_e = adjustment.full_well_e.value_or(config_.full_well_e);
   const double read_e = adjustment.read_noise_e.value_or(config_.read_noise_e);
   const double dn_to_step = kEncodeSteps / (std::ldexp(1.0, config_.adc_bits) - 1.0);
   const auto& encode = EncodeTable();

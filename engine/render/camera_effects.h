@@ -80,6 +80,7 @@ struct CameraEffectsConfig {
 struct CameraEffectsAdjustment {
   double exposure_ev_offset = 0.0;     ///< added to the exposure (EV stops)
   std::optional<double> read_noise_e;  ///< replaces the read noise and turns noise on
+  std::optional<double> full_well_e;   ///< replaces the full well and turns noise on
 };
 
 /// Digital number of a pixel whose mean signal is `mean_e` electrons (EMVA 1288's linear camera

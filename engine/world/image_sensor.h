@@ -86,6 +86,8 @@ struct FrameConditions {
   std::optional<double> rain_mm_per_h;   ///< rain rate (SceneLighting::rain_mm_per_h)
   double exposure_ev_offset = 0.0;       ///< added to the camera's exposure (EV stops)
   std::optional<double> read_noise_e;    ///< replaces the camera's read noise, turns noise on
+  std::optional<double> full_well_e;     ///< replaces the camera's full well, turns noise on
+  std::optional<SkyModel> sky;           ///< replaces the scene's sky (a drawn overcast)
   std::vector<ClassMaterialChange> class_materials;  ///< materials changed in the colour image
 };
 

@@ -115,7 +115,7 @@ engine::ImageStream MakeImageStream(const std::string& name, const CameraConfig&
 void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameConditions& conditions,
                       engine::CameraRenderer& renderer) {
   if (!conditions.sun_direction_W && !conditions.fog_distance_m && !conditions.turbidity &&
-      !conditions.rain_mm_per_h) {
+      !conditions.rain_mm_per_h && !conditions.sky) {
     renderer.set_lighting(std::nullopt);
     return;
   }
@@ -125,6 +125,7 @@ void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameCon
     lighting.fog_distance_m = static_cast<float>(*conditions.fog_distance_m);
   }
   if (conditions.turbidity) lighting.turbidity = static_cast<float>(*conditions.turbidity);
+  if (conditions.sky) lighting.sky = *conditions.sky;
   if (conditions.rain_mm_per_h) {
     lighting.rain_mm_per_h = static_cast<float>(*conditions.rain_mm_per_h);
   }
@@ -134,7 +135,7 @@ void SetFrameLighting(const engine::SceneLighting& scene, const engine::FrameCon
 void ApplyEffects(const engine::CameraEffects& effects, const engine::FrameConditions& conditions,
                   engine::CameraFrame& frame) {
   const engine::CameraEffectsAdjustment adjustment{conditions.exposure_ev_offset,
-                                                   conditions.read_noise_e};
+                                                   conditions.read_noise_e, conditions.full_well_e};
   if (frame.rgba.empty() || !effects.active(adjustment)) return;
   effects.Apply(frame.rgba, frame.time_ns, adjustment);
 }

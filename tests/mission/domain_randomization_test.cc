@@ -199,6 +199,41 @@ TEST(DomainRandomizationTest, MaterialClassesAreTheScenes) {
   EXPECT_EQ(field_of(c), "materials.roughness[1]");
 }
 
+// The weather draws overcast with the share given, the conditions then ask for the overcast sky;
+// the full well is drawn in its range and passed on.
+TEST(DomainRandomizationTest, OvercastShareAndFullWell) {
+  DomainRandomizationConfig c;
+  c.overcast_share = 0.3;
+  c.full_well_e = Eigen::Vector2d(2000.0, 9000.0);
+  c.Validate();
+  EXPECT_TRUE(c.any());
+  EXPECT_EQ(DomainColumns(c), (std::vector<std::string>{"full_well_e", "overcast"}));
+  const SceneLighting scene;
+  int overcast = 0;
+  const int n = 400;
+  for (int k = 1; k <= n; ++k) {
+    const DomainDraw d = DrawDomain(c, 2, k * kFrame, scene);
+    const FrameConditions f = d.ToFrameConditions();
+    ASSERT_TRUE(d.overcast);
+    EXPECT_EQ(f.sky.has_value(), *d.overcast);
+    if (f.sky) {
+      EXPECT_EQ(*f.sky, SkyModel::kOvercast);
+    }
+    overcast += *d.overcast ? 1 : 0;
+    EXPECT_GE(*f.full_well_e, 2000.0);
+    EXPECT_LT(*f.full_well_e, 9000.0);
+    EXPECT_EQ(DomainValues(c, d)[1], *d.overcast ? 1.0 : 0.0);
+  }
+  // Binomial(400, 0.3): mean 120, standard deviation 9.2; five of them either way.
+  EXPECT_NEAR(overcast, 120, 46);
+  c.overcast_share = 0.0;
+  EXPECT_FALSE(*DrawDomain(c, 2, kFrame, scene).overcast);
+  c.overcast_share = 1.0;
+  EXPECT_TRUE(*DrawDomain(c, 2, kFrame, scene).overcast);
+  c.overcast_share = 1.5;
+  EXPECT_THROW(c.Validate(), InvalidField);
+}
+
 // The sun direction in NED: a sun due east at 30 degrees lights along -east and down.
 TEST(DomainRandomizationTest, SunDirectionClosedForm) {
   const Eigen::Vector3d d = CalcSunDirection_W(90.0, 30.0);

@@ -158,11 +158,30 @@ TEST(CameraEffectsTest, NoiseIsReproducibleFromSeedAndTime) {
   EXPECT_NE(first, Flat(32, 24, 120).pixels);
 }
 
+// A frame's adjusted full well renders as a camera configured with it: the same bytes, noise
+// turned on by the adjustment.
+TEST(CameraEffectsTest, AnAdjustedFullWellIsTheConfiguredOne) {
+  const CameraIntrinsics k = Pinhole(32, 24, 60.0);
+  CameraEffectsConfig configured;
+  configured.noise = true;
+  configured.full_well_e = 1500.0;
+  const CameraEffects with_it(configured, k, 7);
+  const CameraEffects plain(CameraEffectsConfig{}, k, 7);
+  CameraEffectsAdjustment adjustment;
+  adjustment.full_well_e = 1500.0;
+  EXPECT_TRUE(plain.active(adjustment));
+  Image<std::uint8_t> a = Flat(32, 24, 120), b = Flat(32, 24, 120);
+  with_it.Apply(a, 1000);
+  plain.Apply(b, 1000, adjustment);
+  EXPECT_EQ(a.pixels, b.pixels);
+  EXPECT_NE(a.pixels, Flat(32, 24, 120).pixels);
+}
+
 TEST(CameraEffectsTest, AllOffByDefault) {
   EXPECT_FALSE(CameraEffectsConfig{}.any());
   EXPECT_FALSE(CameraEffects(CameraEffectsConfig{}, Pinhole(4, 4, 60.0), 1).active());
   EXPECT_TRUE(CameraEffects(CameraEffectsConfig{}, Pinhole(4, 4, 60.0), 1)
-                  .active({0.0, std::optional<double>(2.0)}));
+                  .active({0.0, std::optional<double>(2.0), std::nullopt}));
 }
 
 TEST(CameraEffectsTest, ValidateNamesTheField) {
