@@ -44,11 +44,12 @@ void MaterialRandomizationConfig::Validate() const {
               "'" + classes[i] + "' is listed twice");
     }
   }
-  Require(value || hue_deg || roughness, "classes",
-          "give at least one of value, hue_deg and roughness to draw");
+  Require(value || hue_deg || roughness || pattern_scale, "classes",
+          "give at least one of value, hue_deg, roughness and pattern_scale to draw");
   RequireRange("value", value, 0.0, 4.0);
   RequireRange("hue_deg", hue_deg, -180.0, 180.0);
   RequireRange("roughness", roughness, 0.0, 1.0);
+  RequireRange("pattern_scale", pattern_scale, 0.25, 4.0);
 }
 
 void DomainRandomizationConfig::Validate() const {
@@ -118,6 +119,8 @@ DomainDraw DrawDomain(const DomainRandomizationConfig& config, std::uint64_t see
       change.value = Draw(stream, (key + "value").c_str(), m.value).value_or(1.0);
       change.hue_deg = Draw(stream, (key + "hue_deg").c_str(), m.hue_deg).value_or(0.0);
       change.roughness = Draw(stream, (key + "roughness").c_str(), m.roughness);
+      change.pattern_scale =
+          Draw(stream, (key + "pattern_scale").c_str(), m.pattern_scale).value_or(1.0);
       d.materials.push_back(change);
     }
   }
@@ -186,6 +189,7 @@ std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) 
       if (config.materials->value) out.push_back("material_" + name + "_value");
       if (config.materials->hue_deg) out.push_back("material_" + name + "_hue_deg");
       if (config.materials->roughness) out.push_back("material_" + name + "_roughness");
+      if (config.materials->pattern_scale) out.push_back("material_" + name + "_pattern_scale");
     }
   }
   return out;
@@ -211,6 +215,7 @@ std::vector<double> DomainValues(const DomainRandomizationConfig& config, const 
       if (config.materials->value) out.push_back(change.value);
       if (config.materials->hue_deg) out.push_back(change.hue_deg);
       if (config.materials->roughness) out.push_back(*change.roughness);
+      if (config.materials->pattern_scale) out.push_back(change.pattern_scale);
     }
   }
   return out;

@@ -22,12 +22,14 @@ enum class RandomizeEvery {
 std::span<const EnumName<RandomizeEvery>> EnumNames(RandomizeEvery);
 
 /// Randomized materials of some classes (`randomize.materials`): each listed class draws its own
-/// base colour value, hue turn and roughness (ClassMaterialChange), from the ranges given.
+/// base colour value, hue turn, roughness and pattern size (ClassMaterialChange), from the ranges
+/// given.
 struct MaterialRandomizationConfig {
   std::vector<std::string> classes;
   std::optional<Eigen::Vector2d> value;
   std::optional<Eigen::Vector2d> hue_deg;
   std::optional<Eigen::Vector2d> roughness;
+  std::optional<Eigen::Vector2d> pattern_scale;
 
   template <class V>
   void Visit(V& v) {
@@ -36,6 +38,9 @@ struct MaterialRandomizationConfig {
     v.Field("hue_deg", hue_deg,
             "[lo, hi]: turn of the base colour's hue about the grey axis (deg, -180 to 180)");
     v.Field("roughness", roughness, "[lo, hi]: the roughness, replacing the material's (0 to 1)");
+    v.Field("pattern_scale", pattern_scale,
+            "[lo, hi]: factor on the size of the surface pattern (storeys, windows, lanes, bark, "
+            "leaves; 0.25 to 4)");
   }
   /// Throws InvalidField: no class, a class twice, no range, or a range out of its bounds.
   void Validate() const;

@@ -382,6 +382,9 @@ void ApplyClassMaterials(std::span<const ClassMaterialChange> changes,
         instance.class_id < 256 ? of_class[instance.class_id] : nullptr;
     if (change == nullptr) continue;
     ChangeBaseColour(instance.material.base_color_rgba, change->value, change->hue_deg);
+    for (float& size : instance.material.pattern_size_m) {
+      size = static_cast<float>(size * change->pattern_scale);
+    }
     if (change->roughness) {
       instance.material.surface[0] =
           static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(*change->roughness, 0.0, 1.0)));

@@ -35,13 +35,15 @@ struct SemanticClass {
 
 /// A change of one class's materials for a frame (a dataset's randomized materials,
 /// docs/dataset-format.md): the base colour's hue turned by `hue_deg` about the grey axis and its
-/// linear value scaled by `value`, the roughness replaced when given. The colour image alone
+/// linear value scaled by `value`, the roughness replaced when given, the surface pattern's size
+/// (storeys and windows, lanes, bark, leaves) scaled by `pattern_scale`. The colour image alone
 /// changes.
 struct ClassMaterialChange {
   std::uint8_t class_id = kNoClass;
   double value = 1.0;
   double hue_deg = 0.0;
   std::optional<double> roughness;
+  double pattern_scale = 1.0;
 };
 
 /// A procedural surface detail the renderer adds to a material's base colour, in the metric

@@ -134,8 +134,11 @@ TEST(DomainRandomizationTest, TimeOfDayPlacesTheSunByTheScenesLatitudeAndDate) {
 // classes, and its change goes to the class id the scene gives it.
 TEST(DomainRandomizationTest, MaterialsAreDrawnPerClass) {
   DomainRandomizationConfig c;
-  c.materials = MaterialRandomizationConfig{
-      {"building", "car"}, Eigen::Vector2d(0.5, 1.5), Eigen::Vector2d(-30.0, 30.0), std::nullopt};
+  c.materials = MaterialRandomizationConfig{{"building", "car"},
+                                            Eigen::Vector2d(0.5, 1.5),
+                                            Eigen::Vector2d(-30.0, 30.0),
+                                            std::nullopt,
+                                            std::nullopt};
   c.Validate();
   EXPECT_EQ(DomainColumns(c),
             (std::vector<std::string>{"material_building_value", "material_building_hue_deg",
@@ -169,7 +172,7 @@ TEST(DomainRandomizationTest, MaterialsAreDrawnPerClass) {
 TEST(DomainRandomizationTest, MaterialClassesAreTheScenes) {
   DomainRandomizationConfig c;
   c.materials = MaterialRandomizationConfig{
-      {"car", "bilding"}, Eigen::Vector2d(0.5, 1.5), std::nullopt, std::nullopt};
+      {"car", "bilding"}, Eigen::Vector2d(0.5, 1.5), std::nullopt, std::nullopt, std::nullopt};
   const std::vector<SemanticClass> classes{{3, "building"}, {8, "car"}};
   try {
     ResolveMaterialClasses(c, classes);
@@ -193,10 +196,17 @@ TEST(DomainRandomizationTest, MaterialClassesAreTheScenes) {
   EXPECT_EQ(field_of(c), "materials.classes[1]");
   c.materials->classes = {};
   EXPECT_EQ(field_of(c), "materials.classes");
-  c.materials = MaterialRandomizationConfig{{"car"}, std::nullopt, std::nullopt, std::nullopt};
+  c.materials =
+      MaterialRandomizationConfig{{"car"}, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
   EXPECT_EQ(field_of(c), "materials.classes");
   c.materials->roughness = Eigen::Vector2d(0.2, 1.2);
   EXPECT_EQ(field_of(c), "materials.roughness[1]");
+  c.materials->roughness.reset();
+  c.materials->pattern_scale = Eigen::Vector2d(0.1, 2.0);
+  EXPECT_EQ(field_of(c), "materials.pattern_scale[0]");
+  c.materials->pattern_scale = Eigen::Vector2d(0.5, 2.0);
+  EXPECT_EQ(field_of(c), "valid");
+  EXPECT_EQ(DomainColumns(c), (std::vector<std::string>{"material_car_pattern_scale"}));
 }
 
 // The weather draws overcast with the share given, the conditions then ask for the overcast sky;

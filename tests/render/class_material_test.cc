@@ -41,22 +41,27 @@ TEST(ClassMaterialTest, OnlyTheNamedClassesChange) {
   car.class_id = 7;
   car.material.base_color_rgba[0] = 200;
   car.material.surface[0] = 50;
+  car.material.pattern_size_m[0] = 3.0f;
+  car.material.pattern_size_m[1] = 2.0f;
   GpuInstance tree = car;
   tree.class_id = 9;
   std::vector<GpuInstance> instances{car, tree, car};
-  const std::vector<ClassMaterialChange> changes{{7, 0.5, 120.0, 0.8}};
+  const std::vector<ClassMaterialChange> changes{{7, 0.5, 120.0, 0.8, 1.5}};
   ApplyClassMaterials(changes, instances);
   for (int i : {0, 2}) {
     EXPECT_EQ(instances[i].material.base_color_rgba[0], 0);
     EXPECT_EQ(instances[i].material.base_color_rgba[1], 100);
     EXPECT_EQ(instances[i].material.surface[0], 204);  // 0.8 of 255
+    EXPECT_EQ(instances[i].material.pattern_size_m[0], 4.5f);
+    EXPECT_EQ(instances[i].material.pattern_size_m[1], 3.0f);
     EXPECT_EQ(instances[i].class_id, 7u);
   }
   EXPECT_EQ(instances[1].material.base_color_rgba[0], 200);
   EXPECT_EQ(instances[1].material.surface[0], 50);
+  EXPECT_EQ(instances[1].material.pattern_size_m[0], 3.0f);
   // A change without roughness keeps the material's.
   std::vector<GpuInstance> kept{car};
-  ApplyClassMaterials(std::vector<ClassMaterialChange>{{7, 1.0, 0.0, std::nullopt}}, kept);
+  ApplyClassMaterials(std::vector<ClassMaterialChange>{{7, 1.0, 0.0, std::nullopt, 1.0}}, kept);
   EXPECT_EQ(kept[0].material.surface[0], 50);
   EXPECT_EQ(kept[0].material.base_color_rgba[0], 200);
 }

@@ -132,7 +132,7 @@ TEST(DatasetRandomizeTest, RandomizedMaterialsChangeTheColourOnly) {
               "randomize: {materials: {classes: [car], value: [0.3, 0.6], hue_deg: [60, 120]}}\n");
   engine::DomainRandomizationConfig config;
   config.materials = engine::MaterialRandomizationConfig{
-      {"car"}, Eigen::Vector2d(0.3, 0.6), Eigen::Vector2d(60, 120), std::nullopt};
+      {"car"}, Eigen::Vector2d(0.3, 0.6), Eigen::Vector2d(60, 120), std::nullopt, std::nullopt};
   const std::uint64_t seed = engine::RandomStreams(3).SeedFor("dataset/randomize");
   const engine::CsvText csv = engine::ReadCsvText(dir / "cam" / "poses.csv");
   ASSERT_GT(csv.rows.size(), 2u);

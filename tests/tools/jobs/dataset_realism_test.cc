@@ -83,7 +83,8 @@ TEST(DatasetRealismTest, RealismChangesTheColourImagesOnly) {
             " motion_blur: true, exposure_time_s: 0.02, rolling_shutter_readout_s: 0.03}"),
       std::string("randomize: {sun_elevation_deg: [10, 60], sun_azimuth_deg: [0, 360],"
                   " exposure_ev: [-0.5, 0.5], full_well_e: [2000, 8000], overcast_share: 0.5,"
-                  " materials: {classes: [car], value: [0.5, 1.5], roughness: [0.1, 0.9]}}\n") +
+                  " materials: {classes: [car], value: [0.5, 1.5], roughness: [0.1, 0.9], "
+                  "pattern_scale: [0.5, 2]}}\n") +
           kSteps);
   // THEN every frame's depth and labels are the same bytes, and its colour is not
   const engine::CsvText poses = engine::ReadCsvText(real / "cam" / "poses.csv");
