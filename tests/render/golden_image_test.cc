@@ -10,6 +10,7 @@
 #include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
 #include "engine/render/motion_blur.h"
+#include "engine/render/rolling_shutter.h"
 #include "tests/fixtures/temp_dir.h"
 #include "tests/render/render_test_util.h"
 
@@ -175,6 +176,51 @@ TEST(GoldenImageTest, MotionBlurMatchesTheGoldenImage) {
   motion.w_C = Eigen::Vector3d(0.0, M_PI, 1.0);
   ApplyMotionBlur(frame.rgba, frame.depth_planar_m, kGoldenCamera, motion, 1.0 / 60.0);
   ExpectMatchesGolden(frame, "motion_blur");
+}
+
+TEST(GoldenImageTest, RoofSoilRockAndBarkMatchTheGoldenImage) {
+  // Bare soil, a roofed block, a rock outcrop and a trunk under a clear sky.
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 400.0, 1);
+  scene.materials.back().base_color_rgb = {0.36f, 0.29f, 0.21f};
+  const auto pattern = [&](SurfacePattern p, Eigen::Vector2f size_m, float roughness) {
+    scene.materials.back().pattern = p;
+    scene.materials.back().pattern_size_m = size_m;
+    scene.materials.back().roughness = roughness;
+  };
+  pattern(SurfacePattern::kSoil, {0.6f, 0.25f}, 0.95f);
+  testing::AddBox(scene, {30.0, -10.0, -5.0}, {14.0, 10.0, 10.0}, 2, 2, {0.55f, 0.25f, 0.2f});
+  pattern(SurfacePattern::kRoof, {0.4f, 0.3f}, 0.8f);
+  testing::AddBox(scene, {26.0, 6.0, -3.0}, {8.0, 7.0, 6.0}, 6, 3, {0.45f, 0.44f, 0.42f});
+  pattern(SurfacePattern::kRock, {1.5f, 0.4f}, 0.9f);
+  testing::AddBox(scene, {15.0, 1.0, -4.0}, {0.8f, 0.8f, 8.0}, 5, 4, {0.35f, 0.27f, 0.2f});
+  pattern(SurfacePattern::kBark, {0.25f, 0.06f}, 0.9f);
+  scene.lighting.sky = SkyModel::kClear;
+  scene.lighting.sun_direction_W = Eigen::Vector3d(0.5, 0.6, 0.62).normalized();
+  ExpectMatchesGolden(RenderGolden(scene), "materials_roof_soil_rock_bark");
+}
+
+TEST(GoldenImageTest, RainMatchesTheGoldenImage) {
+  // The lit scene in 50 mm/h of rain: the streaks and the contrast lost with distance.
+  StaticScene scene = MakeGoldenScene(WriteCheckerTexture());
+  scene.lighting.rain_mm_per_h = 50.0f;
+  ExpectMatchesGolden(RenderGolden(scene), "rain");
+}
+
+TEST(GoldenImageTest, RollingShutterMatchesTheGoldenImage) {
+  // The lit scene from a camera yawing right at 180 deg/s with a 30 ms readout: vertical edges
+  // slanted by 15 px between the top and bottom rows.
+  EglContext& context = testing::SharedContext();
+  GpuScene gpu(MakeGoldenScene(WriteCheckerTexture()));
+  RenderOutputs outputs;
+  outputs.depth_planar = true;
+  CameraRenderer renderer(context, kGoldenCamera, outputs);
+  CameraFrame frame;
+  renderer.Render(gpu, kGoldenPose, 0, frame);
+  CameraMotion motion;
+  motion.w_C = Eigen::Vector3d(0.0, M_PI, 0.0);
+  ApplyRollingShutter(frame.rgba, frame.depth_planar_m, kGoldenCamera, motion, 0.03);
+  ExpectMatchesGolden(frame, "rolling_shutter");
 }
 
 }  // namespace
