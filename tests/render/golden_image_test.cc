@@ -160,6 +160,26 @@ TEST(GoldenImageTest, SensorEffectsMatchTheGoldenImage) {
   ExpectMatchesGolden(frame, "sensor_effects");
 }
 
+// Each effect alone, so that a change in one shows in its own image.
+TEST(GoldenImageTest, EachSensorEffectAloneMatchesItsGoldenImage) {
+  const CameraFrame lit = RenderGolden(MakeGoldenScene(WriteCheckerTexture()));
+  CameraEffectsConfig exposure;
+  exposure.exposure_ev = -1.0;
+  CameraEffectsConfig vignetting;
+  vignetting.vignetting = true;
+  CameraEffectsConfig noise;
+  noise.noise = true;
+  noise.full_well_e = 1000.0;
+  noise.read_noise_e = 8.0;
+  for (const auto& [config, name] :
+       {std::pair{exposure, "exposure"}, std::pair{vignetting, "vignetting"},
+        std::pair{noise, "sensor_noise"}}) {
+    CameraFrame frame = lit;
+    CameraEffects(config, kGoldenCamera, 7).Apply(frame.rgba, 0);
+    ExpectMatchesGolden(frame, name);
+  }
+}
+
 TEST(GoldenImageTest, MotionBlurMatchesTheGoldenImage) {
   // The lit scene from a camera flying forward at 8 m/s while yawing right at 180 deg/s (5 px in
   // the exposure) and rolling, 1/60 s: edges smeared sideways (rotation) and outwards (forward
