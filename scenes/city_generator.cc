@@ -155,10 +155,12 @@ class CityBuilder {
       car_model_ = b_.AddModel(std::move(car));
       const Eigen::Vector3d palette[] = {
           {0.8, 0.1, 0.1}, {0.1, 0.2, 0.6}, {0.85, 0.85, 0.85}, {0.1, 0.1, 0.1}, {0.5, 0.5, 0.52}};
-      // Car paint: a glossy dielectric (the clear coat over the pigment).
+      // Car paint: metallic flakes in the pigment under a clear coat (the car_paint pattern).
       for (const auto& rgb : palette) {
         engine::Material paint = Colored(rgb, "car");
-        paint.roughness = 0.3f;
+        paint.pattern = engine::SurfacePattern::kCarPaint;
+        paint.roughness = 0.4f;
+        paint.metallic = 0.3f;
         car_colors_.push_back(static_cast<std::int32_t>(b_.Material(paint)));
       }
     }

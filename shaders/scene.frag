@@ -136,6 +136,20 @@ void main() {
                       : ground_bounce;
   rgb += sky_scale * mix(mirrored, sky_mean, roughness) *
          EnvironmentReflectance(max(dot(n, view), 1e-4), roughness, f0);
+#if PATTERN == 10
+  // Car paint: a clear coat over the layer above (the pigment, and its metallic flakes through the
+  // material's metallic and roughness). The coat is a smooth dielectric (roughness 0.05, F0 0.04):
+  // it mirrors the sun and the sky sharply and passes on the light it does not reflect.
+  {
+    const float kCoatRoughness = 0.05;
+    vec3 coat = EnvironmentReflectance(max(dot(n, view), 1e-4), kCoatRoughness, vec3(0.04));
+    rgb *= 1.0 - coat;
+    if (visibility > 0.0) {
+      rgb += sun_light * SpecularSun(n, view, u_to_sun_C, kCoatRoughness, vec3(0.04)) * visibility;
+    }
+    rgb += sky_scale * mirrored * coat;
+  }
+#endif
   if (u_fog_distance_m > 0.0) {
     // Optical depth from the camera to the surface: d / fog distance, times the mean of the density
     // exp(-h / H) along the segment in height fog: from h_c to h_s = h_c + x H it is

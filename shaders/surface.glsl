@@ -16,6 +16,7 @@ const uint kPatternSoil = 6u;
 const uint kPatternRock = 7u;
 const uint kPatternBark = 8u;
 const uint kPatternFoliage = 9u;
+const uint kPatternCarPaint = 10u;  // shading only (scene.frag): a clear coat
 
 // What a pattern makes of a point of the surface.
 struct Surface {

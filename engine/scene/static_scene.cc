@@ -40,6 +40,7 @@ std::span<const EnumName<SurfacePattern>> EnumNames(SurfacePattern) {
       {SurfacePattern::kRock, "rock"},
       {SurfacePattern::kBark, "bark"},
       {SurfacePattern::kFoliage, "foliage"},
+      {SurfacePattern::kCarPaint, "car_paint"},
   }};
   return kNames;
 }

@@ -60,11 +60,12 @@ enum class SurfacePattern : std::uint8_t {
   kRock,      ///< rock with strata
   kBark,      ///< a trunk: furrows along its axis
   kFoliage,   ///< a crown: clumps of leaves with gaps of shade
+  kCarPaint,  ///< a glossy clear coat over the pigment (and the material's metallic flakes)
 };
 /// How many SurfacePattern values there are.
-inline constexpr std::size_t kSurfacePatterns = 10;
+inline constexpr std::size_t kSurfacePatterns = 11;
 /// Spellings of SurfacePattern in files: plain, facade, roof, asphalt, sidewalk, grass, soil, rock,
-/// bark, foliage.
+/// bark, foliage, car_paint.
 std::span<const EnumName<SurfacePattern>> EnumNames(SurfacePattern);
 
 /// Surface appearance for rendering and contact response.

@@ -220,6 +220,25 @@ TEST(GoldenImageTest, RoofSoilRockAndBarkMatchTheGoldenImage) {
   ExpectMatchesGolden(RenderGolden(scene), "materials_roof_soil_rock_bark");
 }
 
+TEST(GoldenImageTest, CarPaintMatchesTheGoldenImage) {
+  // Three car-sized boxes under a clear sky, the sun ahead-left: red paint with the clear coat, the
+  // same pigment without it, and silver paint; the coat mirrors the sun and sky on the tops.
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 400.0, 1);
+  const auto paint = [&](Eigen::Vector3d centre, Eigen::Vector3f rgb, bool coat, int id) {
+    testing::AddBox(scene, centre, {4.5, 1.8, 1.4}, 7, id, rgb);
+    scene.materials.back().roughness = 0.4f;
+    scene.materials.back().metallic = 0.3f;
+    if (coat) scene.materials.back().pattern = SurfacePattern::kCarPaint;
+  };
+  paint({12.0, -3.0, -0.7}, {0.8f, 0.1f, 0.1f}, true, 2);
+  paint({12.0, 3.0, -0.7}, {0.8f, 0.1f, 0.1f}, false, 3);
+  paint({20.0, 0.0, -0.7}, {0.6f, 0.6f, 0.62f}, true, 4);
+  scene.lighting.sky = SkyModel::kClear;
+  scene.lighting.sun_direction_W = Eigen::Vector3d(-0.8, 0.3, 0.5).normalized();
+  ExpectMatchesGolden(RenderGolden(scene), "car_paint");
+}
+
 TEST(GoldenImageTest, RainMatchesTheGoldenImage) {
   // The lit scene in 50 mm/h of rain: the streaks and the contrast lost with distance.
   StaticScene scene = MakeGoldenScene(WriteCheckerTexture());

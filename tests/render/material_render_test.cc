@@ -158,6 +158,34 @@ TEST(MaterialRenderTest, BlackMetalIsAlmostBlackFaceOnAndDielectricsReflectMoreA
   EXPECT_GT(grazing, 2.0 * steep);
 }
 
+// GIVEN black, rough paint (roughness 0.6) on the ground, once bare and once under the car_paint
+// clear coat (a smooth dielectric, F0 0.04)
+// THEN the coat adds the sky's mirror image: brighter face on, and far brighter at grazing angles,
+// where Fresnel's reflectance of a smooth coat rises toward 1 while the rough paint's stays blurred
+TEST(MaterialRenderTest, CarPaintsClearCoatMirrorsTheSky) {
+  StaticScene scene = testing::MakeEmptyScene();
+  testing::AddGround(scene, 4000.0, 1);
+  Material& ground = scene.materials.back();
+  ground.base_color_rgb.setZero();
+  ground.roughness = 0.6f;
+  SceneLighting light;
+  light.sun_direction_W = Eigen::Vector3d(-0.3, 0.0, 0.9).normalized();  // behind the camera
+  const auto camera = CameraIntrinsics::FromHorizontalFov(64, 48, 60.0, 0.1, 5000.0);
+  const Eigen::Isometry3d down = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -M_PI / 2);
+  const Eigen::Isometry3d oblique = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -10.0 * M_PI / 180);
+  const CameraFrame bare = testing::RenderColourDepthLabels(scene, light, camera, down);
+  const CameraFrame bare_oblique = testing::RenderColourDepthLabels(scene, light, camera, oblique);
+  ground.pattern = SurfacePattern::kCarPaint;
+  const CameraFrame coated = testing::RenderColourDepthLabels(scene, light, camera, down);
+  const CameraFrame coated_oblique =
+      testing::RenderColourDepthLabels(scene, light, camera, oblique);
+  EXPECT_GT(Luminance(coated, 32, 24), Luminance(bare, 32, 24));
+  EXPECT_GT(Luminance(coated_oblique, 32, 16), 1.5 * Luminance(bare_oblique, 32, 16));
+  // Depth and labels do not see it.
+  EXPECT_EQ(coated.depth_planar_m.pixels, bare.depth_planar_m.pixels);
+  EXPECT_EQ(coated.class_id.pixels, bare.class_id.pixels);
+}
+
 // Writes a w x h PNG whose every pixel is `rgb` (top half `rgb`, bottom half `bottom_rgb` when
 // given) and returns its path.
 std::string WritePng(const std::string& name, const cv::Vec3b& rgb, int w = 8, int h = 8,
