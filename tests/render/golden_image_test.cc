@@ -88,13 +88,29 @@ void ExpectMatchesGolden(const CameraFrame& frame, const std::string& name) {
 const CameraIntrinsics kGoldenCamera = CameraIntrinsics::FromHorizontalFov(160, 120, 75.0);
 const Eigen::Isometry3d kGoldenPose = testing::LookPose({0.0, 0.0, -6.0}, 0.05, -0.12);
 
-CameraFrame RenderGolden(const StaticScene& scene) {
+// `outputs`: the colour image, and the planar depth the camera-motion effects need.
+CameraFrame RenderGolden(const StaticScene& scene, const RenderOutputs& outputs = {}) {
   EglContext& context = testing::SharedContext();
   GpuScene gpu(scene);
-  CameraRenderer renderer(context, kGoldenCamera, RenderOutputs{});
+  CameraRenderer renderer(context, kGoldenCamera, outputs);
   CameraFrame frame;
   renderer.Render(gpu, kGoldenPose, 0, frame);
   return frame;
+}
+
+// Gives the material last added `pattern` with its lengths and roughness.
+void SetPattern(StaticScene& scene, SurfacePattern pattern, Eigen::Vector2f size_m,
+                float roughness) {
+  scene.materials.back().pattern = pattern;
+  scene.materials.back().pattern_size_m = size_m;
+  scene.materials.back().roughness = roughness;
+}
+
+// The lit scene with its planar depth (for the camera-motion effects).
+CameraFrame RenderLitWithDepth() {
+  RenderOutputs outputs;
+  outputs.depth_planar = true;
+  return RenderGolden(MakeGoldenScene(WriteCheckerTexture()), outputs);
 }
 
 TEST(GoldenImageTest, LitSceneMatchesTheGoldenImage) {
@@ -124,23 +140,18 @@ TEST(GoldenImageTest, MaterialsMatchTheGoldenImage) {
   StaticScene scene = testing::MakeEmptyScene();
   testing::AddGround(scene, 400.0, 1);
   scene.materials.back().base_color_rgb = {0.33f, 0.42f, 0.27f};
-  const auto pattern = [&](SurfacePattern p, Eigen::Vector2f size_m, float roughness) {
-    scene.materials.back().pattern = p;
-    scene.materials.back().pattern_size_m = size_m;
-    scene.materials.back().roughness = roughness;
-  };
-  pattern(SurfacePattern::kGrass, {12.0f, 0.5f}, 0.9f);
+  SetPattern(scene, SurfacePattern::kGrass, {12.0f, 0.5f}, 0.9f);
   testing::AddBox(scene, {30.0, 0.0, 0.0}, {60.0, 8.0, 0.1}, 4, 2, {0.25f, 0.25f, 0.26f});
-  pattern(SurfacePattern::kAsphalt, {3.5f, 9.0f}, 0.85f);
+  SetPattern(scene, SurfacePattern::kAsphalt, {3.5f, 9.0f}, 0.85f);
   testing::AddBox(scene, {30.0, -12.0, -9.0}, {14.0, 10.0, 18.0}, 2, 3, {0.75f, 0.7f, 0.62f});
-  pattern(SurfacePattern::kFacade, {3.0f, 2.8f}, 0.85f);
+  SetPattern(scene, SurfacePattern::kFacade, {3.0f, 2.8f}, 0.85f);
   testing::AddBox(scene, {30.0, 5.5, -0.05}, {60.0, 3.0, 0.2}, 4, 4, {0.6f, 0.6f, 0.58f});
-  pattern(SurfacePattern::kSidewalk, {1.2f, 1.2f}, 0.8f);
+  SetPattern(scene, SurfacePattern::kSidewalk, {1.2f, 1.2f}, 0.8f);
   testing::AddBox(scene, {14.0, 5.0, -1.0}, {2.0, 2.0, 2.0}, 3, 5, {0.9f, 0.9f, 0.92f});
   scene.materials.back().metallic = 1.0f;
   scene.materials.back().roughness = 0.35f;
   testing::AddBox(scene, {18.0, -4.0, -2.5}, {3.0, 3.0, 3.0}, 5, 6, {0.2f, 0.45f, 0.15f});
-  pattern(SurfacePattern::kFoliage, {0.9f, 0.12f}, 0.85f);
+  SetPattern(scene, SurfacePattern::kFoliage, {0.9f, 0.12f}, 0.85f);
   scene.lighting.sky = SkyModel::kClear;
   scene.lighting.sun_direction_W = Eigen::Vector3d(0.5, 0.6, 0.62).normalized();
   ExpectMatchesGolden(RenderGolden(scene), "materials");
@@ -184,13 +195,7 @@ TEST(GoldenImageTest, MotionBlurMatchesTheGoldenImage) {
   // The lit scene from a camera flying forward at 8 m/s while yawing right at 180 deg/s (5 px in
   // the exposure) and rolling, 1/60 s: edges smeared sideways (rotation) and outwards (forward
   // flight), the sky by the rotation only.
-  EglContext& context = testing::SharedContext();
-  GpuScene gpu(MakeGoldenScene(WriteCheckerTexture()));
-  RenderOutputs outputs;
-  outputs.depth_planar = true;
-  CameraRenderer renderer(context, kGoldenCamera, outputs);
-  CameraFrame frame;
-  renderer.Render(gpu, kGoldenPose, 0, frame);
+  CameraFrame frame = RenderLitWithDepth();
   CameraMotion motion;
   motion.v_C = Eigen::Vector3d(0.0, 0.0, 8.0);
   motion.w_C = Eigen::Vector3d(0.0, M_PI, 1.0);
@@ -203,18 +208,13 @@ TEST(GoldenImageTest, RoofSoilRockAndBarkMatchTheGoldenImage) {
   StaticScene scene = testing::MakeEmptyScene();
   testing::AddGround(scene, 400.0, 1);
   scene.materials.back().base_color_rgb = {0.36f, 0.29f, 0.21f};
-  const auto pattern = [&](SurfacePattern p, Eigen::Vector2f size_m, float roughness) {
-    scene.materials.back().pattern = p;
-    scene.materials.back().pattern_size_m = size_m;
-    scene.materials.back().roughness = roughness;
-  };
-  pattern(SurfacePattern::kSoil, {0.6f, 0.25f}, 0.95f);
+  SetPattern(scene, SurfacePattern::kSoil, {0.6f, 0.25f}, 0.95f);
   testing::AddBox(scene, {30.0, -10.0, -5.0}, {14.0, 10.0, 10.0}, 2, 2, {0.55f, 0.25f, 0.2f});
-  pattern(SurfacePattern::kRoof, {0.4f, 0.3f}, 0.8f);
+  SetPattern(scene, SurfacePattern::kRoof, {0.4f, 0.3f}, 0.8f);
   testing::AddBox(scene, {26.0, 6.0, -3.0}, {8.0, 7.0, 6.0}, 6, 3, {0.45f, 0.44f, 0.42f});
-  pattern(SurfacePattern::kRock, {1.5f, 0.4f}, 0.9f);
+  SetPattern(scene, SurfacePattern::kRock, {1.5f, 0.4f}, 0.9f);
   testing::AddBox(scene, {15.0, 1.0, -4.0}, {0.8f, 0.8f, 8.0}, 5, 4, {0.35f, 0.27f, 0.2f});
-  pattern(SurfacePattern::kBark, {0.25f, 0.06f}, 0.9f);
+  SetPattern(scene, SurfacePattern::kBark, {0.25f, 0.06f}, 0.9f);
   scene.lighting.sky = SkyModel::kClear;
   scene.lighting.sun_direction_W = Eigen::Vector3d(0.5, 0.6, 0.62).normalized();
   ExpectMatchesGolden(RenderGolden(scene), "materials_roof_soil_rock_bark");
@@ -249,13 +249,7 @@ TEST(GoldenImageTest, RainMatchesTheGoldenImage) {
 TEST(GoldenImageTest, RollingShutterMatchesTheGoldenImage) {
   // The lit scene from a camera yawing right at 180 deg/s with a 30 ms readout: vertical edges
   // slanted by 15 px between the top and bottom rows.
-  EglContext& context = testing::SharedContext();
-  GpuScene gpu(MakeGoldenScene(WriteCheckerTexture()));
-  RenderOutputs outputs;
-  outputs.depth_planar = true;
-  CameraRenderer renderer(context, kGoldenCamera, outputs);
-  CameraFrame frame;
-  renderer.Render(gpu, kGoldenPose, 0, frame);
+  CameraFrame frame = RenderLitWithDepth();
   CameraMotion motion;
   motion.w_C = Eigen::Vector3d(0.0, M_PI, 0.0);
   ApplyRollingShutter(frame.rgba, frame.depth_planar_m, kGoldenCamera, motion, 0.03);

@@ -125,24 +125,35 @@ TEST(MaterialRenderTest, FacadeHasTheStoreysAndWindowColumnsOfItsPattern) {
   EXPECT_EQ(CountDarkRuns(column, 0.6), 6);
 }
 
+// Black ground of `roughness` under a sun behind the camera, seen by a 64x48 camera 10 m up looking
+// straight down and 10 degrees down.
+struct BlackGround {
+  StaticScene scene = testing::MakeEmptyScene();
+  SceneLighting light;
+  CameraIntrinsics camera = CameraIntrinsics::FromHorizontalFov(64, 48, 60.0, 0.1, 5000.0);
+  Eigen::Isometry3d down = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -M_PI / 2);
+  Eigen::Isometry3d oblique = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -10.0 * M_PI / 180);
+
+  explicit BlackGround(float roughness) {
+    testing::AddGround(scene, 4000.0, 1);
+    material().base_color_rgb.setZero();
+    material().roughness = roughness;
+    light.sun_direction_W = Eigen::Vector3d(-0.3, 0.0, 0.9).normalized();
+  }
+  Material& material() { return scene.materials.back(); }
+  CameraFrame Render(const Eigen::Isometry3d& T_WC) const {
+    return testing::RenderColourDepthLabels(scene, light, camera, T_WC);
+  }
+};
+
 TEST(MaterialRenderTest, BlackMetalIsAlmostBlackFaceOnAndDielectricsReflectMoreAtGrazingAngles) {
   // GIVEN black ground, once a metal (F0 = albedo = 0) and once a dielectric (F0 = 0.04)
-  StaticScene scene = testing::MakeEmptyScene();
-  testing::AddGround(scene, 4000.0, 1);
-  Material& ground = scene.materials.back();
-  ground.base_color_rgb.setZero();
-  ground.roughness = 0.3f;
-  SceneLighting light;
-  light.sun_direction_W = Eigen::Vector3d(-0.3, 0.0, 0.9).normalized();  // behind the camera
-  const auto camera = CameraIntrinsics::FromHorizontalFov(64, 48, 60.0, 0.1, 5000.0);
-  const Eigen::Isometry3d down = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -M_PI / 2);
-  const Eigen::Isometry3d oblique = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -10.0 * M_PI / 180);
-  ground.metallic = 1.0f;
-  const CameraFrame metal = testing::RenderColourDepthLabels(scene, light, camera, down);
-  ground.metallic = 0.0f;
-  const CameraFrame dielectric = testing::RenderColourDepthLabels(scene, light, camera, down);
-  const CameraFrame dielectric_oblique =
-      testing::RenderColourDepthLabels(scene, light, camera, oblique);
+  BlackGround ground(0.3f);
+  ground.material().metallic = 1.0f;
+  const CameraFrame metal = ground.Render(ground.down);
+  ground.material().metallic = 0.0f;
+  const CameraFrame dielectric = ground.Render(ground.down);
+  const CameraFrame dielectric_oblique = ground.Render(ground.oblique);
   // THEN seen face on the metal reflects almost nothing (Schlick: F = F0 = 0; what is left is the
   // bias of Karis's fit of the sky's reflectance, 0.003 at roughness 0.3) and the dielectric
   // reflects the sky's 4% and the sun's highlight
@@ -163,22 +174,12 @@ TEST(MaterialRenderTest, BlackMetalIsAlmostBlackFaceOnAndDielectricsReflectMoreA
 // THEN the coat adds the sky's mirror image: brighter face on, and far brighter at grazing angles,
 // where Fresnel's reflectance of a smooth coat rises toward 1 while the rough paint's stays blurred
 TEST(MaterialRenderTest, CarPaintsClearCoatMirrorsTheSky) {
-  StaticScene scene = testing::MakeEmptyScene();
-  testing::AddGround(scene, 4000.0, 1);
-  Material& ground = scene.materials.back();
-  ground.base_color_rgb.setZero();
-  ground.roughness = 0.6f;
-  SceneLighting light;
-  light.sun_direction_W = Eigen::Vector3d(-0.3, 0.0, 0.9).normalized();  // behind the camera
-  const auto camera = CameraIntrinsics::FromHorizontalFov(64, 48, 60.0, 0.1, 5000.0);
-  const Eigen::Isometry3d down = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -M_PI / 2);
-  const Eigen::Isometry3d oblique = testing::LookPose({0.0, 0.0, -10.0}, 0.0, -10.0 * M_PI / 180);
-  const CameraFrame bare = testing::RenderColourDepthLabels(scene, light, camera, down);
-  const CameraFrame bare_oblique = testing::RenderColourDepthLabels(scene, light, camera, oblique);
-  ground.pattern = SurfacePattern::kCarPaint;
-  const CameraFrame coated = testing::RenderColourDepthLabels(scene, light, camera, down);
-  const CameraFrame coated_oblique =
-      testing::RenderColourDepthLabels(scene, light, camera, oblique);
+  BlackGround ground(0.6f);
+  const CameraFrame bare = ground.Render(ground.down);
+  const CameraFrame bare_oblique = ground.Render(ground.oblique);
+  ground.material().pattern = SurfacePattern::kCarPaint;
+  const CameraFrame coated = ground.Render(ground.down);
+  const CameraFrame coated_oblique = ground.Render(ground.oblique);
   EXPECT_GT(Luminance(coated, 32, 24), Luminance(bare, 32, 24));
   EXPECT_GT(Luminance(coated_oblique, 32, 16), 1.5 * Luminance(bare_oblique, 32, 16));
   // Depth and labels do not see it.

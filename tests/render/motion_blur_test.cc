@@ -9,21 +9,12 @@
 #include <cmath>
 
 #include "engine/core/random.h"
-#include "engine/render/srgb.h"
+#include "tests/render/edge_image.h"
 
 namespace airis::engine {
 namespace {
 
-CameraIntrinsics Intrinsics(int width, int height) {
-  CameraIntrinsics k;
-  k.width_px = width;
-  k.height_px = height;
-  k.fx_px = 300.0;
-  k.fy_px = 310.0;
-  k.cx_px = 0.5 * (width - 1) + 3.0;
-  k.cy_px = 0.5 * (height - 1) - 2.0;
-  return k;
-}
+using testing::EdgeImage;
 
 /// Pixel of the point p_C0 (camera frame at t = 0) seen from the camera after it moved for `dt`:
 /// the camera's centre at v dt, its axes turned by w dt (both in the camera's frame at t = 0).
@@ -37,7 +28,7 @@ Eigen::Vector2d ProjectAfter(const CameraIntrinsics& k, const CameraMotion& m,
 // GIVEN random camera motions, pixels and depths
 // THEN the pixel velocity is the derivative of the static point's projection (central difference)
 TEST(MotionBlurTest, PixelVelocityIsTheDerivativeOfTheProjection) {
-  const CameraIntrinsics k = Intrinsics(640, 480);
+  const CameraIntrinsics k = testing::EdgeCamera(640, 480);
   RandomStream rng(7);
   for (int trial = 0; trial < 200; ++trial) {
     CameraMotion m;
@@ -62,27 +53,6 @@ TEST(MotionBlurTest, PixelVelocityIsTheDerivativeOfTheProjection) {
   EXPECT_NEAR(sky.y(), 0.0, 1e-9);
 }
 
-/// A w x h image, black left of column `edge` and white from it on, at planar depth `depth_m`.
-struct EdgeImage {
-  Image<std::uint8_t> rgba;
-  Image<float> depth;
-  EdgeImage(int w, int h, int edge, float depth_m) {
-    rgba.Resize(w, h, 4);
-    depth.Resize(w, h, 1);
-    for (int v = 0; v < h; ++v) {
-      for (int u = 0; u < w; ++u) {
-        std::uint8_t* p = &rgba.pixels[4 * (static_cast<std::size_t>(v) * w + u)];
-        p[0] = p[1] = p[2] = u >= edge ? 255 : 0;
-        p[3] = 255;
-        depth.pixels[static_cast<std::size_t>(v) * w + u] = depth_m;
-      }
-    }
-  }
-  double Linear(int u, int v) const {
-    return srgb::DecodeTable()[rgba.pixels[4 * (static_cast<std::size_t>(v) * rgba.width + u)]];
-  }
-};
-
 // GIVEN a wall 10 m ahead, black on the left and white on the right, and a camera moving 20 m/s
 //       to its right with a 1/30 s exposure: the wall moves 300 * 20 / 10 * (1/30) = 20 px left
 // THEN across the edge the linear light rises as the box filter of 20 px makes it: 0 and 1 more
@@ -90,7 +60,7 @@ struct EdgeImage {
 // AND a still camera, or a motion of under half a pixel, leaves every byte as it was
 TEST(MotionBlurTest, AnEdgeBecomesTheRampTheExposureMakes) {
   const int w = 200, h = 40, edge = 100;
-  const CameraIntrinsics k = Intrinsics(w, h);
+  const CameraIntrinsics k = testing::EdgeCamera(w, h);
   EdgeImage image(w, h, edge, 10.0f);
   CameraMotion m;
   m.v_C = Eigen::Vector3d(20.0, 0.0, 0.0);
@@ -125,7 +95,7 @@ TEST(MotionBlurTest, AnEdgeBecomesTheRampTheExposureMakes) {
 // THEN a camera moving sideways leaves it sharp, and one turning blurs it
 TEST(MotionBlurTest, TheSkyBlursWithRotationOnly) {
   const int w = 200, h = 40, edge = 100;
-  const CameraIntrinsics k = Intrinsics(w, h);
+  const CameraIntrinsics k = testing::EdgeCamera(w, h);
   EdgeImage moving(w, h, edge, kSkyDepthM);
   const std::vector<std::uint8_t> before = moving.rgba.pixels;
   CameraMotion sideways;

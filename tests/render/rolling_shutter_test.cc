@@ -10,45 +10,12 @@
 #include <vector>
 
 #include "engine/render/motion_blur.h"
+#include "tests/render/edge_image.h"
 
 namespace airis::engine {
 namespace {
 
-CameraIntrinsics Intrinsics(int width, int height) {
-  CameraIntrinsics k;
-  k.width_px = width;
-  k.height_px = height;
-  k.fx_px = 300.0;
-  k.fy_px = 310.0;
-  k.cx_px = 0.5 * (width - 1) + 3.0;
-  k.cy_px = 0.5 * (height - 1) - 2.0;
-  return k;
-}
-
-/// A w x h image, black left of column `edge` and white from it on, at planar depth `depth_m`.
-struct EdgeImage {
-  Image<std::uint8_t> rgba;
-  Image<float> depth;
-  EdgeImage(int w, int h, int edge, float depth_m) {
-    rgba.Resize(w, h, 4);
-    depth.Resize(w, h, 1);
-    for (int v = 0; v < h; ++v) {
-      for (int u = 0; u < w; ++u) {
-        std::uint8_t* p = &rgba.pixels[4 * (static_cast<std::size_t>(v) * w + u)];
-        p[0] = p[1] = p[2] = u >= edge ? 255 : 0;
-        p[3] = 255;
-        depth.pixels[static_cast<std::size_t>(v) * w + u] = depth_m;
-      }
-    }
-  }
-  // The first white column of row v (w when none).
-  int EdgeOfRow(int v) const {
-    for (int u = 0; u < rgba.width; ++u) {
-      if (rgba.pixels[4 * (static_cast<std::size_t>(v) * rgba.width + u)] == 255) return u;
-    }
-    return rgba.width;
-  }
-};
+using testing::EdgeImage;
 
 TEST(RollingShutterTest, RowsAreReadTopToBottomAroundTheFramesTime) {
   EXPECT_DOUBLE_EQ(CalcRowTime_s(0, 481, 0.03), -0.015);
@@ -80,7 +47,7 @@ void ExpectSlant(const EdgeImage& image, const CameraIntrinsics& k, const Camera
 // one way, the bottom row the other), and the middle row is the sharp image's
 TEST(RollingShutterTest, ATurningCameraSlantsAnEdgeInTheSky) {
   const int w = 200, h = 61, edge = 100;
-  const CameraIntrinsics k = Intrinsics(w, h);
+  const CameraIntrinsics k = testing::EdgeCamera(w, h);
   EdgeImage image(w, h, edge, std::numeric_limits<float>::infinity());
   CameraMotion m;
   m.w_C = Eigen::Vector3d(0.0, 2.0, 0.0);
@@ -94,7 +61,7 @@ TEST(RollingShutterTest, ATurningCameraSlantsAnEdgeInTheSky) {
 // edge in the sky as it was
 TEST(RollingShutterTest, AMovingCameraSlantsANearWallNotTheSky) {
   const int w = 200, h = 61, edge = 100;
-  const CameraIntrinsics k = Intrinsics(w, h);
+  const CameraIntrinsics k = testing::EdgeCamera(w, h);
   CameraMotion m;
   m.v_C = Eigen::Vector3d(20.0, 0.0, 0.0);
   EdgeImage wall(w, h, edge, 10.0f);
@@ -109,7 +76,7 @@ TEST(RollingShutterTest, AMovingCameraSlantsANearWallNotTheSky) {
 // A still camera, or a readout too short to move anything half a pixel, changes no byte.
 TEST(RollingShutterTest, NoMotionLeavesTheImageAsItWas) {
   const int w = 120, h = 41, edge = 60;
-  const CameraIntrinsics k = Intrinsics(w, h);
+  const CameraIntrinsics k = testing::EdgeCamera(w, h);
   EdgeImage image(w, h, edge, 10.0f);
   const std::vector<std::uint8_t> before = image.rgba.pixels;
   ApplyRollingShutter(image.rgba, image.depth, k, CameraMotion{}, 0.05);
