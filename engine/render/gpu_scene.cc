@@ -356,7 +356,7 @@ GpuInstance MakeInstance(const Eigen::Matrix4d& T_CP, std::uint32_t class_id,
 
 }  // namespace
 
-void ChangeBaseColour(std::uint8_t rgb[3], double value, double hue_deg) {
+Eigen::Matrix3d CalcColourChange(double value, double hue_deg) {
   const double a = DegToRad(hue_deg);
   const double c = std::cos(a), s = std::sin(a);
   // Rotation by a about the unit axis (1, 1, 1) / sqrt 3: c I + (1 - c) n n^T + s [n]x.
@@ -365,8 +365,11 @@ void ChangeBaseColour(std::uint8_t rgb[3], double value, double hue_deg) {
   R << c + k, k - r, k + r,  //
       k + r, c + k, k - r,   //
       k - r, k + r, c + k;
-  const Eigen::Vector3d in(rgb[0], rgb[1], rgb[2]);
-  const Eigen::Vector3d out = value * (R * in);
+  return value * R;
+}
+
+void ChangeBaseColour(std::uint8_t rgb[3], const Eigen::Matrix3d& change) {
+  const Eigen::Vector3d out = change * Eigen::Vector3d(rgb[0], rgb[1], rgb[2]);
   for (int i = 0; i < 3; ++i) {
     rgb[i] = static_cast<std::uint8_t>(std::lround(std::clamp(out[i], 0.0, 255.0)));
   }
@@ -375,13 +378,18 @@ void ChangeBaseColour(std::uint8_t rgb[3], double value, double hue_deg) {
 void ApplyClassMaterials(std::span<const ClassMaterialChange> changes,
                          std::vector<GpuInstance>& instances) {
   if (changes.empty()) return;
+  // The colour maps once per change, not per instance (a forest has tens of thousands in view).
   std::array<const ClassMaterialChange*, 256> of_class{};
-  for (const ClassMaterialChange& change : changes) of_class[change.class_id] = &change;
+  std::array<Eigen::Matrix3d, 256> colour{};
+  for (const ClassMaterialChange& change : changes) {
+    of_class[change.class_id] = &change;
+    colour[change.class_id] = CalcColourChange(change.value, change.hue_deg);
+  }
   for (GpuInstance& instance : instances) {
     const ClassMaterialChange* change =
         instance.class_id < 256 ? of_class[instance.class_id] : nullptr;
     if (change == nullptr) continue;
-    ChangeBaseColour(instance.material.base_color_rgba, change->value, change->hue_deg);
+    ChangeBaseColour(instance.material.base_color_rgba, colour[instance.class_id]);
     for (float& size : instance.material.pattern_size_m) {
       size = static_cast<float>(size * change->pattern_scale);
     }

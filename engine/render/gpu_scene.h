@@ -32,10 +32,12 @@ struct GpuInstance {
   GpuMaterialParams material;
 };
 
-/// The base colour `rgb` (linear, 8 bits a channel) with its hue turned by `hue_deg` about the grey
-/// axis (Rodrigues' rotation about (1, 1, 1) / sqrt 3, which keeps greys and the channels' mean)
-/// and scaled by `value`, clipped to [0, 255] and rounded.
-void ChangeBaseColour(std::uint8_t rgb[3], double value, double hue_deg);
+/// The linear map that turns a colour's hue by `hue_deg` about the grey axis (Rodrigues' rotation
+/// about (1, 1, 1) / sqrt 3, which keeps greys and the channels' mean) and scales it by `value`.
+Eigen::Matrix3d CalcColourChange(double value, double hue_deg);
+/// The base colour `rgb` (linear, 8 bits a channel) changed by `change` (CalcColourChange),
+/// clipped to [0, 255] and rounded.
+void ChangeBaseColour(std::uint8_t rgb[3], const Eigen::Matrix3d& change);
 
 /// Applies `changes` to the materials of `instances` of their classes (colour and roughness; the
 /// labels stay).

@@ -13,7 +13,7 @@ namespace airis::engine {
 namespace {
 
 std::array<std::uint8_t, 3> Changed(std::array<std::uint8_t, 3> rgb, double value, double hue) {
-  ChangeBaseColour(rgb.data(), value, hue);
+  ChangeBaseColour(rgb.data(), CalcColourChange(value, hue));
   return rgb;
 }
 
