@@ -169,55 +169,55 @@ FrameConditions DomainDraw::ToFrameConditions(std::span<const std::uint8_t> clas
   return c;
 }
 
+namespace {
+
+// Calls emit(column, value) for every value a draw of `config` writes, in the columns' order;
+// `draw` null: the columns alone (value 0). The one list DomainColumns and DomainValues share.
+template <class Emit>
+void ForEachDomainValue(const DomainRandomizationConfig& config, const DomainDraw* draw,
+                        Emit emit) {
+  const auto value = [&](const std::optional<double> DomainDraw::*member) {
+    return draw != nullptr ? *(draw->*member) : 0.0;
+  };
+  if (config.time_of_day_h) emit("time_of_day_h", value(&DomainDraw::time_of_day_h));
+  if (config.time_of_day_h || config.sun_elevation_deg || config.sun_azimuth_deg) {
+    emit("sun_elevation_deg", value(&DomainDraw::sun_elevation_deg));
+    emit("sun_azimuth_deg", value(&DomainDraw::sun_azimuth_deg));
+  }
+  if (config.fog_distance_m) emit("fog_distance_m", value(&DomainDraw::fog_distance_m));
+  if (config.visibility_m) emit("visibility_m", value(&DomainDraw::visibility_m));
+  if (config.turbidity) emit("turbidity", value(&DomainDraw::turbidity));
+  if (config.rain_mm_per_h) emit("rain_mm_per_h", value(&DomainDraw::rain_mm_per_h));
+  if (config.exposure_ev) emit("exposure_ev", value(&DomainDraw::exposure_ev));
+  if (config.read_noise_e) emit("read_noise_e", value(&DomainDraw::read_noise_e));
+  if (config.full_well_e) emit("full_well_e", value(&DomainDraw::full_well_e));
+  if (config.overcast_share) emit("overcast", draw != nullptr && *draw->overcast ? 1.0 : 0.0);
+  if (!config.materials) return;
+  const MaterialRandomizationConfig& m = *config.materials;
+  for (std::size_t i = 0; i < m.classes.size(); ++i) {
+    const ClassMaterialChange none;
+    const ClassMaterialChange& c = draw != nullptr ? draw->materials[i] : none;
+    const std::string prefix = "material_" + m.classes[i] + "_";
+    if (m.value) emit(prefix + "value", c.value);
+    if (m.hue_deg) emit(prefix + "hue_deg", c.hue_deg);
+    if (m.roughness) emit(prefix + "roughness", c.roughness.value_or(0.0));
+    if (m.pattern_scale) emit(prefix + "pattern_scale", c.pattern_scale);
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> DomainColumns(const DomainRandomizationConfig& config) {
   std::vector<std::string> out;
-  if (config.time_of_day_h) out.push_back("time_of_day_h");
-  if (config.time_of_day_h || config.sun_elevation_deg || config.sun_azimuth_deg) {
-    out.push_back("sun_elevation_deg");
-    out.push_back("sun_azimuth_deg");
-  }
-  if (config.fog_distance_m) out.push_back("fog_distance_m");
-  if (config.visibility_m) out.push_back("visibility_m");
-  if (config.turbidity) out.push_back("turbidity");
-  if (config.rain_mm_per_h) out.push_back("rain_mm_per_h");
-  if (config.exposure_ev) out.push_back("exposure_ev");
-  if (config.read_noise_e) out.push_back("read_noise_e");
-  if (config.full_well_e) out.push_back("full_well_e");
-  if (config.overcast_share) out.push_back("overcast");
-  if (config.materials) {
-    for (const std::string& name : config.materials->classes) {
-      if (config.materials->value) out.push_back("material_" + name + "_value");
-      if (config.materials->hue_deg) out.push_back("material_" + name + "_hue_deg");
-      if (config.materials->roughness) out.push_back("material_" + name + "_roughness");
-      if (config.materials->pattern_scale) out.push_back("material_" + name + "_pattern_scale");
-    }
-  }
+  ForEachDomainValue(config, nullptr,
+                     [&](const std::string& column, double) { out.push_back(column); });
   return out;
 }
 
 std::vector<double> DomainValues(const DomainRandomizationConfig& config, const DomainDraw& draw) {
   std::vector<double> out;
-  if (config.time_of_day_h) out.push_back(*draw.time_of_day_h);
-  if (config.time_of_day_h || config.sun_elevation_deg || config.sun_azimuth_deg) {
-    out.push_back(*draw.sun_elevation_deg);
-    out.push_back(*draw.sun_azimuth_deg);
-  }
-  if (config.fog_distance_m) out.push_back(*draw.fog_distance_m);
-  if (config.visibility_m) out.push_back(*draw.visibility_m);
-  if (config.turbidity) out.push_back(*draw.turbidity);
-  if (config.rain_mm_per_h) out.push_back(*draw.rain_mm_per_h);
-  if (config.exposure_ev) out.push_back(*draw.exposure_ev);
-  if (config.read_noise_e) out.push_back(*draw.read_noise_e);
-  if (config.full_well_e) out.push_back(*draw.full_well_e);
-  if (config.overcast_share) out.push_back(*draw.overcast ? 1.0 : 0.0);
-  if (config.materials) {
-    for (const ClassMaterialChange& change : draw.materials) {
-      if (config.materials->value) out.push_back(change.value);
-      if (config.materials->hue_deg) out.push_back(change.hue_deg);
-      if (config.materials->roughness) out.push_back(*change.roughness);
-      if (config.materials->pattern_scale) out.push_back(change.pattern_scale);
-    }
-  }
+  ForEachDomainValue(config, &draw,
+                     [&](const std::string&, double value) { out.push_back(value); });
   return out;
 }
 
