@@ -53,6 +53,8 @@ PRIVATE_HEADERS = {
     "LinearMath/": ["engine/physics"],
     "embree3/": ["engine/world"],
     "opencv2/": ["engine/render", "engine/dataset"],
+    "png.h": ["engine/core"],
+    "jpeglib.h": ["engine/core"],
     "EGL/": ["engine/render"],
     "GLES3/": ["engine/render"],
     "CLI/": ["tools/cli"],

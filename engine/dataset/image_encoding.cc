@@ -1,45 +1,37 @@
 #include "engine/dataset/image_encoding.h"
 
 #include <cmath>
-#include <cstring>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "engine/core/error.h"
+#include "engine/core/image_codec.h"
 #include "engine/dataset/file_io.h"
 
 namespace airis::engine {
 namespace {
 
-const std::vector<int> kPngParams = {cv::IMWRITE_PNG_COMPRESSION, 1, cv::IMWRITE_PNG_STRATEGY,
-                                     cv::IMWRITE_PNG_STRATEGY_DEFAULT};
-
-std::vector<std::uint8_t> Encode(const cv::Mat& mat) {
-  std::vector<std::uint8_t> out;
-  if (!cv::imencode(".png", mat, out, kPngParams)) throw DatasetIoError("PNG encoding failed");
-  return out;
-}
-
 template <class T>
-cv::Mat Wrap(const Image<T>& image, int type) {
-  // A header over the image's own pixels: no copy.
-  return cv::Mat(image.height, image.width, type, const_cast<T*>(image.pixels.data()));
+std::vector<std::uint8_t> Encode(const T* samples, int width, int height, int in_channels,
+                                 PngLayout layout) {
+  try {
+    return EncodePng(samples, width, height, in_channels, layout);
+  } catch (const ImageCodecError& e) {
+    throw DatasetIoError(std::string("PNG encoding failed: ") + e.what());
+  }
 }
 
-cv::Mat Decode(const std::vector<std::uint8_t>& bytes, int flags) {
-  cv::Mat m = cv::imdecode(bytes, flags);
-  if (m.empty()) throw DatasetIoError("not a readable PNG image");
-  return m;
+PngPixels Decode(const std::vector<std::uint8_t>& bytes) {
+  try {
+    return DecodePng(bytes);
+  } catch (const ImageCodecError& e) {
+    throw DatasetIoError(std::string("not a readable PNG image: ") + e.what());
+  }
 }
 
 }  // namespace
 
 std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba) {
   AIRIS_DEMAND(rgba.channels == 4);
-  cv::Mat bgr;
-  cv::cvtColor(Wrap(rgba, CV_8UC4), bgr, cv::COLOR_RGBA2BGR);
-  return Encode(bgr);
+  return Encode(rgba.pixels.data(), rgba.width, rgba.height, 4, PngLayout::kRgb8);
 }
 
 double ChooseDepthUnit_m(double far_m) {
@@ -60,8 +52,7 @@ std::uint16_t EncodeDepth(float depth_m, double unit_m) {
 std::vector<std::uint8_t> EncodeDepthPng(const Image<float>& depth_m, double unit_m,
                                          std::int64_t* clipped) {
   AIRIS_DEMAND(depth_m.channels == 1 && unit_m > 0.0);
-  cv::Mat png(depth_m.height, depth_m.width, CV_16UC1);
-  auto* out = png.ptr<std::uint16_t>();
+  std::vector<std::uint16_t> out(depth_m.pixels.size());
   std::int64_t beyond = 0;
   for (std::size_t i = 0; i < depth_m.pixels.size(); ++i) {
     const float d = depth_m.pixels[i];
@@ -69,12 +60,12 @@ std::vector<std::uint8_t> EncodeDepthPng(const Image<float>& depth_m, double uni
     beyond += out[i] == 0 && std::isfinite(d) && d > 0.0f;
   }
   if (clipped) *clipped += beyond;
-  return Encode(png);
+  return Encode(out.data(), depth_m.width, depth_m.height, 1, PngLayout::kGray16);
 }
 
 std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id) {
   AIRIS_DEMAND(class_id.channels == 1);
-  return Encode(Wrap(class_id, CV_8UC1));
+  return Encode(class_id.pixels.data(), class_id.width, class_id.height, 1, PngLayout::kGray8);
 }
 
 std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance_id,
@@ -82,39 +73,36 @@ std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance
   AIRIS_DEMAND(instance_id.channels == 1);
   const std::uint32_t max_id = MaxInstanceId(format);
   if (format == InstanceImageFormat::kGray16) {
-    cv::Mat png(instance_id.height, instance_id.width, CV_16UC1);
-    auto* out = png.ptr<std::uint16_t>();
+    std::vector<std::uint16_t> out(instance_id.pixels.size());
     for (std::size_t i = 0; i < instance_id.pixels.size(); ++i) {
       AIRIS_DEMAND(instance_id.pixels[i] <= max_id);
       out[i] = static_cast<std::uint16_t>(instance_id.pixels[i]);
     }
-    return Encode(png);
+    return Encode(out.data(), instance_id.width, instance_id.height, 1, PngLayout::kGray16);
   }
-  // OpenCV writes its three channels as B, G, R: channel 2 (R) holds the low byte.
-  cv::Mat png(instance_id.height, instance_id.width, CV_8UC3);
-  auto* out = png.ptr<std::uint8_t>();
+  // R holds the low byte (COCO panoptic: id = R + 256 G + 65536 B).
+  std::vector<std::uint8_t> out(instance_id.pixels.size() * 3);
   for (std::size_t i = 0; i < instance_id.pixels.size(); ++i) {
     const std::uint32_t id = instance_id.pixels[i];
     AIRIS_DEMAND(id <= max_id);
-    out[3 * i + 0] = static_cast<std::uint8_t>(id >> 16);
+    out[3 * i + 0] = static_cast<std::uint8_t>(id);
     out[3 * i + 1] = static_cast<std::uint8_t>(id >> 8);
-    out[3 * i + 2] = static_cast<std::uint8_t>(id);
+    out[3 * i + 2] = static_cast<std::uint8_t>(id >> 16);
   }
-  return Encode(png);
+  return Encode(out.data(), instance_id.width, instance_id.height, 3, PngLayout::kRgb8);
 }
 
 Image<std::uint32_t> DecodeInstancePng(const std::vector<std::uint8_t>& bytes) {
-  const cv::Mat m = Decode(bytes, cv::IMREAD_UNCHANGED);
+  const PngPixels m = Decode(bytes);
   Image<std::uint32_t> out;
-  out.Resize(m.cols, m.rows, 1);
-  if (m.type() == CV_16UC1) {
-    const auto* in = m.ptr<std::uint16_t>();
-    for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = in[i];
-  } else if (m.type() == CV_8UC3) {
-    const auto* in = m.ptr<std::uint8_t>();  // B, G, R
+  out.Resize(m.width, m.height, 1);
+  if (m.layout == PngLayout::kGray16) {
+    for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = m.samples16[i];
+  } else if (m.layout == PngLayout::kRgb8) {
+    const auto* in = m.samples8.data();  // R, G, B
     for (std::size_t i = 0; i < out.pixels.size(); ++i) {
       out.pixels[i] =
-          in[3 * i + 2] | (std::uint32_t{in[3 * i + 1]} << 8) | (std::uint32_t{in[3 * i]} << 16);
+          in[3 * i] | (std::uint32_t{in[3 * i + 1]} << 8) | (std::uint32_t{in[3 * i + 2]} << 16);
     }
   } else {
     throw DatasetIoError("expected an instance PNG: 8-bit RGB (rgb24) or 16-bit grey (gray16)");
@@ -123,31 +111,33 @@ Image<std::uint32_t> DecodeInstancePng(const std::vector<std::uint8_t>& bytes) {
 }
 
 Image<std::uint8_t> DecodePng8(const std::vector<std::uint8_t>& bytes) {
-  const cv::Mat m = Decode(bytes, cv::IMREAD_UNCHANGED);
-  if (m.type() != CV_8UC1) throw DatasetIoError("expected an 8-bit grey PNG");
+  PngPixels m = Decode(bytes);
+  if (m.layout != PngLayout::kGray8) throw DatasetIoError("expected an 8-bit grey PNG");
   Image<std::uint8_t> out;
-  out.Resize(m.cols, m.rows, 1);
-  std::memcpy(out.pixels.data(), m.data, out.pixels.size());
+  out.width = m.width;
+  out.height = m.height;
+  out.channels = 1;
+  out.pixels = std::move(m.samples8);
   return out;
 }
 
 Image<std::uint16_t> DecodePng16(const std::vector<std::uint8_t>& bytes) {
-  const cv::Mat m = Decode(bytes, cv::IMREAD_UNCHANGED);
-  if (m.type() != CV_16UC1) throw DatasetIoError("expected a 16-bit grey PNG");
+  PngPixels m = Decode(bytes);
+  if (m.layout != PngLayout::kGray16) throw DatasetIoError("expected a 16-bit grey PNG");
   Image<std::uint16_t> out;
-  out.Resize(m.cols, m.rows, 1);
-  std::memcpy(out.pixels.data(), m.data, out.pixels.size() * 2);
+  out.width = m.width;
+  out.height = m.height;
+  out.channels = 1;
+  out.pixels = std::move(m.samples16);
   return out;
 }
 
 Image<std::uint8_t> DecodeRgbPng(const std::vector<std::uint8_t>& bytes) {
-  const cv::Mat bgr = Decode(bytes, cv::IMREAD_COLOR);
-  cv::Mat rgba;
-  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
-  Image<std::uint8_t> out;
-  out.Resize(rgba.cols, rgba.rows, 4);
-  std::memcpy(out.pixels.data(), rgba.data, out.pixels.size());
-  return out;
+  try {
+    return DecodeImageRgba8(bytes);
+  } catch (const ImageCodecError& e) {
+    throw DatasetIoError(std::string("not a readable PNG image: ") + e.what());
+  }
 }
 
 }  // namespace airis::engine

@@ -6,14 +6,15 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <numeric>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <tuple>
 #include <utility>
 
 #include "engine/core/error.h"
+#include "engine/core/image_codec.h"
 #include "engine/render/gl_program.h"
 
 namespace airis::engine {
@@ -33,25 +34,36 @@ struct Vertex {
 GLuint UploadTexture(const StaticScene& scene, const std::string& path, bool srgb) {
   // Scene loading checked the file or embedded image (CheckTextureFile, CheckTextureBytes); a
   // file may have changed since.
-  cv::Mat bgr;
+  std::string bytes;
   if (const auto it = scene.embedded_images.find(path); it != scene.embedded_images.end()) {
-    const std::vector<unsigned char> bytes(it->second.begin(), it->second.end());
-    bgr = cv::imdecode(bytes, cv::IMREAD_COLOR);
+    bytes = it->second;
   } else {
-    bgr = cv::imread(path, cv::IMREAD_COLOR);
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
-  if (bgr.empty()) throw ConfigError({path, 0, 0}, "", "cannot read the texture image");
-  cv::Mat rgba;
-  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
+  Image<std::uint8_t> rgba;
+  try {
+    rgba = DecodeImageRgba8({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
+  } catch (const ImageCodecError& e) {
+    throw ConfigError({path, 0, 0}, "", std::string("cannot read the texture image: ") + e.what());
+  }
   // Texture coordinate v = 0 is the image's bottom row (OpenGL's convention, and what assimp
   // gives for every format, glTF included): GL takes the rows bottom first.
-  cv::flip(rgba, rgba, 0);
+  const std::size_t row_bytes = std::size_t(rgba.width) * 4;
+  std::vector<std::uint8_t> row(row_bytes);
+  for (int top = 0, bottom = rgba.height - 1; top < bottom; ++top, --bottom) {
+    std::uint8_t* a = rgba.pixels.data() + top * row_bytes;
+    std::uint8_t* b = rgba.pixels.data() + bottom * row_bytes;
+    std::memcpy(row.data(), a, row_bytes);
+    std::memcpy(a, b, row_bytes);
+    std::memcpy(b, row.data(), row_bytes);
+  }
   GLuint texture = 0;
   glGenTextures(1, &texture);
   glBindTexture(GL_TEXTURE_2D, texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, rgba.cols, rgba.rows, 0,
-               GL_RGBA, GL_UNSIGNED_BYTE, rgba.ptr());
+  glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, rgba.width, rgba.height, 0,
+               GL_RGBA, GL_UNSIGNED_BYTE, rgba.pixels.data());
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <opencv2/imgcodecs.hpp>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "engine/core/image_codec.h"
 #include "engine/core/limits.h"
 
 namespace airis::engine {
@@ -167,8 +167,11 @@ std::string CheckTextureBytes(const std::string& contents) {
            " px; each side must be 1 to " + std::to_string(kMaxTextureSide_px) +
            " px (docs/limits.md)";
   }
-  const std::vector<unsigned char> buffer(contents.begin(), contents.end());
-  if (cv::imdecode(buffer, cv::IMREAD_COLOR).empty()) return "the image cannot be decoded";
+  try {
+    DecodeImageRgba8({reinterpret_cast<const std::uint8_t*>(contents.data()), contents.size()});
+  } catch (const ImageCodecError& e) {
+    return std::string("the image cannot be decoded (") + e.what() + ")";
+  }
   return "";
 }
 

@@ -4,9 +4,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "engine/core/image_codec.h"
+#include "engine/dataset/file_io.h"
+#include "engine/dataset/image_encoding.h"
 #include "engine/render/camera_effects.h"
 #include "engine/render/camera_renderer.h"
 #include "engine/render/motion_blur.h"
@@ -31,16 +33,19 @@ StaticScene MakeGoldenScene(const std::string& texture_path) {
 }
 
 std::string WriteCheckerTexture() {
-  cv::Mat checker(64, 64, CV_8UC3);
+  std::vector<std::uint8_t> checker(64 * 64 * 3);
   for (int v = 0; v < 64; ++v) {
     for (int u = 0; u < 64; ++u) {
       const bool dark = ((u / 16) + (v / 16)) % 2 == 0;
-      checker.at<cv::Vec3b>(v, u) = dark ? cv::Vec3b(40, 90, 200) : cv::Vec3b(230, 230, 230);
+      const std::uint8_t rgb[3] = {dark ? std::uint8_t{200} : std::uint8_t{230},
+                                   dark ? std::uint8_t{90} : std::uint8_t{230},
+                                   dark ? std::uint8_t{40} : std::uint8_t{230}};
+      std::copy(rgb, rgb + 3, checker.begin() + 3 * (64 * v + u));
     }
   }
   const std::string path =
       (airis::testing::TestTempDir() / "airis_render_golden_checker.png").string();
-  cv::imwrite(path, checker);
+  WriteFileAtomically(path, EncodePng(checker.data(), 64, 64, 3, PngLayout::kRgb8));
   return path;
 }
 
@@ -60,12 +65,16 @@ void ExpectMatchesGolden(const CameraFrame& frame, const std::string& name) {
   const std::string golden_path = std::string(AIRIS_RENDER_GOLDEN_DIR) + "/" + name + ".png";
   const char* update = std::getenv("AIRIS_UPDATE_GOLDEN");
   if (update != nullptr && std::string(update) == "1") {
-    ASSERT_TRUE(cv::imwrite(golden_path, bgr)) << golden_path;
+    WriteFileAtomically(golden_path, EncodeRgbPng(frame.rgba));
     std::printf("wrote %s\n", golden_path.c_str());
   }
-  const cv::Mat golden = cv::imread(golden_path, cv::IMREAD_COLOR);
-  ASSERT_FALSE(golden.empty()) << "missing " << golden_path
-                               << " (regenerate with AIRIS_UPDATE_GOLDEN=1, see docs/rendering.md)";
+  ASSERT_TRUE(std::filesystem::exists(golden_path))
+      << "missing " << golden_path
+      << " (regenerate with AIRIS_UPDATE_GOLDEN=1, see docs/rendering.md)";
+  Image<std::uint8_t> golden_rgba = DecodeImageRgba8(ReadFileBytes(golden_path));
+  cv::Mat golden;
+  cv::cvtColor(cv::Mat(golden_rgba.height, golden_rgba.width, CV_8UC4, golden_rgba.pixels.data()),
+               golden, cv::COLOR_RGBA2BGR);
   ASSERT_EQ(golden.size(), bgr.size());
   cv::Mat diff;
   cv::absdiff(golden, bgr, diff);
@@ -79,7 +88,7 @@ void ExpectMatchesGolden(const CameraFrame& frame, const std::string& name) {
   if (::testing::Test::HasFailure()) {
     const std::string actual_path =
         (airis::testing::TestTempDir() / ("airis_" + name + "_actual.png")).string();
-    cv::imwrite(actual_path, bgr);
+    WriteFileAtomically(actual_path, EncodeRgbPng(frame.rgba));
     ADD_FAILURE() << "rendered image differs from " << golden_path << "; this render is at "
                   << actual_path;
   }

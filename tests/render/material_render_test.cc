@@ -10,10 +10,11 @@
 #include <fstream>
 #include <iterator>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
 
+#include "engine/core/image_codec.h"
+#include "engine/dataset/file_io.h"
 #include "engine/render/camera_renderer.h"
 #include "engine/render/gpu_scene.h"
 #include "tests/fixtures/temp_dir.h"
@@ -191,13 +192,13 @@ TEST(MaterialRenderTest, CarPaintsClearCoatMirrorsTheSky) {
 // given) and returns its path.
 std::string WritePng(const std::string& name, const cv::Vec3b& rgb, int w = 8, int h = 8,
                      const cv::Vec3b* bottom_rgb = nullptr) {
-  cv::Mat bgr(h, w, CV_8UC3);
+  std::vector<std::uint8_t> pixels(std::size_t(w) * h * 3);
   for (int v = 0; v < h; ++v) {
     const cv::Vec3b c = bottom_rgb != nullptr && v >= h / 2 ? *bottom_rgb : rgb;
-    for (int u = 0; u < w; ++u) bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(c[2], c[1], c[0]);
+    for (int u = 0; u < w; ++u) std::copy(c.val, c.val + 3, pixels.begin() + 3 * (w * v + u));
   }
   const std::string path = (airis::testing::TestTempDir() / name).string();
-  EXPECT_TRUE(cv::imwrite(path, bgr)) << path;
+  WriteFileAtomically(path, EncodePng(pixels.data(), w, h, 3, PngLayout::kRgb8));
   return path;
 }
 
