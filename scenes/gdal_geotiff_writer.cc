@@ -1,5 +1,4 @@
-#include "scenes/geotiff_export.h"
-
+// Part of the GDAL plugin (gdal_plugin.h): what geotiff_export.h's WriteTerrainGeoTiff does.
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
@@ -10,6 +9,7 @@
 #include "engine/core/error.h"
 #include "engine/core/limits.h"
 #include "engine/dataset/file_io.h"
+#include "scenes/gdal_plugin.h"
 #include "scenes/gdal_session.h"
 
 namespace airis::scenes {
@@ -34,10 +34,10 @@ double SurfaceAltitude_m(const engine::Heightfield& field, const engine::LocalNe
 
 }  // namespace
 
-void WriteTerrainGeoTiff(const engine::Heightfield& field, const engine::LocalNedFrame& frame,
-                         double pixel_m,
-                         const std::vector<std::pair<std::string, std::string>>& metadata,
-                         const std::string& path) {
+void GdalWriteTerrainGeoTiff(const engine::Heightfield& field, const engine::LocalNedFrame& frame,
+                             double pixel_m,
+                             const std::vector<std::pair<std::string, std::string>>& metadata,
+                             const std::string& path) {
   engine::RequirePositive("pixel_m", pixel_m);
   // Latitude and longitude bounds inside the grid: each corner's, the inner of each pair.
   const Eigen::Vector2d lo = field.origin_ne_m(), hi = field.end_ne_m();

@@ -1,5 +1,4 @@
-#include "scenes/dem_file.h"
-
+// Part of the GDAL plugin (gdal_plugin.h): what dem_file.h's LoadDemTerrain does.
 #include <cpl_conv.h>
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
@@ -14,6 +13,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/limits.h"
+#include "scenes/gdal_plugin.h"
 #include "scenes/gdal_session.h"
 
 namespace airis::scenes {
@@ -23,9 +23,6 @@ namespace fs = std::filesystem;
 using engine::FormatNumber;
 using engine::FormatRounded;
 using engine::InvalidField;
-
-constexpr engine::EnumName<DemHeights> kHeightNames[] = {{DemHeights::kMsl, "msl"},
-                                                         {DemHeights::kEllipsoid, "ellipsoid"}};
 
 // A pixel-centre coordinate this close outside the DEM still counts as on it (rounding of the
 // reprojection; 1e-6 pixel is a micrometre on a 1 m DEM).
@@ -327,9 +324,7 @@ std::vector<double> CalcGeoidHeights_m(const std::vector<double>& lat_rad,
 
 }  // namespace
 
-std::span<const engine::EnumName<DemHeights>> EnumNames(DemHeights) { return kHeightNames; }
-
-engine::Heightfield LoadDemTerrain(const DemSampling& s, const engine::LocalNedFrame& frame) {
+engine::Heightfield GdalLoadDemTerrain(const DemSampling& s, const engine::LocalNedFrame& frame) {
   const Dem dem(s.path);
   const Footprint foot = CalcFootprint(dem, frame);
 
