@@ -59,12 +59,29 @@ int PngColorType(PngLayout layout) {
   return PNG_COLOR_TYPE_GRAY;
 }
 
+int PngFilterFlags(PngRowFilter filter) {
+  switch (filter) {
+    case PngRowFilter::kAdaptive:
+      return 0;  // libpng's default: left unset
+    case PngRowFilter::kNone:
+      return PNG_FILTER_NONE;
+    case PngRowFilter::kSub:
+      return PNG_FILTER_SUB;
+    case PngRowFilter::kUp:
+      return PNG_FILTER_UP;
+  }
+  return 0;
+}
+
 bool RunPngWrite(png_structp png, png_infop info, PngIo* io, png_bytepp rows, int width, int height,
-                 PngLayout layout, bool strip_filler) {
+                 PngLayout layout, bool strip_filler, PngCompression compression) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_write_fn(png, io, WriteToVector, FlushNothing);
   png_set_compression_level(png, 1);
-  png_set_compression_strategy(png, 0);  // Z_DEFAULT_STRATEGY
+  png_set_compression_strategy(png, compression.run_length ? 3 : 0);  // Z_RLE, Z_DEFAULT_STRATEGY
+  if (const int flags = PngFilterFlags(compression.filter); flags != 0) {
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, flags);
+  }
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height),
                layout == PngLayout::kGray16 ? 16 : 8, PngColorType(layout), PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -243,7 +260,7 @@ int PngChannels(PngLayout layout) {
 }
 
 std::vector<std::uint8_t> EncodePng(const void* samples, int width, int height, int in_channels,
-                                    PngLayout layout) {
+                                    PngLayout layout, PngCompression compression) {
   const int channels = PngChannels(layout);
   const bool strip_filler = layout == PngLayout::kRgb8 && in_channels == 4;
   if (width < 1 || height < 1 || (in_channels != channels && !strip_filler)) {
@@ -261,8 +278,8 @@ std::vector<std::uint8_t> EncodePng(const void* samples, int width, int height, 
   io.out = &out;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &io, OnPngError, OnPngWarning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
-  const bool ok =
-      info && RunPngWrite(png, info, &io, rows.data(), width, height, layout, strip_filler);
+  const bool ok = info && RunPngWrite(png, info, &io, rows.data(), width, height, layout,
+                                      strip_filler, compression);
   png_destroy_write_struct(&png, &info);
   if (!ok) throw ImageCodecError(PngMessage(io, "PNG: cannot write the image"));
   return out;

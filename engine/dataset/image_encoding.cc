@@ -9,11 +9,19 @@
 namespace airis::engine {
 namespace {
 
+// Row filters and zlib strategies by content, each the fastest of libpng's choices at a size within
+// a few percent of its adaptive default or below it (docs/performance.md, "PNG encoding"): rendered
+// colour compresses best unfiltered at zlib level 1, depth's smooth gradients with the left
+// neighbour subtracted, and label images' flat regions as runs after the row above is subtracted.
+constexpr PngCompression kColourPng{PngRowFilter::kNone, false};
+constexpr PngCompression kDepthPng{PngRowFilter::kSub, false};
+constexpr PngCompression kLabelPng{PngRowFilter::kUp, true};
+
 template <class T>
 std::vector<std::uint8_t> Encode(const T* samples, int width, int height, int in_channels,
-                                 PngLayout layout) {
+                                 PngLayout layout, PngCompression compression) {
   try {
-    return EncodePng(samples, width, height, in_channels, layout);
+    return EncodePng(samples, width, height, in_channels, layout, compression);
   } catch (const ImageCodecError& e) {
     throw DatasetIoError(std::string("PNG encoding failed: ") + e.what());
   }
@@ -31,7 +39,7 @@ PngPixels Decode(const std::vector<std::uint8_t>& bytes) {
 
 std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba) {
   AIRIS_DEMAND(rgba.channels == 4);
-  return Encode(rgba.pixels.data(), rgba.width, rgba.height, 4, PngLayout::kRgb8);
+  return Encode(rgba.pixels.data(), rgba.width, rgba.height, 4, PngLayout::kRgb8, kColourPng);
 }
 
 double ChooseDepthUnit_m(double far_m) {
@@ -60,12 +68,13 @@ std::vector<std::uint8_t> EncodeDepthPng(const Image<float>& depth_m, double uni
     beyond += out[i] == 0 && std::isfinite(d) && d > 0.0f;
   }
   if (clipped) *clipped += beyond;
-  return Encode(out.data(), depth_m.width, depth_m.height, 1, PngLayout::kGray16);
+  return Encode(out.data(), depth_m.width, depth_m.height, 1, PngLayout::kGray16, kDepthPng);
 }
 
 std::vector<std::uint8_t> EncodeClassPng(const Image<std::uint8_t>& class_id) {
   AIRIS_DEMAND(class_id.channels == 1);
-  return Encode(class_id.pixels.data(), class_id.width, class_id.height, 1, PngLayout::kGray8);
+  return Encode(class_id.pixels.data(), class_id.width, class_id.height, 1, PngLayout::kGray8,
+                kLabelPng);
 }
 
 std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance_id,
@@ -78,7 +87,8 @@ std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance
       AIRIS_DEMAND(instance_id.pixels[i] <= max_id);
       out[i] = static_cast<std::uint16_t>(instance_id.pixels[i]);
     }
-    return Encode(out.data(), instance_id.width, instance_id.height, 1, PngLayout::kGray16);
+    return Encode(out.data(), instance_id.width, instance_id.height, 1, PngLayout::kGray16,
+                  kLabelPng);
   }
   // R holds the low byte (COCO panoptic: id = R + 256 G + 65536 B).
   std::vector<std::uint8_t> out(instance_id.pixels.size() * 3);
@@ -89,7 +99,7 @@ std::vector<std::uint8_t> EncodeInstancePng(const Image<std::uint32_t>& instance
     out[3 * i + 1] = static_cast<std::uint8_t>(id >> 8);
     out[3 * i + 2] = static_cast<std::uint8_t>(id >> 16);
   }
-  return Encode(out.data(), instance_id.width, instance_id.height, 3, PngLayout::kRgb8);
+  return Encode(out.data(), instance_id.width, instance_id.height, 3, PngLayout::kRgb8, kLabelPng);
 }
 
 Image<std::uint32_t> DecodeInstancePng(const std::vector<std::uint8_t>& bytes) {

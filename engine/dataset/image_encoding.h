@@ -8,8 +8,9 @@
 
 namespace airis::engine {
 
-// PNG encoders for dataset images. Settings are fixed (zlib level 1, default filter strategy), so
-// the same image always gives the same bytes with the same libpng and zlib.
+// PNG encoders for dataset images. Settings are fixed per kind of image (zlib level 1; a row filter
+// and strategy chosen for the content: image_encoding.cc), so the same image always gives the same
+// bytes with the same libpng and zlib.
 
 /// 8-bit sRGB colour PNG from an RGBA8 image (alpha dropped).
 std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba);
