@@ -4,9 +4,10 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(Threads REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 REQUIRED)
-# PNG and JPEG through libpng and libjpeg-turbo directly (engine/core/image_codec.h).
+# PNG and JPEG through libpng, libdeflate and libjpeg-turbo directly (engine/core/image_codec.h).
 find_package(PNG REQUIRED)
 find_package(JPEG REQUIRED)
+pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
 if(AIRIS_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -55,6 +55,7 @@ PRIVATE_HEADERS = {
     "opencv2/": ["engine/render", "engine/dataset"],
     "png.h": ["engine/core"],
     "jpeglib.h": ["engine/core"],
+    "libdeflate.h": ["engine/core"],
     "EGL/": ["engine/render"],
     "GLES3/": ["engine/render"],
     "CLI/": ["tools/cli"],

@@ -20,7 +20,7 @@ PACKAGES=(
   libgdal-dev              # terrain from elevation models (GeoTIFF and GDAL's other rasters)
   nlohmann-json3-dev       # JSON output (env --json, manifests, COCO)
   libcli11-dev             # command line
-  libpng-dev libjpeg62-turbo-dev  # PNG images and PNG/JPEG textures (engine/core/image_codec.h)
+  libpng-dev libdeflate-dev libjpeg62-turbo-dev  # PNG images, PNG/JPEG textures (engine/core/image_codec.h)
   libopencv-core-dev libopencv-imgproc-dev  # colour maps of previews (not all of libopencv-dev)
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL + GLES3, llvmpipe when there is no GPU
   libgtest-dev libgmock-dev libbenchmark-dev           # tests and benchmarks

@@ -14,13 +14,12 @@ namespace airis::engine {
 namespace {
 
 // libpng and libjpeg report errors by longjmp. The functions that call them with a jump target
-// set (RunPngWrite, RunPngRead, RunJpegRead) hold no object with a destructor of their own: what
-// they fill is owned by their callers, so a jump leaks nothing.
+// set (RunPngReadHeader, RunPngReadRows, RunJpegRead) hold no object with a destructor of their
+// own: what they fill is owned by their callers, so a jump leaks nothing.
 
 struct PngIo {
-  std::span<const std::uint8_t> in;  // reading: the file, and how far it has been read
+  std::span<const std::uint8_t> in;  // the file, and how far it has been read
   std::size_t read = 0;
-  std::vector<std::uint8_t>* out = nullptr;  // writing
   char error[256] = {};
 };
 
@@ -32,65 +31,11 @@ void OnPngError(png_structp png, png_const_charp message) {
 
 void OnPngWarning(png_structp, png_const_charp) {}  // nothing airis writes or checks needs them
 
-void WriteToVector(png_structp png, png_bytep data, png_size_t n) {
-  auto* io = static_cast<PngIo*>(png_get_io_ptr(png));
-  io->out->insert(io->out->end(), data, data + n);
-}
-
-void FlushNothing(png_structp) {}
-
 void ReadFromSpan(png_structp png, png_bytep data, png_size_t n) {
   auto* io = static_cast<PngIo*>(png_get_io_ptr(png));
   if (io->in.size() - io->read < n) png_error(png, "the file ends inside the image");
   std::memcpy(data, io->in.data() + io->read, n);
   io->read += n;
-}
-
-int PngColorType(PngLayout layout) {
-  switch (layout) {
-    case PngLayout::kGray8:
-    case PngLayout::kGray16:
-      return PNG_COLOR_TYPE_GRAY;
-    case PngLayout::kRgb8:
-      return PNG_COLOR_TYPE_RGB;
-    case PngLayout::kRgba8:
-      return PNG_COLOR_TYPE_RGBA;
-  }
-  return PNG_COLOR_TYPE_GRAY;
-}
-
-int PngFilterFlags(PngRowFilter filter) {
-  switch (filter) {
-    case PngRowFilter::kAdaptive:
-      return 0;  // libpng's default: left unset
-    case PngRowFilter::kNone:
-      return PNG_FILTER_NONE;
-    case PngRowFilter::kSub:
-      return PNG_FILTER_SUB;
-    case PngRowFilter::kUp:
-      return PNG_FILTER_UP;
-  }
-  return 0;
-}
-
-bool RunPngWrite(png_structp png, png_infop info, PngIo* io, png_bytepp rows, int width, int height,
-                 PngLayout layout, bool strip_filler, PngCompression compression) {
-  if (setjmp(png_jmpbuf(png))) return false;
-  png_set_write_fn(png, io, WriteToVector, FlushNothing);
-  png_set_compression_level(png, 1);
-  png_set_compression_strategy(png, compression.run_length ? 3 : 0);  // Z_RLE, Z_DEFAULT_STRATEGY
-  if (const int flags = PngFilterFlags(compression.filter); flags != 0) {
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, flags);
-  }
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height),
-               layout == PngLayout::kGray16 ? 16 : 8, PngColorType(layout), PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  if (layout == PngLayout::kGray16) png_set_swap(png);  // native little-endian samples
-  if (strip_filler) png_set_filler(png, 0, PNG_FILLER_AFTER);
-  png_write_image(png, rows);
-  png_write_end(png, info);
-  return true;
 }
 
 // What a read should give: the PNG as stored, or 8-bit RGBA whatever it stores.
@@ -257,32 +202,6 @@ int PngChannels(PngLayout layout) {
       return 4;
   }
   return 1;
-}
-
-std::vector<std::uint8_t> EncodePng(const void* samples, int width, int height, int in_channels,
-                                    PngLayout layout, PngCompression compression) {
-  const int channels = PngChannels(layout);
-  const bool strip_filler = layout == PngLayout::kRgb8 && in_channels == 4;
-  if (width < 1 || height < 1 || (in_channels != channels && !strip_filler)) {
-    throw ImageCodecError("PNG: cannot write " + std::to_string(width) + " x " +
-                          std::to_string(height) + " pixels of " + std::to_string(in_channels) +
-                          " samples as " + std::to_string(channels));
-  }
-  const std::size_t sample_bytes = layout == PngLayout::kGray16 ? 2 : 1;
-  const std::size_t row_bytes = std::size_t(width) * in_channels * sample_bytes;
-  std::vector<png_bytep> rows(height);
-  auto* base = static_cast<png_bytep>(const_cast<void*>(samples));  // libpng does not write them
-  for (int y = 0; y < height; ++y) rows[y] = base + y * row_bytes;
-  std::vector<std::uint8_t> out;
-  PngIo io;
-  io.out = &out;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &io, OnPngError, OnPngWarning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  const bool ok = info && RunPngWrite(png, info, &io, rows.data(), width, height, layout,
-                                      strip_filler, compression);
-  png_destroy_write_struct(&png, &info);
-  if (!ok) throw ImageCodecError(PngMessage(io, "PNG: cannot write the image"));
-  return out;
 }
 
 PngPixels DecodePng(std::span<const std::uint8_t> bytes) {

@@ -1,9 +1,9 @@
 #pragma once
 
-// PNG (libpng) and JPEG (libjpeg-turbo) for the dataset's images and the scenes' textures. These
-// two small libraries are all a process loads for images: OpenCV's image codecs, used before, pull
-// in GDAL and some 140 shared libraries whose loading cost every airis process about 80 ms of CPU
-// (docs/performance.md, "Process start").
+// PNG (written with libdeflate, read with libpng) and JPEG (libjpeg-turbo) for the dataset's images
+// and the scenes' textures. These small libraries are all a process loads for images: OpenCV's
+// image codecs, used before, pull in GDAL and some 140 shared libraries whose loading cost every
+// airis process about 100 ms of CPU (docs/performance.md, "Process start").
 
 #include <cstdint>
 #include <span>
@@ -41,27 +41,18 @@ struct PngPixels {
   std::vector<std::uint16_t> samples16;
 };
 
-/// How the rows of a PNG are filtered before zlib compresses them (the PNG specification's filter
-/// types). kAdaptive is libpng's default: it tries every filter on every row and keeps the one
-/// whose bytes sum least, which about doubles the encoding time of one fixed filter.
-enum class PngRowFilter { kAdaptive, kNone, kSub, kUp };
-
-/// Filter and zlib strategy of an encoded PNG (zlib level 1 always). A fixed filter suited to the
-/// image's content gives files about as small as kAdaptive in half the time (docs/performance.md,
-/// "PNG encoding").
-struct PngCompression {
-  PngRowFilter filter = PngRowFilter::kAdaptive;
-  bool run_length = false;  ///< zlib's Z_RLE strategy (runs only): fast and small on label images
-};
+/// How the rows of a PNG are filtered before they are compressed (the PNG specification's filter
+/// types; one for the whole image). Which suits an image depends on its content
+/// (docs/performance.md, "PNG encoding").
+enum class PngRowFilter { kNone, kSub, kUp };
 
 /// Encodes `width` x `height` pixels, rows top first. `samples` holds `in_channels` samples a
 /// pixel (uint8 for 8-bit layouts, uint16 in native byte order for kGray16); an RGBA input written
-/// as kRgb8 loses its alpha. Settings are fixed by `compression` (zlib level 1, no ancillary
-/// chunks), so that the same pixels give the same bytes with the same libpng and zlib. With the
-/// default compression the bytes are those OpenCV 4.6's `imencode(".png", ...,
-/// {IMWRITE_PNG_COMPRESSION, 1})` writes.
+/// as kRgb8 loses its alpha. The rows are filtered with `filter` and compressed by libdeflate at
+/// its level 1 into one IDAT chunk, with no ancillary chunks, so that the same pixels give the same
+/// bytes with the same libdeflate.
 std::vector<std::uint8_t> EncodePng(const void* samples, int width, int height, int in_channels,
-                                    PngLayout layout, PngCompression compression = {});
+                                    PngLayout layout, PngRowFilter filter = PngRowFilter::kNone);
 
 /// Decodes a PNG as stored, for the layouts above (grey with alpha and palette images are
 /// refused: they are not written by airis). Throws ImageCodecError for anything else or a damaged

@@ -9,19 +9,19 @@
 namespace airis::engine {
 namespace {
 
-// Row filters and zlib strategies by content, each the fastest of libpng's choices at a size within
-// a few percent of its adaptive default or below it (docs/performance.md, "PNG encoding"): rendered
-// colour compresses best unfiltered at zlib level 1, depth's smooth gradients with the left
-// neighbour subtracted, and label images' flat regions as runs after the row above is subtracted.
-constexpr PngCompression kColourPng{PngRowFilter::kNone, false};
-constexpr PngCompression kDepthPng{PngRowFilter::kSub, false};
-constexpr PngCompression kLabelPng{PngRowFilter::kUp, true};
+// Row filters by content, each the fastest at about the smallest size on the README demo's frames
+// (docs/performance.md, "PNG encoding"): rendered colour compresses best unfiltered, depth's smooth
+// gradients with the left neighbour subtracted, and label images' flat regions with the row above
+// subtracted.
+constexpr PngRowFilter kColourPng = PngRowFilter::kNone;
+constexpr PngRowFilter kDepthPng = PngRowFilter::kSub;
+constexpr PngRowFilter kLabelPng = PngRowFilter::kUp;
 
 template <class T>
 std::vector<std::uint8_t> Encode(const T* samples, int width, int height, int in_channels,
-                                 PngLayout layout, PngCompression compression) {
+                                 PngLayout layout, PngRowFilter filter) {
   try {
-    return EncodePng(samples, width, height, in_channels, layout, compression);
+    return EncodePng(samples, width, height, in_channels, layout, filter);
   } catch (const ImageCodecError& e) {
     throw DatasetIoError(std::string("PNG encoding failed: ") + e.what());
   }

@@ -8,9 +8,9 @@
 
 namespace airis::engine {
 
-// PNG encoders for dataset images. Settings are fixed per kind of image (zlib level 1; a row filter
-// and strategy chosen for the content: image_encoding.cc), so the same image always gives the same
-// bytes with the same libpng and zlib.
+// PNG encoders for dataset images. Settings are fixed per kind of image (a row filter chosen for
+// the content: image_encoding.cc; libdeflate level 1), so the same image always gives the same
+// bytes with the same libdeflate.
 
 /// 8-bit sRGB colour PNG from an RGBA8 image (alpha dropped).
 std::vector<std::uint8_t> EncodeRgbPng(const Image<std::uint8_t>& rgba);
