@@ -17,8 +17,7 @@ constexpr PngRowFilter kColourPng = PngRowFilter::kNone;
 constexpr PngRowFilter kDepthPng = PngRowFilter::kSub;
 constexpr PngRowFilter kLabelPng = PngRowFilter::kUp;
 
-template <class T>
-std::vector<std::uint8_t> Encode(const T* samples, int width, int height, int in_channels,
+std::vector<std::uint8_t> Encode(const void* samples, int width, int height, int in_channels,
                                  PngLayout layout, PngRowFilter filter) {
   try {
     return EncodePng(samples, width, height, in_channels, layout, filter);

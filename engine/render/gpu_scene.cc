@@ -34,29 +34,26 @@ struct Vertex {
 GLuint UploadTexture(const StaticScene& scene, const std::string& path, bool srgb) {
   // Scene loading checked the file or embedded image (CheckTextureFile, CheckTextureBytes); a
   // file may have changed since.
-  std::string bytes;
+  std::string from_file;
+  const std::string* bytes = &from_file;
   if (const auto it = scene.embedded_images.find(path); it != scene.embedded_images.end()) {
-    bytes = it->second;
+    bytes = &it->second;
   } else {
     std::ifstream in(path, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    from_file.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   Image<std::uint8_t> rgba;
   try {
-    rgba = DecodeImageRgba8({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
+    rgba = DecodeImageRgba8({reinterpret_cast<const std::uint8_t*>(bytes->data()), bytes->size()});
   } catch (const ImageCodecError& e) {
     throw ConfigError({path, 0, 0}, "", std::string("cannot read the texture image: ") + e.what());
   }
   // Texture coordinate v = 0 is the image's bottom row (OpenGL's convention, and what assimp
   // gives for every format, glTF included): GL takes the rows bottom first.
   const std::size_t row_bytes = std::size_t(rgba.width) * 4;
-  std::vector<std::uint8_t> row(row_bytes);
   for (int top = 0, bottom = rgba.height - 1; top < bottom; ++top, --bottom) {
     std::uint8_t* a = rgba.pixels.data() + top * row_bytes;
-    std::uint8_t* b = rgba.pixels.data() + bottom * row_bytes;
-    std::memcpy(row.data(), a, row_bytes);
-    std::memcpy(a, b, row_bytes);
-    std::memcpy(b, row.data(), row_bytes);
+    std::swap_ranges(a, a + row_bytes, rgba.pixels.data() + bottom * row_bytes);
   }
   GLuint texture = 0;
   glGenTextures(1, &texture);
