@@ -40,6 +40,8 @@ class SensorSpec {
                                                 SensorBuildContext& context) const = 0;
   /// True when Build needs the render scene (a GL context): cameras.
   virtual bool renders() const = 0;
+  /// True when the sensor casts rays at the static scene (rangefinder, lidar).
+  virtual bool casts_rays() const = 0;
   /// The names of the image streams a sensor named `name` of this kind makes (datasets write a
   /// folder per stream); empty for sensors without images.
   virtual std::vector<std::string> ImageStreamNames(const std::string& name) const = 0;
@@ -72,6 +74,13 @@ class SensorSpecOf final : public SensorSpec {
     }
   }
   bool renders() const override { return kRenders; }
+  bool casts_rays() const override {
+    if constexpr (requires { SensorT::kCastsRays; }) {
+      return SensorT::kCastsRays;
+    } else {
+      return false;
+    }
+  }
   std::vector<std::string> ImageStreamNames(const std::string& name) const override {
     if constexpr (requires { SensorT::StreamNames(name); }) {
       return SensorT::StreamNames(name);

@@ -1,5 +1,7 @@
 #include "scenes/world_builder.h"
 
+#include <algorithm>
+
 #include "engine/core/config.h"
 #include "engine/core/random.h"
 #include "engine/render/render_scene.h"
@@ -77,7 +79,13 @@ std::unique_ptr<engine::World> Build(const Scene& scene, std::uint64_t seed, Wor
   const engine::RandomStreams streams(seed);
   if (!shared.static_scene) shared.static_scene = scene.static_scene;
   if (!shared.ray_caster) {
-    shared.ray_caster = std::make_shared<const engine::EmbreeRayCaster>(*shared.static_scene);
+    auto caster = std::make_shared<const SceneRayCaster>(shared.static_scene);
+    const auto casts_rays = [](const VehicleDescription& v) {
+      return std::ranges::any_of(v.sensors,
+                                 [](const SensorDescription& s) { return s.spec->casts_rays(); });
+    };
+    if (std::ranges::any_of(scene.vehicles, casts_rays)) caster->Build();
+    shared.ray_caster = std::move(caster);
   }
   engine::Environment environment(scene.environment, scene.origin,
                                   streams.Stream("environment/wind"));
@@ -123,6 +131,23 @@ std::unique_ptr<engine::World> BuildNamingOverrides(const Scene& scene, std::uin
 }
 
 }  // namespace
+
+SceneRayCaster::SceneRayCaster(std::shared_ptr<const engine::StaticScene> scene)
+    : scene_(std::move(scene)) {}
+
+SceneRayCaster::~SceneRayCaster() = default;
+
+void SceneRayCaster::Build() const {
+  std::call_once(built_, [this] {
+    caster_ = std::make_unique<const engine::EmbreeRayCaster>(*scene_);
+    built_flag_.store(true, std::memory_order_release);
+  });
+}
+
+void SceneRayCaster::Cast(std::span<const engine::Ray> rays, std::span<engine::RayHit> hits) const {
+  Build();
+  caster_->Cast(rays, hits);
+}
 
 std::unique_ptr<engine::World> BuildWorld(const Scene& scene) {
   WorldResources resources;

@@ -97,6 +97,8 @@ struct LidarScan {
 /// firing time, and the sensor's pose and motion), which is what datasets record.
 class Lidar final : public engine::Sensor {
  public:
+  /// It casts rays (SensorContext::rays): worlds with one build their ray caster up front.
+  static constexpr bool kCastsRays = true;
   /// @param config validated here (throws InvalidField). @param stream this sensor's own random
   /// stream.
   Lidar(std::string name, const LidarConfig& config, engine::RandomStream stream);

@@ -47,6 +47,8 @@ struct RangefinderConfig {
 /// Worlds without a ray caster give no returns.
 class Rangefinder final : public engine::Sensor {
  public:
+  /// It casts rays (SensorContext::rays): worlds with one build their ray caster up front.
+  static constexpr bool kCastsRays = true;
   /// @param config validated here (throws InvalidField). @param stream this sensor's own random
   /// stream.
   Rangefinder(std::string name, const RangefinderConfig& config, engine::RandomStream stream);

@@ -131,6 +131,37 @@ TEST(VehiclesSectionTest, BuildWorldPlacesVehiclesAndMountsSensors) {
   ASSERT_NE(world->ray_caster(), nullptr);
 }
 
+// The ray caster's acceleration structures are built with the world only when a sensor casts
+// rays; otherwise by the first ray cast, with the same hits.
+TEST(VehiclesSectionTest, TheRayCasterIsBuiltUpFrontOnlyForSensorsThatCastRays) {
+  const std::string scene =
+      "scene: {seed: 5}\n"
+      "objects: [{name: wall, primitive: box, position_ned_m: [10, 0, -5], scale: [1, 20, 10]}]\n"
+      "vehicles:\n"
+      "  - name: a\n"
+      "    preset: quad_x\n"
+      "    start: {position_ned_m: [0, 0, -0.2]}\n"
+      "    sensors: [{imu: {}}, ";
+  engine::Ray ray;
+  ray.origin_W = engine::Vec3(0, 0, -5);
+  ray.direction_W = engine::Vec3::UnitX();
+  for (const char* sensor : {"{gps: {}}]\n", "{lidar: {}}]\n", "{rangefinder: {}}]\n"}) {
+    const bool casts = std::string(sensor).find("gps") == std::string::npos;
+    // GIVEN a world built from a scene whose vehicle has `sensor`
+    WorldResources resources;
+    const auto world =
+        BuildWorld(LoadSceneFromString(scene + sensor, "scenes/v.yaml"), 5, resources);
+    ASSERT_NE(resources.ray_caster, nullptr);
+    // THEN the caster is built already exactly when the sensor casts rays
+    EXPECT_EQ(resources.ray_caster->built(), casts) << sensor;
+    // AND a ray cast through the world hits the wall's near face either way, and builds it
+    engine::RayHit hit;
+    world->ray_caster()->Cast({&ray, 1}, {&hit, 1});
+    EXPECT_NEAR(hit.distance_m, 9.5, 1e-4) << sensor;
+    EXPECT_TRUE(resources.ray_caster->built()) << sensor;
+  }
+}
+
 TEST(VehiclesSectionTest, SensorFasterThanThePhysicsIsRejectedNamingIt) {
   const Scene s = LoadSceneFromString(
       "vehicles:\n"
