@@ -1,6 +1,7 @@
 #include "scenes/world_builder.h"
 
 #include <algorithm>
+#include <future>
 
 #include "engine/core/config.h"
 #include "engine/core/random.h"
@@ -78,19 +79,26 @@ std::unique_ptr<engine::World> Build(const Scene& scene, std::uint64_t seed, Wor
                                      bool cameras) {
   const engine::RandomStreams streams(seed);
   if (!shared.static_scene) shared.static_scene = scene.static_scene;
+  // The ray caster's BVH, when a sensor needs it, is built on a second thread while this one
+  // builds the collision world (each reads the static scene only; neither result depends on the
+  // other or on the timing).
+  std::future<void> rays_built;
   if (!shared.ray_caster) {
     auto caster = std::make_shared<const SceneRayCaster>(shared.static_scene);
     const auto casts_rays = [](const VehicleDescription& v) {
       return std::ranges::any_of(v.sensors,
                                  [](const SensorDescription& s) { return s.spec->casts_rays(); });
     };
-    if (std::ranges::any_of(scene.vehicles, casts_rays)) caster->Build();
+    if (std::ranges::any_of(scene.vehicles, casts_rays)) {
+      rays_built = std::async(std::launch::async, [caster] { caster->Build(); });
+    }
     shared.ray_caster = std::move(caster);
   }
   engine::Environment environment(scene.environment, scene.origin,
                                   streams.Stream("environment/wind"));
   auto world =
       std::make_unique<engine::World>(shared.static_scene, std::move(environment), scene.physics);
+  if (rays_built.valid()) rays_built.get();  // rethrows the build's error
   world->set_ray_caster(std::make_unique<SharedRayCaster>(shared.ray_caster));
   engine::ErrorCollector errors;
   for (const VehicleDescription& v : scene.vehicles) {

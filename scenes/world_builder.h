@@ -33,7 +33,8 @@ std::unique_ptr<engine::World> BuildWorldWithoutCameras(const Scene& scene);
 
 /// The static scene's ray caster (Embree, engine/world/embree_ray_caster.h), built by Build or else
 /// by the first Cast. BuildWorld builds it with the world when a vehicle has a sensor that casts
-/// rays (rangefinder, lidar: SensorSpec::casts_rays), so that no flight stops at its first scan
+/// rays (rangefinder, lidar: SensorSpec::casts_rays), on a second thread while the collision world
+/// is built, so that no flight stops at its first scan
 /// and `scene check` refuses what the run would; a world without one never builds it, which spares
 /// a 10 km forest's check 1.4 to 3.3 s and 450 MB (docs/performance.md). Thread-safe: concurrent
 /// first calls build it once; a build that throws throws from that call, and the next one tries
