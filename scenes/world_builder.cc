@@ -11,19 +11,6 @@
 namespace airis::scenes {
 namespace {
 
-// A world's handle on a ray caster that several worlds share (World owns its caster).
-class SharedRayCaster final : public engine::RayCaster {
- public:
-  explicit SharedRayCaster(std::shared_ptr<const engine::RayCaster> caster)
-      : caster_(std::move(caster)) {}
-  void Cast(std::span<const engine::Ray> rays, std::span<engine::RayHit> hits) const override {
-    caster_->Cast(rays, hits);
-  }
-
- private:
-  std::shared_ptr<const engine::RayCaster> caster_;
-};
-
 // A start may touch a surface or another vehicle; deeper than this is overlapping it.
 constexpr double kStartTolerance_m = 1e-3;
 
@@ -99,7 +86,7 @@ std::unique_ptr<engine::World> Build(const Scene& scene, std::uint64_t seed, Wor
   auto world =
       std::make_unique<engine::World>(shared.static_scene, std::move(environment), scene.physics);
   if (rays_built.valid()) rays_built.get();  // rethrows the build's error
-  world->set_ray_caster(std::make_unique<SharedRayCaster>(shared.ray_caster));
+  world->set_ray_caster(shared.ray_caster);
   engine::ErrorCollector errors;
   for (const VehicleDescription& v : scene.vehicles) {
     errors.Try([&] { AddVehicle(scene, v, streams, shared, cameras, *world); });

@@ -18,12 +18,12 @@ namespace airis::scenes {
 
 /// Builds the World of a loaded scene: the static scene (shared with collision and ray casting),
 /// the environment about the scene's origin, an Embree ray caster over the collidable geometry
-/// (SceneRayCaster: built when a sensor casts rays),
-/// each vehicle (of its kind and preset, in its start state) and its sensors. Random
-/// streams derive from the scene seed by name: `environment/wind`, `vehicles/NAME/SENSOR`. Throws
-/// ConfigError at the key of each config the engine rejects (a sensor faster than the scene's
-/// physics rate, an on_ground vehicle with nothing below it, a vehicle whose body overlaps an
-/// object or another vehicle where it starts, ...), every vehicle's mistakes together.
+/// (SceneRayCaster: built when a sensor casts rays), each vehicle (of its kind and preset, in its
+/// start state) and its sensors. Random streams derive from the scene seed by name:
+/// `environment/wind`, `vehicles/NAME/SENSOR`. Throws ConfigError at the key of each config the
+/// engine rejects (a sensor faster than the scene's physics rate, an on_ground vehicle with nothing
+/// below it, a vehicle whose body overlaps an object or another vehicle where it starts, ...),
+/// every vehicle's mistakes together.
 std::unique_ptr<engine::World> BuildWorld(const Scene& scene);
 
 /// As BuildWorld, without a GL context: every vehicle and sensor is built and checked as for a run
@@ -34,11 +34,10 @@ std::unique_ptr<engine::World> BuildWorldWithoutCameras(const Scene& scene);
 /// The static scene's ray caster (Embree, engine/world/embree_ray_caster.h), built by Build or else
 /// by the first Cast. BuildWorld builds it with the world when a vehicle has a sensor that casts
 /// rays (rangefinder, lidar: SensorSpec::casts_rays), on a second thread while the collision world
-/// is built, so that no flight stops at its first scan
-/// and `scene check` refuses what the run would; a world without one never builds it, which spares
-/// a 10 km forest's check 1.4 to 3.3 s and 450 MB (docs/performance.md). Thread-safe: concurrent
-/// first calls build it once; a build that throws throws from that call, and the next one tries
-/// again.
+/// is built, so that no flight stops at its first scan and `scene check` refuses what the run
+/// would; a world without one never builds it, which spares a 10 km forest's check 1.4 to 3.3 s
+/// and 450 MB (docs/performance.md). Thread-safe: concurrent first calls build it once; a build
+/// that throws throws from that call, and the next one tries again.
 class SceneRayCaster final : public engine::RayCaster {
  public:
   explicit SceneRayCaster(std::shared_ptr<const engine::StaticScene> scene);

@@ -151,9 +151,9 @@ class World {
   /// Sensors on all vehicles together.
   std::size_t sensor_count() const { return sensor_count_; }
 
-  /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world; may be
-  /// null).
-  void set_ray_caster(std::unique_ptr<RayCaster> caster) { ray_caster_ = std::move(caster); }
+  /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world, which may
+  /// share it between the worlds of one scene; may be null).
+  void set_ray_caster(std::shared_ptr<const RayCaster> caster) { ray_caster_ = std::move(caster); }
   const RayCaster* ray_caster() const { return ray_caster_.get(); }
 
   /// Calls `listener` for every collision event (on the thread that calls StepPhysics, during it,
@@ -265,7 +265,7 @@ class World {
   double sleep_dt_s_ = 0.0;
   std::vector<Slot> slots_;
   std::size_t sensor_count_ = 0;
-  std::unique_ptr<RayCaster> ray_caster_;
+  std::shared_ptr<const RayCaster> ray_caster_;  // worlds built from one scene share it
   std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
   // Vehicle-vehicle contact state (used only with several vehicles).
   BodyNeighbourList neighbours_;          // the broadphase between vehicles, kept from tick to tick
