@@ -173,6 +173,10 @@ int Run(DatasetJobOptions o, const DatasetArgs& a) {
               what.c_str(), r.succeeded ? "written" : "INCOMPLETE",
               static_cast<long long>(r.frames), r.cameras, r.wall_s,
               static_cast<double>(r.frames) / std::max(r.wall_s, 1e-9), r.simulated_s);
+  if (r.stopped_after_last_capture) {
+    std::printf(
+        "  flight         stopped after the mission's last capture (shard 1 flies it all)\n");
+  }
   if (r.lidars > 0) {
     std::printf("  lidar scans    %lld from %zu lidar(s)\n", static_cast<long long>(r.scans),
                 r.lidars);

@@ -1,12 +1,31 @@
 #include "tools/jobs/dataset_job.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "engine/mission/mission_estimate.h"
+#include "engine/mission/steps/host_steps.h"
 #include "scenes/mission_file.h"
 #include "tools/jobs/autopilots.h"
 
 namespace airis::tools {
+namespace {
+
+// For each track of `mission`, the index of its last step that starts recording, -1 if none.
+std::vector<int> LastCaptureSteps(const engine::Mission& mission) {
+  std::vector<int> last;
+  for (const engine::MissionTrack& track : mission.tracks) {
+    int index = -1;
+    for (std::size_t i = 0; i < track.steps.size(); ++i) {
+      const engine::CaptureStep* capture = track.steps[i].As<engine::CaptureStep>();
+      if (capture && capture->enabled) index = static_cast<int>(i);
+    }
+    last.push_back(index);
+  }
+  return last;
+}
+
+}  // namespace
 
 DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
                                const std::function<void(const JobProgress&)>& progress) {
@@ -37,6 +56,20 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
   flight.callbacks.on_event = [&](const engine::MissionEvent& e) {
     dataset.telemetry().RecordMissionEvent(e.time_ns, e.vehicle, e.step_index, e.step_kind, e.what);
   };
+  // Every shard writes the whole flight's log alike, except what follows the mission's last
+  // capture: there the first shard flies on alone and the others stop (their frames, scans and
+  // streams are complete; the merge takes the rest of mission_events.csv and collisions.csv and
+  // the mission's outcome from the first). With --streams flight every shard flies to the end.
+  const std::vector<int> last_capture = LastCaptureSteps(mission);
+  if (o.shard.count > 1 && o.shard.index > 1 && !o.full_streams) {
+    flight.done = [&](const engine::MissionSession& session) {
+      if (dataset.recorder().recording()) return false;
+      for (std::size_t t = 0; t < session.track_count(); ++t) {
+        if (session.runner(t).current_step() <= last_capture[t]) return false;
+      }
+      return true;
+    };
+  }
   if (progress) {
     flight.progress = [&](JobProgress p) {
       p.frames = dataset.recorder().frames_written();
@@ -46,9 +79,12 @@ DatasetJobResult RunDatasetJob(const DatasetJobOptions& o,
     };
   }
   const MissionOutcome outcome = job.FlyMission(mission, flight);
-  dataset.Finish(outcome.succeeded(), outcome.interrupted_by, outcome.simulated_s);
+  const bool complete = outcome.succeeded() || outcome.done_early;
+  if (outcome.done_early) dataset.MarkStoppedAfterLastCapture();
+  dataset.Finish(complete, outcome.interrupted_by, outcome.simulated_s);
   DatasetJobResult r;
-  r.succeeded = outcome.succeeded();
+  r.succeeded = complete;
+  r.stopped_after_last_capture = outcome.done_early;
   r.interrupted_by = outcome.interrupted_by;
   if (!r.succeeded) r.failure = outcome.failure;
   r.simulated_s = outcome.simulated_s;

@@ -36,6 +36,9 @@ struct DatasetJobResult {
   std::size_t lidars = 0;
   double wall_s = 0;  ///< wall time of the whole job: loading, flying, writing, finishing
   double simulated_s = 0;
+  /// A shard after the first stopped flying after the mission's last capture (the rest of the
+  /// flight's log is the first shard's, docs/cluster.md).
+  bool stopped_after_last_capture = false;
   /// With resume: frames the interrupted run left short or changed, written again (one line each).
   std::vector<std::string> redone;
 };

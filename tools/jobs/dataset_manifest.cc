@@ -179,7 +179,10 @@ nlohmann::json MakeDatasetManifest(const ManifestSource& o, const scenes::Scene&
   m["formats"] = FormatsJson(o.outputs);
   if (!lidars.empty()) m["formats"].push_back("lidar_pcd");
   m["annotations"] = {{"min_object_area_px", o.min_object_area_px}};
-  if (o.shard.count > 1) m["shard"] = {{"index", o.shard.index}, {"count", o.shard.count}};
+  if (o.shard.count > 1) {
+    m["shard"] = {{"index", o.shard.index}, {"count", o.shard.count}};
+    if (o.stopped_after_last_capture) m["shard"]["stopped_after_last_capture"] = true;
+  }
   nlohmann::json classes = nlohmann::json::array();
   for (const auto& c : world.scene().classes) classes.push_back({{"id", c.id}, {"name", c.name}});
   m["classes"] = classes;

@@ -22,6 +22,9 @@ struct ManifestSource {
   bool full_streams = false;             ///< streams of the whole flight, not the capture windows
   engine::StreamFormat stream_format = engine::StreamFormat::kNpy;
   int interrupted_by = 0;  ///< the signal that stopped the run early (recorded), 0 if none
+  /// A shard after the first that stopped flying after the mission's last capture (recorded in
+  /// its `shard` entry)
+  bool stopped_after_last_capture = false;
   /// Without a mission: the `px4` entry (the PX4 vehicles, their links and counts); else null.
   nlohmann::json px4;
 };

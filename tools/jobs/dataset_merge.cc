@@ -38,12 +38,14 @@ json ReadJson(const fs::path& path) {
 }
 
 // The manifest without what differs between the shards of one dataset: the shard entry, frame
-// and scan counts, depth pixels clipped, and the paths the scene and mission were given by (their
+// and scan counts, depth pixels clipped, the simulated time (the shards after the first stop
+// after the mission's last capture) and the paths the scene and mission were given by (their
 // content hashes must agree; shards made on machines with different checkouts merge).
 json Common(json m) {
   m.erase("shard");
   m["counts"].erase("frames");
   m["counts"].erase("scans");
+  m["counts"].erase("simulated_time_s");
   m["scene"].erase("file");
   if (m["mission"].is_object()) m["mission"].erase("file");  // null: PX4 flown from outside
   for (json& c : m["cameras"]) {

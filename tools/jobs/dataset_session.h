@@ -70,6 +70,10 @@ class DatasetSession {
   void Finish(bool succeeded, int interrupted_by, double simulated_s,
               const nlohmann::json& px4 = nullptr);
 
+  /// Records in the manifest (its `shard` entry) that this shard stopped flying after the
+  /// mission's last capture. Call before Finish.
+  void MarkStoppedAfterLastCapture() { source_.stopped_after_last_capture = true; }
+
   /// Frames written, all cameras (after Finish).
   std::int64_t frames() const;
 

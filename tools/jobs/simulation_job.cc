@@ -104,6 +104,7 @@ MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
   engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;
   // Slices of ticks, so that the progress line can be refreshed between them.
   int interrupted_by = 0;
+  bool done_early = false;
   while (state == engine::MissionRunner::State::kRunning &&
          sim.clock().now_ns() < flight.until_ns) {
     if (flight.stop && (interrupted_by = flight.stop->load()) != 0) break;
@@ -111,10 +112,15 @@ MissionOutcome SimulationJob::FlyMission(const engine::Mission& mission,
         std::min(flight.until_ns, sim.clock().now_ns() + flight.progress_every_ns);
     state = session.Run(end);
     if (flight.progress) flight.progress(Progress(session));
+    if (state == engine::MissionRunner::State::kRunning && flight.done && flight.done(session)) {
+      done_early = true;
+      break;
+    }
   }
   MissionOutcome out;
   out.state = state;
   out.interrupted_by = interrupted_by;
+  out.done_early = done_early;
   out.failure = session.failure();
   out.simulated_s = sim.clock().now_s();
   for (std::size_t t = 0; t < session.track_count(); ++t) {

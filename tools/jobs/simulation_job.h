@@ -66,6 +66,8 @@ struct MissionOutcome {
   /// kRunning when stopped early: by `until_ns`, or by a signal (interrupted_by)
   engine::MissionRunner::State state = engine::MissionRunner::State::kRunning;
   int interrupted_by = 0;  ///< the signal that stopped the flight (SIGINT, ...), 0 if none
+  /// The flight's `done` said the job had all it needs before the mission ended (state kRunning)
+  bool done_early = false;
   /// Why it failed ("file:line: vehicle 'drone1' step 3 (goto): ..."): the first track to fail
   std::string failure;
   bool ended_by_collision = false;  ///< that failure was a collision
@@ -90,6 +92,9 @@ struct MissionFlight {
   /// When it holds a signal number (set by a front end's signal handler), the flight stops at the
   /// end of the current slice and reports it.
   const std::atomic<int>* stop = nullptr;
+  /// Asked after each slice while the mission runs: true when the job has all it needs from the
+  /// flight (a dataset shard past the mission's last capture); the flight then ends there.
+  std::function<bool(const engine::MissionSession&)> done;
 };
 
 /// What every job starts from (`airis run`, `airis dataset`, `airis px4`, the Python API): the

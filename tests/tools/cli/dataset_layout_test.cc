@@ -94,6 +94,7 @@ steps:
   - yaw: {yaw_deg: 90}
   - hover: {duration_s: 2}
   - capture: {enabled: false}
+  - goto: {position_ned_m: [3, 0, -15], speed_m_s: 3}
 )");
 }
 
@@ -185,6 +186,20 @@ TEST(DatasetLayoutTest, ShardsMergeIntoTheUnshardedDatasetByteForByte) {
   EXPECT_FALSE(fs::exists(s1 / "down/rgb/000001.png"));
   EXPECT_TRUE(fs::exists(s2 / "pair_right/rgb/000001.png"));
   EXPECT_FALSE(fs::exists(s2 / "pair_right/rgb/000002.png"));
+  // The first shard flies the whole mission; the others stop after its last capture, before the
+  // goto that follows it, and say so.
+  const double flown_s = m1["counts"]["simulated_time_s"],
+               stopped_s = m2["counts"]["simulated_time_s"];
+  EXPECT_FALSE(m1["shard"].contains("stopped_after_last_capture"));
+  EXPECT_EQ(m2["shard"]["stopped_after_last_capture"], true);
+  EXPECT_LT(stopped_s, flown_s - 0.5);
+  EXPECT_LT(Bytes(s2 / "mission_events.csv").size(), Bytes(s1 / "mission_events.csv").size());
+  // Streams of the whole flight (--streams flight) need the whole flight from every shard.
+  const json full_streams =
+      ReadJson(MakeBalls("shard2_full_streams", "--cameras down --streams flight --shard 2/3") /
+               "manifest.json");
+  EXPECT_FALSE(full_streams["shard"].contains("stopped_after_last_capture"));
+  EXPECT_EQ(full_streams["counts"]["simulated_time_s"], flown_s);
 
   const fs::path merged = airis::testing::TestTempDir() / "airis_balls_merged";
   fs::remove_all(merged);
