@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "engine/core/error.h"
 #include "engine/dataset/contact_sheet.h"
@@ -167,9 +168,11 @@ fs::path FirstDifferent(const std::vector<Shard>& shards, const fs::path& rel) {
   return {};
 }
 
-// Rows of one CSV from every shard in time order (first column, integer ns). Rows two shards both
-// hold (a stereo frame that each shard rendered for one eye) are written once; the headers must
-// agree. A file every shard wrote alike (the whole flight's log) is that file, linked.
+// Rows of one CSV from every shard in time order (first column, integer ns). A row several shards
+// hold (a stereo frame that each shard rendered for one eye; the events before the last capture,
+// which every shard logged) is written as often as the one shard holding it most often has it: a
+// row that one shard logged twice at one time stays twice. The headers must agree. A file every
+// shard wrote alike is that file, linked.
 void JoinCsv(const std::vector<Shard>& shards, const fs::path& rel, const fs::path& out) {
   if (FirstDifferent(shards, rel).empty()) {
     CopyNew(shards.front().dir / rel, out / rel);
@@ -183,18 +186,31 @@ void JoinCsv(const std::vector<Shard>& shards, const fs::path& rel, const fs::pa
                            parts.front().path.string());
     }
   }
-  std::vector<std::pair<std::int64_t, const std::string*>> rows;  // stable within a shard
-  for (const auto& p : parts) {
-    for (std::size_t r = 0; r < p.rows.size(); ++r) rows.emplace_back(p.Integer(r, 0), &p.rows[r]);
+  struct Row {
+    std::int64_t time_ns;
+    std::size_t shard;
+    const std::string* text;
+  };
+  std::vector<Row> rows;  // in shard order, stable within a shard
+  for (std::size_t s = 0; s < parts.size(); ++s) {
+    for (std::size_t r = 0; r < parts[s].rows.size(); ++r)
+      rows.push_back({parts[s].Integer(r, 0), s, &parts[s].rows[r]});
   }
   std::stable_sort(rows.begin(), rows.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+                   [](const Row& a, const Row& b) { return a.time_ns < b.time_ns; });
   std::vector<std::string> joined;
+  std::map<std::pair<std::size_t, std::string_view>, int> held;  // within one time: shard, row
+  std::map<std::string_view, int> written;                       // within one time: row
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    bool seen = false;
-    for (std::size_t j = i; j-- > 0 && rows[j].first == rows[i].first;)
-      seen = seen || *rows[j].second == *rows[i].second;
-    if (!seen) joined.push_back(*rows[i].second);
+    if (i > 0 && rows[i].time_ns != rows[i - 1].time_ns) {
+      held.clear();
+      written.clear();
+    }
+    const std::string_view text = *rows[i].text;
+    if (++held[{rows[i].shard, text}] > written[text]) {
+      ++written[text];
+      joined.push_back(*rows[i].text);
+    }
   }
   engine::WriteFileAtomically(out / rel, engine::JoinCsvText(parts.front().header, joined));
 }

@@ -213,6 +213,26 @@ TEST(DatasetLayoutTest, ShardsMergeIntoTheUnshardedDatasetByteForByte) {
     ASSERT_TRUE(joined.count(name)) << name;
     EXPECT_TRUE(joined.at(name) == bytes) << name << " differs";
   }
+
+  // A row that shard 1 logged twice at one time (two alike contacts in one tick) is merged twice,
+  // although the other shards' shorter logs hold it once or not at all.
+  std::vector<fs::path> copies;
+  for (const fs::path& s : {s1, s2, s3}) {
+    copies.push_back(airis::testing::TestTempDir() / (s.filename().string() + "_twice"));
+    fs::remove_all(copies.back());
+    fs::copy(s, copies.back(), fs::copy_options::recursive);
+  }
+  const fs::path events = copies[0] / "mission_events.csv";
+  std::string text = Bytes(events);
+  const std::size_t last_row = text.rfind('\n', text.size() - 2) + 1;
+  text += text.substr(last_row);
+  std::ofstream(events, std::ios::binary) << text;
+  const fs::path twice = airis::testing::TestTempDir() / "airis_balls_merged_twice";
+  fs::remove_all(twice);
+  const auto r2 = RunAiris("dataset merge " + copies[0].string() + " " + copies[1].string() + " " +
+                           copies[2].string() + " --out " + twice.string());
+  ASSERT_EQ(r2.exit_code, 0) << r2.out << r2.err;
+  EXPECT_TRUE(Bytes(twice / "mission_events.csv") == Bytes(events));
 }
 
 // `--slurm 1` (a campaign's one-task datasets) merges the one whole dataset its task wrote: the
