@@ -64,8 +64,9 @@ Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
   // A white noise of density N (unit/sqrt(Hz)) sampled at f_s has per-sample sigma N sqrt(f_s).
   const double sqrt_rate = std::sqrt(config.rate_hz);
   const double dt_s = 1.0 / config.rate_hz;
-  gyro_white_sigma_rad_s_ = engine::DegToRad(config.gyro_noise_density_deg_s_sqrt_hz) * sqrt_rate;
-  accel_white_sigma_m_s2_ = config.accel_noise_density_ug_sqrt_hz * kMicroG * sqrt_rate;
+  white_sigma_.head<3>().setConstant(engine::DegToRad(config.gyro_noise_density_deg_s_sqrt_hz) *
+                                     sqrt_rate);
+  white_sigma_.tail<3>().setConstant(config.accel_noise_density_ug_sqrt_hz * kMicroG * sqrt_rate);
 
   // The peak of the bias's Allan deviation is the floor IEEE Std 952 reads a data sheet's bias
   // instability B from, 0.664 B: sigma_b = 0.664 B / 0.617.
@@ -73,13 +74,17 @@ Imu::Imu(std::string name, const ImuConfig& config, engine::RandomStream stream)
   const double gyro_bias_sigma =
       config.gyro_bias_instability_deg_h * kDegPerHourToRadPerSecond * kSigmaPerInstability;
   const double accel_bias_sigma = config.accel_bias_instability_ug * kMicroG * kSigmaPerInstability;
-  gyro_bias_step_ = GaussMarkovStep::Make(gyro_bias_sigma, config.gyro_bias_correlation_s, dt_s);
-  accel_bias_step_ = GaussMarkovStep::Make(accel_bias_sigma, config.accel_bias_correlation_s, dt_s);
+  const auto gyro_step =
+      GaussMarkovStep::Make(gyro_bias_sigma, config.gyro_bias_correlation_s, dt_s);
+  const auto accel_step =
+      GaussMarkovStep::Make(accel_bias_sigma, config.accel_bias_correlation_s, dt_s);
+  bias_decay_ << Vec3::Constant(gyro_step.a), Vec3::Constant(accel_step.a);
+  bias_innovation_ << Vec3::Constant(gyro_step.b), Vec3::Constant(accel_step.b);
 
   // Power-on draws, in a fixed order: in-run biases from their stationary distribution, then
   // turn-on biases, then scale factors.
-  gyro_bias_ = GaussianVec3(stream_, gyro_bias_sigma);
-  accel_bias_ = GaussianVec3(stream_, accel_bias_sigma);
+  bias_.head<3>() = GaussianVec3(stream_, gyro_bias_sigma);
+  bias_.tail<3>() = GaussianVec3(stream_, accel_bias_sigma);
   gyro_turn_on_bias_ = GaussianVec3(stream_, engine::DegToRad(config.gyro_turn_on_bias_deg_s));
   accel_turn_on_bias_ = GaussianVec3(stream_, config.accel_turn_on_bias_mg * kMilliG);
   gyro_scale_ = Vec3::Ones() + GaussianVec3(stream_, config.gyro_scale_factor_ppm * 1e-6);
@@ -112,16 +117,18 @@ void Imu::Sample(const engine::SensorContext& context) {
 
   // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
   // reproducible.
-  std::array<double, 12> n;
+  // reproducible. Each bias steps as GaussMarkovStep::Next, a x + b n; the sample is the truth plus
+  // the bias plus the white noise, in that order.
+  alignas(16) std::array<double, 12> n;
   engine::StandardNormals(stream_, n);
-  gyro_bias_ = gyro_bias_step_.Next(gyro_bias_, Vec3(n[0], n[1], n[2]));
-  accel_bias_ = accel_bias_step_.Next(accel_bias_, Vec3(n[3], n[4], n[5]));
-  const Vec3 gyro_white = gyro_white_sigma_rad_s_ * Vec3(n[6], n[7], n[8]);
-  const Vec3 accel_white = accel_white_sigma_m_s2_ * Vec3(n[9], n[10], n[11]);
+  const Eigen::Map<const Vec6, Eigen::Aligned16> bias_normals(n.data());
+  const Eigen::Map<const Vec6, Eigen::Aligned16> white_normals(n.data() + 6);
+  bias_ = bias_decay_.cwiseProduct(bias_) + bias_innovation_.cwiseProduct(bias_normals);
+  const Vec6 sample = (truth_S_ + bias_) + white_sigma_.cwiseProduct(white_normals);
 
   latest_.time_ns = context.now_ns;
-  latest_.angular_velocity_S_rad_s = gyro_truth_S_ + gyro_bias_ + gyro_white;
-  latest_.specific_force_S_m_s2 = accel_truth_S_ + accel_bias_ + accel_white;
+  latest_.angular_velocity_S_rad_s = sample.head<3>();
+  latest_.specific_force_S_m_s2 = sample.tail<3>();
 }
 
 void Imu::UpdateTruth(const engine::RigidBodyState& s, const engine::RigidBodyAccelerations& a,
@@ -145,8 +152,8 @@ void Imu::UpdateTruth(const engine::RigidBodyState& s, const engine::RigidBodyAc
   const Vec3 w_S = rotated_ ? Vec3(R_SB_ * w_IB_B) : w_IB_B;
   const Vec3 f_S = rotated_ ? Vec3(R_SB_ * f_B) : f_B;
 
-  gyro_truth_S_ = gyro_scale_.cwiseProduct(w_S) + gyro_turn_on_bias_;
-  accel_truth_S_ = accel_scale_.cwiseProduct(f_S) + accel_turn_on_bias_;
+  truth_S_.head<3>() = gyro_scale_.cwiseProduct(w_S) + gyro_turn_on_bias_;
+  truth_S_.tail<3>() = accel_scale_.cwiseProduct(f_S) + accel_turn_on_bias_;
 }
 
 }  // namespace airis::sensors

@@ -94,9 +94,6 @@ class Imu final : public engine::Sensor {
   const engine::InertialSample* inertial() const override { return &latest_; }
   engine::Quat q_BS() const override { return config_.mount.q_BS(); }
   const ImuConfig& config() const { return config_; }
-  /// Current in-run biases (sensor frame), for tests and diagnostics.
-  const engine::Vec3& gyro_bias_rad_s() const { return gyro_bias_; }
-  const engine::Vec3& accel_bias_m_s2() const { return accel_bias_; }
 
   std::span<const std::string> columns() const override;
   std::string_view column_doc(std::size_t column) const override;
@@ -106,8 +103,12 @@ class Imu final : public engine::Sensor {
   void Sample(const engine::SensorContext& context) override;
 
  private:
+  // Six values a sample, the gyroscope's three axes then the accelerometer's, so that a sample's
+  // arithmetic is three packed operations a line.
+  using Vec6 = Eigen::Matrix<double, 6, 1>;
+
   // The truth in sensor axes with the scale errors and turn-on biases applied, (1 + s) truth +
-  // b_on, into gyro_truth_S_ and accel_truth_S_.
+  // b_on, into truth_S_.
   void UpdateTruth(const engine::RigidBodyState& s, const engine::RigidBodyAccelerations& a,
                    const engine::Environment& environment);
 
@@ -117,20 +118,17 @@ class Imu final : public engine::Sensor {
   engine::Vec3 p_BS_;
   bool rotated_;        // R_SB_ is not the identity
   bool has_lever_arm_;  // p_BS_ is not zero
-  double gyro_white_sigma_rad_s_;
-  double accel_white_sigma_m_s2_;
-  GaussMarkovStep gyro_bias_step_;
-  GaussMarkovStep accel_bias_step_;
-  engine::Vec3 gyro_bias_;
-  engine::Vec3 accel_bias_;
+  Vec6 white_sigma_;    // per-sample sigma of the white noise (rad/s, m/s^2)
+  Vec6 bias_decay_;     // the in-run biases' Gauss-Markov steps (GaussMarkovStep's a and b)
+  Vec6 bias_innovation_;
+  Vec6 bias_;  // the in-run biases (sensor axes)
   engine::Vec3 gyro_turn_on_bias_;
   engine::Vec3 accel_turn_on_bias_;
   engine::Vec3 gyro_scale_;  // 1 + s per axis
   engine::Vec3 accel_scale_;
   engine::InertialSample latest_;
   // UpdateTruth's result, and the motion serial it was worked out for (0: none).
-  engine::Vec3 gyro_truth_S_ = engine::Vec3::Zero();
-  engine::Vec3 accel_truth_S_ = engine::Vec3::Zero();
+  Vec6 truth_S_ = Vec6::Zero();
   std::uint64_t truth_motion_serial_ = 0;
 };
 

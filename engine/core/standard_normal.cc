@@ -70,15 +70,18 @@ std::array<std::uint32_t, kLayers> MakeMagnitudeBounds() {
   return k;
 }
 
-std::array<double, kLayers> MakeMagnitudeScales() {
-  std::array<double, kLayers> w{};
-  for (int i = 0; i < kLayers; ++i) w[i] = std::ldexp(kLayerEdges[i], -23);
+std::array<double, 2 * kLayers> MakeMagnitudeScales() {
+  std::array<double, 2 * kLayers> w{};
+  for (int i = 0; i < kLayers; ++i) {
+    w[i] = std::ldexp(kLayerEdges[i], -23);
+    w[kLayers + i] = -w[i];
+  }
   return w;
 }
 }  // namespace
 
 const std::array<std::uint32_t, 256> kMagnitudeBounds = MakeMagnitudeBounds();
-const std::array<double, 256> kMagnitudeScales = MakeMagnitudeScales();
+const std::array<double, 512> kMagnitudeScales = MakeMagnitudeScales();
 
 double SampleSlowPath32(RandomStream& stream, std::uint32_t h) {
   const std::size_t i = h & 0xFF;

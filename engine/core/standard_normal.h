@@ -30,19 +30,19 @@ inline bool TryFastPath(std::uint64_t u, double* x) {
 /// rectangle of its layer exactly when m < kMagnitudeBounds[i] (= ceil(2^23 x[i+1] / x[i])), an
 /// integer compare before any conversion.
 extern const std::array<std::uint32_t, 256> kMagnitudeBounds;
-extern const std::array<double, 256> kMagnitudeScales;
+/// kMagnitudeScales[h & 0x1FF]: the scale of layer h & 0xFF, negated when the sign bit 8 is set, so
+/// that the signed normal is one multiply (m times a negated scale is the negated product, -0.0 for
+/// m = 0 included: the same bits as flipping the product's sign).
+extern const std::array<double, 512> kMagnitudeScales;
 /// The wedge or the tail of the 32-bit draw `h`; a rejected wedge point restarts with a fresh
 /// StandardNormal draw from `stream` (any exact draw may restart the method).
 double SampleSlowPath32(RandomStream& stream, std::uint32_t h);
 /// The common case (about 99%) of the 32-bit draw `h`: true with the normal in `x`; false when
 /// SampleSlowPath32 must decide.
 inline bool TryFastPath32(std::uint32_t h, double* x) {
-  const std::size_t i = h & 0xFF;
   const std::uint32_t m = h >> 9;
-  if (m >= kMagnitudeBounds[i]) return false;
-  const double v = static_cast<double>(static_cast<std::int32_t>(m)) * kMagnitudeScales[i];
-  *x = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^
-                             (static_cast<std::uint64_t>(h & 0x100) << 55));
+  if (m >= kMagnitudeBounds[h & 0xFF]) return false;
+  *x = static_cast<double>(static_cast<std::int32_t>(m)) * kMagnitudeScales[h & 0x1FF];
   return true;
 }
 }  // namespace ziggurat
