@@ -1,7 +1,6 @@
 // The `forest` generator (scene_config.h ForestConfig): Poisson-disc trees of a species mix.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include "engine/mission/path.h"
@@ -102,79 +101,6 @@ bool AreaContains(const AreaConfig& area, const Vector2d& p) {
 double AreaOf(const AreaConfig& area) {
   if (area.polygon_m.empty()) return area.size_m.x() * area.size_m.y();
   return engine::CalcPolygonArea_m2(area.polygon_m);
-}
-
-std::vector<Vector2d> PoissonDiscSample(const Vector2d& lo, const Vector2d& hi, double radius_m,
-                                        engine::RandomStream& stream) {
-  // Bridson (SIGGRAPH 2007 sketch): background grid of cell r/sqrt(2) holds at most one sample;
-  // each active sample tries k annulus points in [r, 2r] and retires when all fail.
-  constexpr int kTries = 30;
-  const double cell = radius_m / std::sqrt(2.0);
-  const Vector2d size = hi - lo;
-  const int gx = std::max(1, static_cast<int>(std::ceil(size.x() / cell)));
-  const int gy = std::max(1, static_cast<int>(std::ceil(size.y() / cell)));
-  // Each cell holds its sample's coordinates (NaN when empty), so that the neighbourhood test
-  // reads the grid alone: in a 10 km forest the samples' list is far larger than the caches.
-  const double kEmpty = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Vector2d> grid(static_cast<std::size_t>(gx) * gy, Vector2d(kEmpty, kEmpty));
-  std::vector<Vector2d> points;
-  points.reserve(static_cast<std::size_t>(size.x() * size.y() / (radius_m * radius_m)));
-  std::vector<std::int32_t> active;
-  const double per_cell = 1.0 / cell;
-  auto cell_of = [&](const Vector2d& p, int* cx, int* cy) {
-    *cx = std::min(gx - 1, static_cast<int>((p.x() - lo.x()) * per_cell));
-    *cy = std::min(gy - 1, static_cast<int>((p.y() - lo.y()) * per_cell));
-  };
-  auto add = [&](const Vector2d& p) {
-    int cx, cy;
-    cell_of(p, &cx, &cy);
-    grid[static_cast<std::size_t>(cy) * gx + cx] = p;
-    active.push_back(static_cast<std::int32_t>(points.size()));
-    points.push_back(p);
-  };
-  // The 5 x 5 cells around p's, less the four corners: a sample there is at least
-  // sqrt(2) cells = radius_m away.
-  const double r2 = radius_m * radius_m;
-  auto far_enough = [&](const Vector2d& p) {
-    int cx, cy;
-    cell_of(p, &cx, &cy);
-    for (int y = std::max(0, cy - 2); y <= std::min(gy - 1, cy + 2); ++y) {
-      const bool edge_row = y == cy - 2 || y == cy + 2;
-      const Vector2d* row = &grid[static_cast<std::size_t>(y) * gx];
-      for (int x = std::max(0, cx - 2); x <= std::min(gx - 1, cx + 2); ++x) {
-        if (edge_row && (x == cx - 2 || x == cx + 2)) continue;
-        if ((row[x] - p).squaredNorm() < r2) return false;  // false for an empty (NaN) cell
-      }
-    }
-    return true;
-  };
-  add(Vector2d(stream.Uniform(lo.x(), hi.x()), stream.Uniform(lo.y(), hi.y())));
-  while (!active.empty()) {
-    const std::size_t pick = static_cast<std::size_t>(stream.UniformInt(0, active.size() - 1));
-    const Vector2d centre = points[active[pick]];
-    bool placed = false;
-    for (int t = 0; t < kTries; ++t) {
-      // Uniform by area in the annulus [r, 2r]: drawn in its bounding square until inside (59 % of
-      // draws are; cheaper than an angle's sine and cosine and a square root).
-      Vector2d offset;
-      double d2;
-      do {
-        offset = Vector2d(stream.Uniform(-2.0, 2.0), stream.Uniform(-2.0, 2.0));
-        d2 = offset.squaredNorm();
-      } while (d2 < 1.0 || d2 > 4.0);
-      const Vector2d p = centre + radius_m * offset;
-      if (p.x() < lo.x() || p.y() < lo.y() || p.x() >= hi.x() || p.y() >= hi.y()) continue;
-      if (!far_enough(p)) continue;
-      add(p);
-      placed = true;
-      break;
-    }
-    if (!placed) {
-      active[pick] = active.back();
-      active.pop_back();
-    }
-  }
-  return points;
 }
 
 GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,

@@ -59,10 +59,15 @@ GeneratorReport GenerateForest(const ForestConfig& config, const ForestResources
                                const std::string& name, engine::RandomStream& stream,
                                engine::StaticSceneBuilder& builder);
 
-/// Poisson-disc points with minimum distance `radius_m` over [lo, hi] (Bridson's algorithm, k = 30
-/// tries).
+/// Poisson-disc points with minimum distance `radius_m` over [lo, hi) (Bridson's algorithm, k = 30
+/// tries; poisson_disc.cc). An area up to 4 km across in y is sampled whole from `stream`. A wider
+/// one is sampled in bands of about 1 km along y, each from its own stream forked from `stream`,
+/// on up to `threads` threads (0: one per core), then the strips of 8 grid rows between the bands
+/// from the samples beside them, so the points are the same for any number of threads. `stream`
+/// is drawn from only in the first case.
 std::vector<Eigen::Vector2d> PoissonDiscSample(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
-                                               double radius_m, engine::RandomStream& stream);
+                                               double radius_m, engine::RandomStream& stream,
+                                               int threads = 0);
 
 /// Street blocks [north, east] a city lays over its area (at least one each way), as doubles so
 /// that huge areas can be checked against kMaxCityBlocks before anything is built.

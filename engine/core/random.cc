@@ -36,8 +36,6 @@ RandomStream RandomStream::Fork(std::string_view name) const {
   return RandomStream(h);
 }
 
-double RandomStream::Uniform01() { return static_cast<double>(NextU64() >> 11) * 0x1.0p-53; }
-
 std::int64_t RandomStream::UniformInt(std::int64_t lo, std::int64_t hi) {
   AIRIS_DEMAND(lo <= hi);
   const std::uint64_t range = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);

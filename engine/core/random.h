@@ -39,8 +39,9 @@ class RandomStream {
   std::uint64_t NextU64() { return Next(s_); }
   const State& state() const { return s_; }
   void set_state(const State& state) { s_ = state; }
-  /// Uniform on [0, 1), 53 bits of resolution.
-  double Uniform01();
+  /// Uniform on [0, 1), 53 bits of resolution. Inline: generators draw millions (a 10 km forest's
+  /// Poisson-disc sampling some 200 M).
+  double Uniform01() { return static_cast<double>(NextU64() >> 11) * 0x1.0p-53; }
   /// Uniform on [lo, hi).
   double Uniform(double lo, double hi) { return lo + (hi - lo) * Uniform01(); }
   /// Uniform integer on [lo, hi] (inclusive), without modulo bias. Requires lo <= hi.

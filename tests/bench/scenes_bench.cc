@@ -154,6 +154,28 @@ void BM_PoissonDisc36ha(benchmark::State& state) {
 }
 BENCHMARK(BM_PoissonDisc36ha)->Unit(benchmark::kMillisecond);
 
+// A wide area (5 km x 5 km at r = 7.5 m, the 10 km forest's spacing): five bands of 1 km, on 1 or
+// 2 threads (the points are the same).
+void BM_PoissonDisc5km(benchmark::State& state) {
+  const auto threads = static_cast<int>(state.range(0));
+  const Eigen::Vector2d lo(0, 0), hi(5000, 5000);
+  std::size_t points = 0;
+  for (auto _ : state) {
+    engine::RandomStream stream(1);
+    auto p = PoissonDiscSample(lo, hi, 7.5, stream, threads);
+    points = p.size();
+    benchmark::DoNotOptimize(p.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(points));
+  state.counters["points"] = static_cast<double>(points);
+}
+BENCHMARK(BM_PoissonDisc5km)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 void BM_GenerateCity10k(benchmark::State& state) {
   const CityConfig config = TenThousandObjectCity();
   auto run = [&] {
