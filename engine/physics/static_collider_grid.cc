@@ -48,9 +48,9 @@ StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds) {
   }
   bounds = {};
   if (n == 0) return;
-  std::vector<double> sorted = widths;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
-  const double median = sorted[n / 2];
+  std::nth_element(widths.begin(), widths.begin() + static_cast<long>(n / 2), widths.end());
+  const double median = widths[n / 2];
+  widths = {};
   // Objects whose footprint covers more than a quarter of everything's (ground planes, terrain)
   // are tested one by one; everything else, long thin streets and walls included, goes into the
   // grid, where a query sees only the cells around the vehicle.
@@ -61,6 +61,7 @@ StaticColliderGrid::StaticColliderGrid(std::vector<ColliderBounds> bounds) {
   }
   const double everything_area = everything.sizes().prod();
   std::vector<std::uint32_t> gridded;
+  gridded.reserve(n);
   Eigen::AlignedBox2d plan;
   for (std::size_t i = 0; i < n; ++i) {
     const double area = (aabbs_[i].hi - aabbs_[i].lo).head<2>().cast<double>().prod();

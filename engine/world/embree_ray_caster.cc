@@ -103,6 +103,9 @@ EmbreeRayCaster::EmbreeRayCaster(const StaticScene& scene) {
     model_first_part_.assign(scene.models.size(), kNoParts);
     reflectivities_.reserve(scene.materials.size());
     for (const Material& m : scene.materials) reflectivities_.push_back(m.base_color_rgb.mean());
+    instances_.reserve(static_cast<std::size_t>(
+        std::count_if(scene.objects.begin(), scene.objects.end(),
+                      [](const StaticObject& o) { return o.collision != CollisionShape::kNone; })));
 
     for (const StaticObject& object : scene.objects) {
       if (object.collision == CollisionShape::kNone) continue;

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -58,6 +59,29 @@ TEST(CollisionWorldTest, LabelsAndMaterialsComeFromTheScene) {
   std::vector<Contact> contacts;
   world.FindContacts(body, Vec3(5.0, 0.0, -0.5), Quat::Identity(), 0.0, contacts);
   EXPECT_TRUE(contacts.empty());
+}
+
+// A scene made by hand with an index outside its tables: the error names the object's field (the
+// name is made only then: a big world's objects are millions).
+TEST(CollisionWorldTest, AnIndexOutsideTheScenesTablesNamesTheObjectsField) {
+  BoxSceneBuilder b;
+  b.AddGround();
+  b.AddBox("crate", Vec3(0.0, 0.0, -0.5), Vec3::Ones());
+  const auto message = [](const StaticScene& scene) -> std::string {
+    try {
+      CollisionWorld world(scene);
+    } catch (const InvalidField& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  StaticScene bad_model = b.scene();
+  bad_model.objects[1].model = 99;
+  EXPECT_NE(message(bad_model).find("objects[1].model"), std::string::npos) << message(bad_model);
+  StaticScene bad_material = b.scene();
+  bad_material.objects[1].material_override = 99;
+  EXPECT_NE(message(bad_material).find("objects[1].material"), std::string::npos)
+      << message(bad_material);
 }
 
 TEST(CollisionWorldTest, SphereContactNormalPointsTowardTheBody) {
