@@ -53,12 +53,12 @@ class DiscGrid {
   }
 
   int rows() const { return rows_; }
-  double cell_m() const { return cell_; }
 
   // Bridson's algorithm over the rows [row_begin, row_end): each active sample tries kTries
   // points of the annulus [r, 2r] around it and retires when all fail. Starts from `seeds` (samples
-  // already placed, as centres only) or, with none, from one uniform point of the rows. Appends
-  // the new samples to `out`.
+  // already placed, as centres only) or, with none, from one uniform point of the rows (a few
+  // tries: one drawn at the rows' very end may round into the next row). Appends the new samples
+  // to `out`.
   void Fill(int row_begin, int row_end, std::vector<Vector2d> seeds, engine::RandomStream& stream,
             std::vector<Vector2d>& out) {
     std::vector<Vector2d>& active = seeds;
@@ -67,14 +67,13 @@ class DiscGrid {
       active.push_back(p);
       out.push_back(p);
     };
-    // (A start drawn at the rows' very end may round into the next row: drawn again.)
     const double y_begin = lo_.y() + row_begin * cell_;
     const double y_end = std::min(hi_.y(), lo_.y() + row_end * cell_);
-    while (active.empty()) {
+    for (int attempt = 0; active.empty() && attempt < kTries; ++attempt) {
       const Vector2d p(stream.Uniform(lo_.x(), hi_.x()), stream.Uniform(y_begin, y_end));
       int row = 0;
       const std::ptrdiff_t index = IndexOf(p, &row);
-      if (row >= row_begin && row < row_end) add(p, index);
+      if (row >= row_begin && row < row_end && IsFarEnough(p, index)) add(p, index);
     }
     while (!active.empty()) {
       const std::size_t pick = static_cast<std::size_t>(stream.UniformInt(0, active.size() - 1));
