@@ -116,7 +116,6 @@ void Imu::Sample(const engine::SensorContext& context) {
   }
 
   // Draw order is fixed (gyro bias, accel bias, gyro noise, accel noise) so streams are
-  // reproducible.
   // reproducible. Each bias steps as GaussMarkovStep::Next, a x + b n; the sample is the truth plus
   // the bias plus the white noise, in that order.
   alignas(16) std::array<double, 12> n;

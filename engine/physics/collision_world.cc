@@ -470,8 +470,10 @@ CollisionWorld::CollisionWorld(const StaticScene& scene) : bullet_(std::make_uni
     const StaticObject& object = scene.objects[oi];
     // The field's name is made for an error only: the objects are millions in a big world.
     const auto require = [oi](bool condition, std::string_view key, std::string_view problem) {
-      if (!condition)
-        Require(false, "objects[" + std::to_string(oi) + "]" + std::string(key), problem);
+      if (!condition) {
+        throw InvalidField("objects[" + std::to_string(oi) + "]" + std::string(key),
+                           std::string(problem));
+      }
     };
     if (object.collision == CollisionShape::kNone) {
       ++skipped_;
