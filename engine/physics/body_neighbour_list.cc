@@ -40,11 +40,20 @@ void BodyNeighbourList::Build(std::span<const BodyBounds> bounds) {
   ++builds_;
 }
 
+bool BodyNeighbourList::Holds(std::size_t i, const BodyBounds& box) const {
+  return i < grown_.size() && Inside(box, grown_[i]);
+}
+
 void BodyNeighbourList::FindPairs(std::span<const BodyBounds> bounds,
+                                  std::vector<BodyPair>& pairs) {
+  FindPairs(bounds, IsValidFor(bounds), pairs);
+}
+
+void BodyNeighbourList::FindPairs(std::span<const BodyBounds> bounds, bool all_held,
                                   std::vector<BodyPair>& pairs) {
   pairs.clear();
   if (bounds.size() < 2) return;
-  if (!IsValidFor(bounds)) Build(bounds);
+  if (!all_held || builds_ == 0 || bounds.size() != grown_.size()) Build(bounds);
   // Listed pairs are not both still (their flags are those of the build), and sorted.
   for (const BodyPair& pair : candidates_) {
     if (Overlap(bounds[pair.first], bounds[pair.second])) pairs.push_back(pair);

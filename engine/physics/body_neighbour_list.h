@@ -32,6 +32,17 @@ class BodyNeighbourList {
   /// answer for the same bounds.
   void FindPairs(std::span<const BodyBounds> bounds, std::vector<BodyPair>& pairs);
 
+  /// FindPairs for a caller that tested with Holds, since the last FindPairs, every box that
+  /// changed since then (a box that did not change still holds): `all_held` says whether each did.
+  /// A caller stepping many bodies tests the moved ones on the threads that move them, and a tick
+  /// that moves few tests few.
+  void FindPairs(std::span<const BodyBounds> bounds, bool all_held, std::vector<BodyPair>& pairs);
+
+  /// Whether `box`, the new box of body i, lies inside body i's grown box of the last build with
+  /// that build's still flag; false before the first build or for a body it did not have. Reads
+  /// only: several threads may ask at once, between FindPairs calls.
+  bool Holds(std::size_t i, const BodyBounds& box) const;
+
   /// How many times the list has been built (for tests and benchmarks).
   std::size_t builds() const { return builds_; }
 

@@ -1,5 +1,7 @@
 #include "engine/world/simulation.h"
 
+#include <cstring>
+
 #include "engine/core/config.h"
 #include "engine/core/error.h"
 
@@ -42,6 +44,10 @@ void SetHeard(std::vector<char>& heard, std::size_t i, bool value) {
 // this thread's), and every listener hears of its sensor's sample of this tick. Vehicles without
 // cameras whose samples nobody listens to this tick (`heard` false) are passed over.
 void NotifySensorListeners(World& world, TimeNs now_ns, const std::vector<char>& heard) {
+  // A swarm whose samples nobody records, on most ticks: one scan of the flags.
+  if (world.image_sensor_count() == 0 && std::memchr(heard.data(), 1, heard.size()) == nullptr) {
+    return;
+  }
   for (std::size_t i = 0; i < world.vehicle_count(); ++i) {
     if (!heard[i] && !world.has_image_sensors(i)) continue;
     const auto sensors = world.sensors(i);

@@ -136,6 +136,7 @@ Sensor& World::AddSensor(std::size_t vehicle, std::unique_ptr<Sensor> sensor) {
     slots_[vehicle].row_sensors.push_back(sensor.get());
   } else {
     slots_[vehicle].has_image_sensors = true;
+    ++image_sensor_count_;
   }
   sensors.push_back(std::move(sensor));
   ++sensor_count_;
@@ -171,13 +172,20 @@ void World::StepPhysics(TimeNs now_ns, double dt_s, WorkerPool* pool) {
     // A vehicle added since the last tick has no bounds yet: all are worked out this tick.
     const bool added = swept_bounds_.size() != slots_.size();
     swept_bounds_.resize(slots_.size());
+    bounds_escaped_.store(false, std::memory_order_relaxed);
     ParallelFor(pool, slots_.size(), [&](std::size_t i) {
       Slot& slot = slots_[i];
       slot.p_start_W = slot.vehicle->state().p_W;
       // Here, on the thread that stepped the vehicle, not in the serial pass after: there each
       // vehicle would be read from the other core's cache. A vehicle that stays asleep keeps
-      // its bounds (its state, so its start and end, are those of the last tick).
-      if (StepSlot(slot, i, now_ns, dt_s) || added) swept_bounds_[i] = CalcSweptBounds(slot);
+      // its bounds (its state, so its start and end, are those of the last tick), which the
+      // neighbour list held at the last tick.
+      if (StepSlot(slot, i, now_ns, dt_s) || added) {
+        swept_bounds_[i] = CalcSweptBounds(slot);
+        if (!neighbours_.Holds(i, swept_bounds_[i])) {
+          bounds_escaped_.store(true, std::memory_order_relaxed);
+        }
+      }
     });
   }
   if (!collision_listeners_.empty()) ReportEvents();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -150,6 +151,8 @@ class World {
   bool has_image_sensors(std::size_t i) const { return slots_[i].has_image_sensors; }
   /// Sensors on all vehicles together.
   std::size_t sensor_count() const { return sensor_count_; }
+  /// Number of sensors that produce images (cameras), over all vehicles.
+  std::size_t image_sensor_count() const { return image_sensor_count_; }
 
   /// Sets the ray caster for rangefinders and lidar (built by whoever builds the world, which may
   /// share it between the worlds of one scene; may be null).
@@ -265,12 +268,15 @@ class World {
   double sleep_dt_s_ = 0.0;
   std::vector<Slot> slots_;
   std::size_t sensor_count_ = 0;
+  std::size_t image_sensor_count_ = 0;
   std::shared_ptr<const RayCaster> ray_caster_;  // worlds built from one scene share it
   std::vector<std::function<void(const CollisionEvent&)>> collision_listeners_;
   // Vehicle-vehicle contact state (used only with several vehicles).
   BodyNeighbourList neighbours_;          // the broadphase between vehicles, kept from tick to tick
   std::vector<BodyBounds> swept_bounds_;  // per vehicle, over this tick (CalcSweptBounds)
-  std::vector<BodyPair> near_pairs_;      // the broadphase's pairs
+  // Set this tick by a vehicle whose new box the neighbour list does not hold (Holds).
+  std::atomic<bool> bounds_escaped_{false};
+  std::vector<BodyPair> near_pairs_;  // the broadphase's pairs
   std::vector<BodyContact> vehicle_contacts_;
   std::vector<VehiclePair> pairs_;                                   // touching pairs of this tick
   std::vector<std::pair<std::size_t, std::size_t>> touching_pairs_;  // of the last tick

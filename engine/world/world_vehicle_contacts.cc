@@ -81,7 +81,10 @@ void World::ResolveVehicleContacts(TimeNs now_ns, double dt_s) {
   const std::size_t n = slots_.size();
   AIRIS_DEMAND(swept_bounds_.size() == n);
   // Broadphase over the swept bounds of the vehicles (CalcSweptBounds, from StepPhysics).
-  neighbours_.FindPairs(swept_bounds_, near_pairs_);
+  // The threads tested the boxes that changed (StepPhysics); the join ordered their flag before
+  // this read.
+  neighbours_.FindPairs(swept_bounds_, !bounds_escaped_.load(std::memory_order_relaxed),
+                        near_pairs_);
   for (const auto& [i, j] : near_pairs_) {
     const std::size_t first = vehicle_contacts_.size();
     const std::size_t count = FindVehiclePairContacts(i, j);
