@@ -1,7 +1,9 @@
 // The `forest` generator (scene_config.h ForestConfig): Poisson-disc trees of a species mix.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "engine/mission/path.h"
 #include "scenes/generators.h"
@@ -16,6 +18,15 @@ using engine::Primitive;
 namespace {
 
 double Lerp(const Eigen::Vector2d& range, double u) { return range[0] + (range[1] - range[0]) * u; }
+
+// Sets `out` to `prefix` followed by `index` in decimal, in the buffer `out` already has: a forest
+// names a million objects, and the object keeps a copy of exactly its name's length.
+void SetIndexedName(std::string& out, std::string_view prefix, std::size_t index) {
+  char digits[24];
+  const auto end = std::to_chars(digits, digits + sizeof(digits), index).ptr;
+  out.assign(prefix);
+  out.append(digits, end);
+}
 
 Eigen::Affine3f PartPose(const Eigen::Vector3f& offset, const Eigen::Vector3f& scale) {
   Eigen::Affine3f T = Eigen::Affine3f::Identity();
@@ -148,8 +159,16 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
   const double box_area = (hi - lo).prod();
   const double sampled_density = static_cast<double>(points.size()) / box_area;
   const double keep = std::min(1.0, c.density_per_ha / 10000.0 / sampled_density);
-  b.ReserveObjects(static_cast<std::size_t>(points.size() * keep * 1.05) + 16);
+  // The trees and the ground cover at once: reserved for the trees alone, the objects would be
+  // moved to a block twice as large for the bushes.
+  const GroundCoverConfig& g = c.ground_cover;
+  const auto bush_count =
+      g.density_per_ha > 0.0 ? static_cast<std::size_t>(g.density_per_ha * box_area / 10000.0) : 0;
+  b.ReserveObjects(static_cast<std::size_t>(points.size() * keep * 1.05) + 16 + bush_count);
   std::vector<std::size_t> per_species(c.species.size(), 0);
+  std::vector<std::string> species_prefix;  // "forest/oak" for "forest/oak17"
+  for (const auto& sp : c.species) species_prefix.push_back(name + "/" + sp.name);
+  std::string object_name;
   for (const Vector2d& p : points) {
     const double u_keep = rng.Uniform01();
     const double u_species = rng.Uniform01() * total_weight;
@@ -164,21 +183,20 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
       acc += c.species[++s].weight;
     }
     const double height = Lerp(c.species[s].height_m, u_height);
+    SetIndexedName(object_name, species_prefix[s], per_species[s]++);
     if (!b.AddObject(
             variants[s][variant],
             engine::MakePose(
                 Vector3d(p.x(), p.y(),
                          BaseZ(r.terrain, p, 0.5 * c.species[s].trunk_diameter_fraction * height)),
                 yaw, 0, 0, Vector3d::Constant(height)),
-            r.tree_class, CollisionShape::kAuto,
-            name + "/" + c.species[s].name + std::to_string(per_species[s]++))) {
+            r.tree_class, CollisionShape::kAuto, object_name)) {
       report.out_of_instance_ids = true;
       return report;
     }
     ++report.trees;
   }
 
-  const GroundCoverConfig& g = c.ground_cover;
   if (g.density_per_ha > 0.0) {
     engine::Model bush;
     bush.name = name + "/bush";
@@ -187,19 +205,19 @@ GeneratorReport GenerateForest(const ForestConfig& c, const ForestResources& r,
          b.Material(Patterned(g.color, "bush", engine::SurfacePattern::kFoliage, {0.4f, 0.08f})),
          PartPose({0, 0, -0.5f}, {1.3f, 1.3f, 1.0f})});
     const std::uint32_t bush_model = b.AddModel(std::move(bush));
-    const auto count = static_cast<std::size_t>(g.density_per_ha * box_area / 10000.0);
-    b.ReserveObjects(count);
-    for (std::size_t i = 0; i < count; ++i) {
+    b.ReserveObjects(bush_count);  // the trees took fewer than reserved: no move
+    const std::string bush_prefix = name + "/bush";
+    for (std::size_t i = 0; i < bush_count; ++i) {
       const Vector2d p(rng.Uniform(lo.x(), hi.x()), rng.Uniform(lo.y(), hi.y()));
       const double height = Lerp(g.height_m, rng.Uniform01());
       const double yaw = rng.Uniform(0.0, 2.0 * std::numbers::pi);
       if (!AreaContains(c.area, p) || InClearing(c, p)) continue;
       if (SlopeAt(r.terrain, p) >= c.max_slope_deg * std::numbers::pi / 180.0) continue;
+      SetIndexedName(object_name, bush_prefix, report.bushes);
       if (!b.AddObject(bush_model,
                        engine::MakePose(Vector3d(p.x(), p.y(), BaseZ(r.terrain, p, 0.0)), yaw, 0, 0,
                                         Vector3d::Constant(height)),
-                       r.bush_class, CollisionShape::kAuto,
-                       name + "/bush" + std::to_string(report.bushes))) {
+                       r.bush_class, CollisionShape::kAuto, object_name)) {
         report.out_of_instance_ids = true;
         return report;
       }

@@ -4,10 +4,27 @@
 
 namespace airis::engine {
 
+namespace {
+
+// cos and sin of `angle_rad`; an angle of zero (a generated object's roll and pitch, a million
+// times in a forest) skips the calls, with the values they return: 1 and the zero with its sign.
+void CosSin(double angle_rad, double* c, double* s) {
+  if (angle_rad == 0.0) {
+    *c = 1.0;
+    *s = angle_rad;
+    return;
+  }
+  *c = std::cos(angle_rad);
+  *s = std::sin(angle_rad);
+}
+
+}  // namespace
+
 Quat QuatFromEuler(const EulerAngles& e) {
-  const double cr = std::cos(0.5 * e.roll_rad), sr = std::sin(0.5 * e.roll_rad);
-  const double cp = std::cos(0.5 * e.pitch_rad), sp = std::sin(0.5 * e.pitch_rad);
-  const double cy = std::cos(0.5 * e.yaw_rad), sy = std::sin(0.5 * e.yaw_rad);
+  double cr, sr, cp, sp, cy, sy;
+  CosSin(0.5 * e.roll_rad, &cr, &sr);
+  CosSin(0.5 * e.pitch_rad, &cp, &sp);
+  CosSin(0.5 * e.yaw_rad, &cy, &sy);
   return Quat(cy * cp * cr + sy * sp * sr, cy * cp * sr - sy * sp * cr, cy * sp * cr + sy * cp * sr,
               sy * cp * cr - cy * sp * sr);
 }

@@ -29,6 +29,31 @@ TEST(FramesTest, EulerRoundTrip) {
   EXPECT_NEAR(back.yaw_rad, e.yaw_rad, 1e-12);
 }
 
+TEST(FramesTest, ZeroAnglesGiveTheBitsOfTheGeneralFormula) {
+  // GIVEN Euler angles with zeros of both signs among them (a generated object's roll and pitch)
+  const auto general = [](const EulerAngles& e) {
+    const double cr = std::cos(0.5 * e.roll_rad), sr = std::sin(0.5 * e.roll_rad);
+    const double cp = std::cos(0.5 * e.pitch_rad), sp = std::sin(0.5 * e.pitch_rad);
+    const double cy = std::cos(0.5 * e.yaw_rad), sy = std::sin(0.5 * e.yaw_rad);
+    return Quat(cy * cp * cr + sy * sp * sr, cy * cp * sr - sy * sp * cr,
+                cy * sp * cr + sy * cp * sr, sy * cp * cr - cy * sp * sr);
+  };
+  for (const double a : {0.0, -0.0, 0.4}) {
+    for (const double b : {0.0, -0.0, -1.1}) {
+      for (const double c : {0.0, -0.0, 2.9}) {
+        const EulerAngles e{a, b, c};
+        // WHEN converted THEN every coefficient has the general formula's bits, signed zeros too
+        const Quat q = QuatFromEuler(e);
+        const Quat expected = general(e);
+        for (int k = 0; k < 4; ++k) {
+          EXPECT_EQ(std::signbit(q.coeffs()[k]), std::signbit(expected.coeffs()[k]));
+          EXPECT_EQ(q.coeffs()[k], expected.coeffs()[k]);
+        }
+      }
+    }
+  }
+}
+
 TEST(FramesTest, EulerMatchesElementaryRotationProduct) {
   const EulerAngles e{0.1, 0.2, 0.3};
   const Mat3 expected =
