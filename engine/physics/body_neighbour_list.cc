@@ -19,14 +19,6 @@ bool Inside(const BodyBounds& box, const BodyBounds& grown) {
 
 }  // namespace
 
-bool BodyNeighbourList::IsValidFor(std::span<const BodyBounds> bounds) const {
-  if (builds_ == 0 || bounds.size() != grown_.size()) return false;
-  for (std::size_t i = 0; i < bounds.size(); ++i) {
-    if (!Inside(bounds[i], grown_[i])) return false;
-  }
-  return true;
-}
-
 void BodyNeighbourList::Build(std::span<const BodyBounds> bounds) {
   double edge_sum_m = 0.0;
   for (const BodyBounds& b : bounds) edge_sum_m += (b.hi_W - b.lo_W).maxCoeff();
@@ -42,11 +34,6 @@ void BodyNeighbourList::Build(std::span<const BodyBounds> bounds) {
 
 bool BodyNeighbourList::Holds(std::size_t i, const BodyBounds& box) const {
   return i < grown_.size() && Inside(box, grown_[i]);
-}
-
-void BodyNeighbourList::FindPairs(std::span<const BodyBounds> bounds,
-                                  std::vector<BodyPair>& pairs) {
-  FindPairs(bounds, IsValidFor(bounds), pairs);
 }
 
 void BodyNeighbourList::FindPairs(std::span<const BodyBounds> bounds, bool all_held,

@@ -29,13 +29,10 @@ class BodyNeighbourList {
 
   /// Replaces `pairs` with every pair (a, b), a < b, of `bounds` whose boxes overlap (closed
   /// intervals) and are not both still, sorted by a, then b: exactly BodyBroadphase::FindPairs's
-  /// answer for the same bounds.
-  void FindPairs(std::span<const BodyBounds> bounds, std::vector<BodyPair>& pairs);
-
-  /// FindPairs for a caller that tested with Holds, since the last FindPairs, every box that
-  /// changed since then (a box that did not change still holds): `all_held` says whether each did.
-  /// A caller stepping many bodies tests the moved ones on the threads that move them, and a tick
-  /// that moves few tests few.
+  /// answer for the same bounds. The caller has tested with Holds, since the last FindPairs, every
+  /// box that changed since then (a box that did not change still holds), and `all_held` says
+  /// whether each did: a caller stepping many bodies tests the moved ones on the threads that move
+  /// them, and a tick that moves few tests few.
   void FindPairs(std::span<const BodyBounds> bounds, bool all_held, std::vector<BodyPair>& pairs);
 
   /// Whether `box`, the new box of body i, lies inside body i's grown box of the last build with
@@ -47,8 +44,6 @@ class BodyNeighbourList {
   std::size_t builds() const { return builds_; }
 
  private:
-  // Whether every box is inside its grown box and has the still flag of the last build.
-  bool IsValidFor(std::span<const BodyBounds> bounds) const;
   void Build(std::span<const BodyBounds> bounds);
 
   BodyBroadphase broadphase_;
